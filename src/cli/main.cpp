@@ -1,0 +1,66 @@
+// mergeguard: formal rule checking and scenario fuzzing for autonomous lane merges.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command.h"
+#include "core/input_error.h"
+
+namespace mg::cli {
+
+std::map<std::string, Command>& commands() {
+  static std::map<std::string, Command> registry;
+  return registry;
+}
+
+bool parse_args(CLI::App& app, const std::vector<std::string>& args) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 wants them reversed
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return false;
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what());
+  }
+  return true;
+}
+
+}  // namespace mg::cli
+
+namespace {
+
+int usage(std::ostream& out) {
+  out << "usage: mergeguard <command> [options]\n\ncommands:\n";
+  for (const auto& [name, cmd] : mg::cli::commands()) out << "  mergeguard " << cmd.usage << "\n";
+  out << "\nexit codes: 0 holds, 1 violation found, 2 bad input or usage\n";
+  return mg::cli::kExitBadInput;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return usage(std::cerr);
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") {
+    usage(std::cout);
+    return mg::cli::kExitOk;
+  }
+  auto it = mg::cli::commands().find(name);
+  if (it == mg::cli::commands().end()) {
+    std::cerr << "mergeguard: unknown command '" << name << "'\n";
+    return usage(std::cerr);
+  }
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  try {
+    return it->second.run(args);
+  } catch (const mg::InputError& e) {
+    std::cerr << "mergeguard " << name << ": " << e.what() << "\n";
+  } catch (const mg::cli::UsageError& e) {
+    std::cerr << "mergeguard " << name << ": " << e.what() << "\n";
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "mergeguard " << name << ": " << e.what() << "\n";
+  }
+  return mg::cli::kExitBadInput;
+}

@@ -1,0 +1,61 @@
+// Every tunable of mergeguard in one structure. Defaults and valid ranges are documented in
+// docs/scenario_format.md and enforced by params_from_json (the only place they are checked).
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace mg {
+
+// RSS model parameters shared by planner, monitors and liability (RCPP eq. 1, 2).
+struct RssParams {
+  double response_time_s = 0.5;       // T_lag: response time + communication delay, [0, 5]
+  double fluctuation_margin_m = 0.1;  // mu of eq. 2, [0, 5]
+  bool operator==(const RssParams&) const = default;
+};
+
+// RCPP planner parameters (DESIGN §4-§6).
+struct PlannerParams {
+  double merge_duration_s = 4.0;       // rho_m: decision to completion of the merge, [0.5, 20]
+  double comm_threshold_s = 1.0;       // rho_c: time allowed for the V2V exchange, [0.05, 10]
+  double halt_margin_m = 5.0;          // Definition 1.3: stop this far before the side lane end, [0, 100]
+  double lat_accel_comfort_mps2 = 1.5; // bound on the sigmoid's peak lateral acceleration, (0, 10]
+  double kappa_min_per_m = 0.05;       // smallest sigmoid slope considered, (0, kappa_max]
+  double kappa_max_per_m = 1.0;        // largest sigmoid slope considered, [kappa_min, 10]
+  int pc_candidates = 15;              // P_c samples scored by the potential field, [1, 200]
+  int kappa_candidates = 8;            // kappa samples scored by the potential field, [1, 200]
+  // Potential field coefficients (RCPP eq. 3-5).
+  double pf_road_beta = 0.5;           // beta, road-mark repulsion, [0, 1e6]
+  double pf_obstacle_gamma = 10.0;     // gamma, obstacle repulsion, [0, 1e6]
+  double pf_obstacle_u = 0.01;         // U, small positive offset, [0, 1]
+  double pf_lane_xi = 0.2;             // xi, lane-centre attraction, [0, 1e6]
+  double pf_search_distance_m = 20.0;  // D*, search target distance of the merging mode, (0, 1000]
+  // Cost weights for choosing gap and v_e* (documented in docs/planner.md).
+  double cost_time_weight = 1.0;         // per second until the merge midpoint, [0, 1e3]
+  double cost_speed_change_weight = 0.5; // per m/s of |v_e* - v_e|, [0, 1e3]
+  double cost_traffic_speed_weight = 0.2;// per m/s of |v_e* - gap traffic speed|, [0, 1e3]
+  bool operator==(const PlannerParams&) const = default;
+};
+
+// Simulation parameters (DESIGN §7).
+struct SimParams {
+  double step_s = 0.02;           // fixed integration step, [1e-3, 0.5]
+  double planner_cycle_s = 0.1;   // planner period, a multiple of step_s, [step_s, 5]
+  double horizon_s = 30.0;        // simulated duration, (0, 3600]
+  bool operator==(const SimParams&) const = default;
+};
+
+struct Params {
+  RssParams rss;
+  PlannerParams planner;
+  SimParams sim;
+  bool operator==(const Params&) const = default;
+};
+
+// Reads the "params" object (every key optional, defaults above); raises InputError naming
+// `source` and the JSON path on unknown keys, wrong types or out-of-range values.
+Params params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path);
+nlohmann::json params_to_json(const Params& p);
+
+}  // namespace mg

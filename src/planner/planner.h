@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/scenario.h"
 #include "core/v2v_message.h"
 #include "core/vehicle_state.h"
@@ -101,6 +103,7 @@ std::unique_ptr<Planner> make_planner(const std::string& name);
 std::vector<std::string> planner_names();
 
 std::string to_string(DecisionMode m);
+nlohmann::json decision_to_json(const Decision& d);
 // Builds the snapshot of a scenario's initial state (used by `mergeguard plan`).
 WorldSnapshot initial_snapshot(const Scenario& s);
 

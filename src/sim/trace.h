@@ -54,6 +54,5 @@ struct Trace {
 
 std::string to_string(EventKind k);
 nlohmann::json trace_to_json(const Trace& t);
-nlohmann::json decision_to_json(const Decision& d);
 
 }  // namespace mg

@@ -1,0 +1,166 @@
+#include "core/json_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace mg {
+namespace {
+
+std::string type_name(const nlohmann::json& v) {
+  if (v.is_number()) return "a number";
+  return std::string("a") + (v.is_object() || v.is_array() ? "n " : " ") + v.type_name();
+}
+
+std::string format_number(double x) {
+  std::ostringstream out;
+  out.precision(10);
+  out << x;
+  return out.str();
+}
+
+// Depth guard: nlohmann parses recursively; reject absurd nesting before it hurts.
+void check_depth(const std::string& text, const std::string& source) {
+  int depth = 0;
+  bool in_string = false;
+  bool escaped = false;
+  for (char c : text) {
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    else if (c == '{' || c == '[') {
+      if (++depth > kMaxJsonDepth)
+        throw InputError(source, "", "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    } else if (c == '}' || c == ']') {
+      --depth;
+    }
+  }
+}
+
+}  // namespace
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& source) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(source, "", "empty input, expected a JSON object");
+  check_depth(text, source);
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    std::string what = e.what();
+    if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
+    throw InputError(source, "", "malformed JSON (" + what + ")");
+  }
+}
+
+nlohmann::json parse_json_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot open file");
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxInputBytes)
+      throw InputError(path, "", "file larger than " + std::to_string(kMaxInputBytes / (1024 * 1024)) + " MiB");
+  }
+  return parse_json_text(text, path);
+}
+
+ObjectReader::ObjectReader(const nlohmann::json& value, std::string source, std::string path)
+    : value_(value), source_(std::move(source)), path_(std::move(path)) {
+  if (!value_.is_object()) throw InputError(source_, path_, "must be a JSON object, got " + type_name(value_));
+}
+
+void ObjectReader::fail(std::string_view key, const std::string& what) const {
+  throw InputError(source_, path_of(key), what);
+}
+
+void ObjectReader::only_keys(std::initializer_list<std::string_view> known) const {
+  for (const auto& item : value_.items()) {
+    bool found = false;
+    for (auto k : known) found = found || (k == item.key());
+    if (!found) fail(item.key(), "unknown key");
+  }
+}
+
+bool ObjectReader::has(std::string_view key) const { return value_.contains(std::string(key)); }
+
+const nlohmann::json& ObjectReader::get(std::string_view key) const {
+  auto it = value_.find(std::string(key));
+  if (it == value_.end()) fail(key, "missing required key");
+  return *it;
+}
+
+double ObjectReader::number(std::string_view key, double lo, double hi) const {
+  const auto& v = get(key);
+  if (!v.is_number()) fail(key, "must be a number, got " + type_name(v));
+  const double x = v.get<double>();
+  if (!std::isfinite(x)) fail(key, "must be finite");
+  if (x < lo || x > hi)
+    fail(key, "must be in [" + format_number(lo) + ", " + format_number(hi) + "], got " + format_number(x));
+  return x;
+}
+
+double ObjectReader::number_or(std::string_view key, double fallback, double lo, double hi) const {
+  return has(key) ? number(key, lo, hi) : fallback;
+}
+
+double ObjectReader::positive(std::string_view key, double hi) const {
+  const double x = number(key, -std::numeric_limits<double>::max(), hi);
+  if (!(x > 0.0)) fail(key, "must be > 0, got " + format_number(x));
+  return x;
+}
+
+double ObjectReader::positive_or(std::string_view key, double fallback, double hi) const {
+  return has(key) ? positive(key, hi) : fallback;
+}
+
+long long ObjectReader::integer(std::string_view key, long long lo, long long hi) const {
+  const auto& v = get(key);
+  if (!v.is_number_integer()) fail(key, "must be an integer, got " + type_name(v));
+  if (v.is_number_unsigned() && v.get<unsigned long long>() > static_cast<unsigned long long>(hi))
+    fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  const long long x = v.get<long long>();
+  if (x < lo || x > hi)
+    fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(x));
+  return x;
+}
+
+long long ObjectReader::integer_or(std::string_view key, long long fallback, long long lo, long long hi) const {
+  return has(key) ? integer(key, lo, hi) : fallback;
+}
+
+bool ObjectReader::boolean_or(std::string_view key, bool fallback) const {
+  if (!has(key)) return fallback;
+  const auto& v = get(key);
+  if (!v.is_boolean()) fail(key, "must be true or false, got " + type_name(v));
+  return v.get<bool>();
+}
+
+std::string ObjectReader::string(std::string_view key) const {
+  const auto& v = get(key);
+  if (!v.is_string()) fail(key, "must be a string, got " + type_name(v));
+  return v.get<std::string>();
+}
+
+std::string ObjectReader::string_or(std::string_view key, const std::string& fallback) const {
+  return has(key) ? string(key) : fallback;
+}
+
+ObjectReader ObjectReader::object(std::string_view key) const {
+  const auto& v = get(key);
+  if (!v.is_object()) fail(key, "must be a JSON object, got " + type_name(v));
+  return ObjectReader(v, source_, path_of(key));
+}
+
+const nlohmann::json& ObjectReader::array(std::string_view key) const {
+  const auto& v = get(key);
+  if (!v.is_array()) fail(key, "must be an array, got " + type_name(v));
+  return v;
+}
+
+}  // namespace mg

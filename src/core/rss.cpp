@@ -1,0 +1,74 @@
+#include "core/rss.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace mg {
+namespace {
+
+void require_non_negative(double x, const char* name) {
+  if (!(std::isfinite(x) && x >= 0.0))
+    throw std::invalid_argument(std::string(name) + ": must be finite and >= 0, got " + std::to_string(x));
+}
+
+void require_positive(double x, const char* name) {
+  if (!(std::isfinite(x) && x > 0.0))
+    throw std::invalid_argument(std::string(name) + ": must be finite and > 0, got " + std::to_string(x));
+}
+
+void require_finite(double x, const char* name) {
+  if (!std::isfinite(x)) throw std::invalid_argument(std::string(name) + ": must be finite");
+}
+
+// Braking distance toward the other vehicle: s(v) = v^2 / (2 b) if v > 0 else 0 (RSS Def. 4).
+double lateral_braking_distance_m(double speed_toward_mps, double brake_mps2) {
+  return speed_toward_mps > 0.0 ? speed_toward_mps * speed_toward_mps / (2.0 * brake_mps2) : 0.0;
+}
+
+}  // namespace
+
+// RCPP eq. (1); RSS arXiv:1708.06374 Def. 1. Deviation (DESIGN §3): half-lengths outside [.]_+.
+double rss_longitudinal_m(const LongitudinalInput& in) {
+  require_non_negative(in.rear_speed_mps, "rear_speed_mps");
+  require_non_negative(in.front_speed_mps, "front_speed_mps");
+  require_non_negative(in.rear_length_m, "rear_length_m");
+  require_non_negative(in.front_length_m, "front_length_m");
+  require_non_negative(in.response_time_s, "response_time_s");
+  require_non_negative(in.accel_max_mps2, "accel_max_mps2");
+  require_positive(in.brake_min_mps2, "brake_min_mps2");
+  require_positive(in.brake_max_mps2, "brake_max_mps2");
+  const double t = in.response_time_s;
+  const double v_rear_after_t = in.rear_speed_mps + in.accel_max_mps2 * t;
+  const double clamped = in.rear_speed_mps * t + 0.5 * in.accel_max_mps2 * t * t +
+                         v_rear_after_t * v_rear_after_t / (2.0 * in.brake_min_mps2) -
+                         in.front_speed_mps * in.front_speed_mps / (2.0 * in.brake_max_mps2);
+  return 0.5 * (in.rear_length_m + in.front_length_m) + std::max(0.0, clamped);
+}
+
+// RCPP eq. (2) corrected per RSS arXiv:1708.06374 Def. 4 (DESIGN §3): the right vehicle's
+// braking term enters with the RSS sign; widths outside [.]_+.
+double rss_lateral_m(const LateralInput& in) {
+  require_finite(in.left_lat_speed_mps, "left_lat_speed_mps");
+  require_finite(in.right_lat_speed_mps, "right_lat_speed_mps");
+  require_non_negative(in.left_width_m, "left_width_m");
+  require_non_negative(in.right_width_m, "right_width_m");
+  require_non_negative(in.response_time_s, "response_time_s");
+  require_non_negative(in.lat_accel_max_mps2, "lat_accel_max_mps2");
+  require_positive(in.lat_brake_min_mps2, "lat_brake_min_mps2");
+  require_non_negative(in.fluctuation_margin_m, "fluctuation_margin_m");
+  const double t = in.response_time_s;
+  // During T each accelerates toward the other (+Y is left: L moves down, R moves up).
+  const double v_left_rho = in.left_lat_speed_mps - t * in.lat_accel_max_mps2;
+  const double v_right_rho = in.right_lat_speed_mps + t * in.lat_accel_max_mps2;
+  // Downward (toward R) travel of L and upward travel of R, both until they stop.
+  const double d_left = -(in.left_lat_speed_mps + v_left_rho) / 2.0 * t +
+                        lateral_braking_distance_m(-v_left_rho, in.lat_brake_min_mps2);
+  const double d_right = -(in.right_lat_speed_mps + v_right_rho) / 2.0 * t -
+                         lateral_braking_distance_m(v_right_rho, in.lat_brake_min_mps2);
+  return in.fluctuation_margin_m + 0.5 * (in.left_width_m + in.right_width_m) +
+         std::max(0.0, d_left - d_right);
+}
+
+}  // namespace mg

@@ -54,5 +54,10 @@ struct Trace {
 
 std::string to_string(EventKind k);
 nlohmann::json trace_to_json(const Trace& t);
+// FNV-1a (64 bit) over the bit patterns of every step's time, states, mode and override flag;
+// the value simulate() stores in Trace::digest.
+std::uint64_t compute_digest(const Trace& t);
+// The digest as 16 lowercase hex digits (JSON numbers cannot hold 64 bits exactly everywhere).
+std::string digest_hex(std::uint64_t digest);
 
 }  // namespace mg

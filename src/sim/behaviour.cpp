@@ -1,0 +1,209 @@
+#include "sim/behaviour.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "core/rss.h"
+
+namespace mg {
+namespace {
+
+constexpr double kGapMarginM = 2.0;       // RSS follower / constant speed: margin above D_lon
+constexpr double kSpeedGainPerS = 1.0;    // speed tracking gain of the simple behaviours
+constexpr double kGapGainPerS2 = 0.2;     // RSS follower gap gain
+constexpr double kCoopReleaseExtraS = 2.0;// cooperation ends rho_c + rho_m + this after acceptance
+
+double lane_centre_y(const Road& road, int lane) { return lane * road.lane_width_m; }
+
+// D_lon of this vehicle behind the leader, centre to centre (RCPP eq. 1).
+double safe_distance_behind(double speed_mps, double own_length_m, const Limits& own, const Leader& leader,
+                            const RssParams& rss) {
+  return rss_longitudinal_m({.rear_speed_mps = speed_mps,
+                             .front_speed_mps = leader.speed_mps,
+                             .rear_length_m = own_length_m,
+                             .front_length_m = leader.length_m,
+                             .response_time_s = rss.response_time_s,
+                             .accel_max_mps2 = own.accel_max_mps2,
+                             .brake_min_mps2 = own.brake_min_mps2,
+                             .brake_max_mps2 = leader.brake_max_mps2});
+}
+
+}  // namespace
+
+std::optional<Leader> find_leader(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
+                                  const VehicleState& ego, bool include_ego) {
+  assert(index < others.size() && others.size() == s.vehicles.size());
+  const MainVehicle& self = s.vehicles[index];
+  const double x = others[index].x_m;
+  std::optional<Leader> best;
+  auto consider = [&](int id, double other_x, double speed, const VehicleSize& size, const Limits& limits) {
+    const double d = other_x - x;
+    if (d <= 0.0 || (best && d >= best->distance_m)) return;
+    best = Leader{id, d, speed, size.length_m, limits.brake_max_mps2};
+  };
+  for (std::size_t j = 0; j < others.size(); ++j) {
+    if (j == index || s.vehicles[j].lane != self.lane) continue;
+    consider(s.vehicles[j].id, others[j].x_m, others[j].vx_mps, s.vehicles[j].size, s.vehicles[j].limits);
+  }
+  if (include_ego) {
+    const double half_overlap = 0.5 * (s.road.lane_width_m + s.ego.size.width_m);
+    if (std::abs(ego.y_m - lane_centre_y(s.road, self.lane)) < half_overlap)
+      consider(0, ego.x_m, std::max(ego.road_vx_mps(), 0.0), s.ego.size, s.ego.limits);
+  }
+  return best;
+}
+
+double idm_accel_mps2(double speed_mps, double desired_speed_mps, const std::optional<Leader>& leader,
+                      double own_length_m, const Behaviour& b, const Limits& limits) {
+  const double a = std::max(limits.accel_max_mps2, 0.5);
+  const double v0 = std::max(desired_speed_mps, 0.1);
+  double interaction = 0.0;
+  if (leader) {
+    const double gap = leader->distance_m - 0.5 * (own_length_m + leader->length_m);
+    if (gap <= 0.01) return -limits.brake_max_mps2;
+    const double dv = speed_mps - leader->speed_mps;
+    const double s_star = b.min_gap_m + std::max(0.0, speed_mps * b.time_headway_s +
+                                                          speed_mps * dv / (2.0 * std::sqrt(a * b.comfort_brake_mps2)));
+    interaction = (s_star / gap) * (s_star / gap);
+  }
+  return a * (1.0 - std::pow(speed_mps / v0, 4) - interaction);
+}
+
+bool rss_unsafe_behind(double speed_mps, double own_length_m, const Limits& own, const Leader& leader,
+                       const RssParams& rss) {
+  return leader.distance_m < safe_distance_behind(speed_mps, own_length_m, own, leader, rss);
+}
+
+void advance_on_lane(VehicleState& s, double accel_mps2, double dt_s) {
+  const double v = s.vx_mps;
+  const double v_new = v + accel_mps2 * dt_s;
+  if (v_new < 0.0) {  // stops within the step and stays
+    s.x_m += v > 0.0 ? v * v / (2.0 * -accel_mps2) : 0.0;
+    s.vx_mps = 0.0;
+    s.accel_mps2 = -v / dt_s;
+  } else {
+    s.x_m += 0.5 * (v + v_new) * dt_s;
+    s.vx_mps = v_new;
+    s.accel_mps2 = accel_mps2;
+  }
+}
+
+MainLaneDriver::MainLaneDriver(const MainVehicle& spec, const Road& road, const Params& params)
+    : spec_(spec), road_(road), params_(params), rng_(spec.behaviour.seed) {}
+
+double MainLaneDriver::desired_speed() const {
+  return spec_.behaviour.desired_speed_mps < 0.0 ? spec_.speed_mps : spec_.behaviour.desired_speed_mps;
+}
+
+bool MainLaneDriver::in_window(double time_s) const {
+  const NonCompliance& n = spec_.noncompliance;
+  return time_s >= n.start_time_s && time_s < n.start_time_s + n.duration_s;
+}
+
+bool MainLaneDriver::non_compliant(double time_s) const {
+  const NonComplianceType t = spec_.noncompliance.type;
+  if (t == NonComplianceType::kExceedAccel || t == NonComplianceType::kExceedBrake) return in_window(time_s);
+  return mode_ == Mode::kReneging;
+}
+
+std::optional<V2vMessage> MainLaneDriver::answer(const V2vMessage& request, double time_s, double speed_mps) {
+  if (request.type != MessageType::kRequest) return std::nullopt;
+  if (spec_.behaviour.type == BehaviourType::kNonResponsive) return std::nullopt;
+  V2vMessage reply = request;
+  reply.from_id = spec_.id;
+  reply.to_id = request.from_id;
+  reply.sent_time_s = time_s;
+  reply.type = MessageType::kRefuse;
+  if (spec_.noncompliance.type == NonComplianceType::kRenege && in_window(time_s)) {
+    reply.type = MessageType::kAccept;  // accepts, and will not yield
+    mode_ = Mode::kReneging;
+    coop_since_s_ = time_s;
+    return reply;
+  }
+  if (spec_.behaviour.type != BehaviourType::kCooperative || mode_ != Mode::kNormal) return reply;
+  const double target = request.target_speed_mps;
+  const bool braking = target <= speed_mps;
+  const double rate = braking ? spec_.limits.brake_min_mps2 : spec_.limits.accel_max_mps2;
+  const bool reachable = std::isfinite(target) && target >= 0.0 && target <= road_.speed_limit_mps &&
+                         std::abs(target - speed_mps) <= rate * params_.planner.comm_threshold_s + 1e-9;
+  if (reachable) {
+    reply.type = MessageType::kAccept;
+    mode_ = Mode::kCooperating;
+    coop_target_mps_ = target;
+    coop_since_s_ = time_s;
+  }
+  return reply;
+}
+
+double MainLaneDriver::behaviour_accel(const DriverInput& in) {
+  const Behaviour& b = spec_.behaviour;
+  const Limits& lim = spec_.limits;
+  const double len = spec_.size.length_m;
+  const double v = in.speed_mps;
+  switch (b.type) {
+    case BehaviourType::kConstantSpeed: {
+      if (in.leader && rss_unsafe_behind(v, len, lim, *in.leader, params_.rss)) return -lim.brake_min_mps2;
+      double a = std::clamp(kSpeedGainPerS * (desired_speed() - v), -lim.brake_min_mps2, lim.accel_max_mps2);
+      if (in.leader && a > 0.0 &&
+          in.leader->distance_m < safe_distance_behind(v, len, lim, *in.leader, params_.rss) + kGapMarginM)
+        a = 0.0;
+      return a;
+    }
+    case BehaviourType::kRssFollower: {
+      double a = kSpeedGainPerS * (desired_speed() - v);
+      if (in.leader) {
+        const double d_lon = safe_distance_behind(v, len, lim, *in.leader, params_.rss);
+        if (in.leader->distance_m < d_lon) return -lim.brake_min_mps2;  // proper response
+        a = std::min(a, kGapGainPerS2 * (in.leader->distance_m - d_lon - kGapMarginM) +
+                            kSpeedGainPerS * (in.leader->speed_mps - v));
+      }
+      return a;
+    }
+    case BehaviourType::kBoundedRandom: {
+      const long long segment = static_cast<long long>(std::floor(in.time_s / b.segment_s));
+      while (segment_ < segment) {  // one draw per segment, in order
+        segment_accel_mps2_ = -lim.brake_max_mps2 + rng_.uniform01() * (lim.accel_max_mps2 + lim.brake_max_mps2);
+        ++segment_;
+      }
+      double a = segment_accel_mps2_;
+      if (v >= road_.speed_limit_mps) a = std::min(a, 0.0);
+      if (in.leader && rss_unsafe_behind(v, len, lim, *in.leader, params_.rss)) a = std::min(a, -lim.brake_min_mps2);
+      return a;
+    }
+    case BehaviourType::kIdm:
+    case BehaviourType::kCooperative:
+    case BehaviourType::kNonResponsive:
+      return idm_accel_mps2(v, desired_speed(), in.leader, len, b, lim);
+  }
+  return 0.0;
+}
+
+double MainLaneDriver::accel_mps2(const DriverInput& in) {
+  const Limits& lim = spec_.limits;
+  const NonCompliance& n = spec_.noncompliance;
+  if (n.type == NonComplianceType::kExceedAccel && in_window(in.time_s)) return n.accel_mps2;
+  if (n.type == NonComplianceType::kExceedBrake && in_window(in.time_s)) return -n.accel_mps2;
+
+  const double release_s = params_.planner.comm_threshold_s + params_.planner.merge_duration_s + kCoopReleaseExtraS;
+  if (mode_ != Mode::kNormal && (in.ego_in_lane || in.time_s - coop_since_s_ > release_s)) mode_ = Mode::kNormal;
+
+  double a = 0.0;
+  if (mode_ == Mode::kCooperating) {
+    // Definition 2: brake at most b_min (2.1 B) or accelerate at most a_acc (2.2 B) to v_o*,
+    // and never closer to a leader than IDM allows.
+    const double track = std::clamp(kSpeedGainPerS * 4.0 * (coop_target_mps_ - in.speed_mps), -lim.brake_min_mps2,
+                                    lim.accel_max_mps2);
+    const double idm = idm_accel_mps2(in.speed_mps, std::max(desired_speed(), coop_target_mps_), in.leader,
+                                      spec_.size.length_m, spec_.behaviour, lim);
+    a = std::min(track, idm);
+  } else if (mode_ == Mode::kReneging) {
+    // Accepted, but keeps driving as if the ego were not there.
+    a = idm_accel_mps2(in.speed_mps, desired_speed(), in.leader_main_only, spec_.size.length_m, spec_.behaviour, lim);
+  } else {
+    a = behaviour_accel(in);
+  }
+  return std::clamp(a, -lim.brake_max_mps2, lim.accel_max_mps2);
+}
+
+}  // namespace mg

@@ -1,0 +1,79 @@
+#include "sim/path_tracker.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "sim/single_track.h"
+
+namespace mg {
+namespace {
+
+double wrap_angle(double a) { return std::remainder(a, 2.0 * M_PI); }
+
+double segment_heading(const std::vector<PathPoint>& p, std::size_t i) {
+  return std::atan2(p[i + 1].y_m - p[i].y_m, p[i + 1].x_m - p[i].x_m);
+}
+
+// Curvature as heading change per arc length between the segments around vertex i+1.
+double vertex_curvature(const std::vector<PathPoint>& p, std::size_t i) {
+  if (i + 2 >= p.size()) return 0.0;
+  const double dh = wrap_angle(segment_heading(p, i + 1) - segment_heading(p, i));
+  const double ds = 0.5 * (std::hypot(p[i + 1].x_m - p[i].x_m, p[i + 1].y_m - p[i].y_m) +
+                           std::hypot(p[i + 2].x_m - p[i + 1].x_m, p[i + 2].y_m - p[i + 1].y_m));
+  return ds > 0.0 ? dh / ds : 0.0;
+}
+
+}  // namespace
+
+PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m) {
+  assert(path.size() >= 2);
+  // The segment whose X range holds x_m, then its neighbours, by perpendicular distance.
+  auto it = std::upper_bound(path.begin(), path.end(), x_m, [](double x, const PathPoint& p) { return x < p.x_m; });
+  const std::size_t last_seg = path.size() - 2;
+  const std::size_t guess = std::min<std::size_t>(it == path.begin() ? 0 : (it - path.begin()) - 1, last_seg);
+  const std::size_t lo = guess >= 3 ? guess - 3 : 0;
+  const std::size_t hi = std::min(last_seg, guess + 3);
+  double best_d2 = INFINITY;
+  PathProjection best;
+  for (std::size_t i = lo; i <= hi; ++i) {
+    const double ax = path[i].x_m, ay = path[i].y_m;
+    const double dx = path[i + 1].x_m - ax, dy = path[i + 1].y_m - ay;
+    const double len2 = dx * dx + dy * dy;
+    double t = len2 > 0.0 ? ((x_m - ax) * dx + (y_m - ay) * dy) / len2 : 0.0;
+    if (i > 0) t = std::max(t, 0.0);
+    if (i < last_seg) t = std::min(t, 1.0);
+    const double px = ax + t * dx, py = ay + t * dy;
+    const double d2 = (x_m - px) * (x_m - px) + (y_m - py) * (y_m - py);
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      const double len = std::sqrt(len2);
+      best.heading_rad = std::atan2(dy, dx);
+      // Cross product sign: positive when the point is left of the segment direction.
+      best.cross_track_m = len > 0.0 ? (dx * (y_m - ay) - dy * (x_m - ax)) / len : 0.0;
+      best.curvature_per_m = (t > 0.5 || i == 0) ? vertex_curvature(path, i) : vertex_curvature(path, i - 1);
+    }
+  }
+  return best;
+}
+
+double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleState& ego, const EgoDynamics& d,
+                            const PathTrackerGains& gains) {
+  const double front_x = ego.x_m + d.cg_to_front_m * std::cos(ego.yaw_rad);
+  const double front_y = ego.y_m + d.cg_to_front_m * std::sin(ego.yaw_rad);
+  const PathProjection proj = project_on_path(path, front_x, front_y);
+  const double speed = std::max(ego.vx_mps, 0.0);
+  const double heading_error = wrap_angle(proj.heading_rad - ego.yaw_rad);
+  const double cross_term = std::atan2(-gains.cross_track_gain * proj.cross_track_m, gains.softening_mps + speed);
+  const double path_yaw_rate = speed * proj.curvature_per_m;
+  // Feed-forward: the steady-state steering of the linear single-track model for the path's
+  // curvature, delta = kappa (L + K v^2).
+  const double feed_forward = proj.curvature_per_m * (d.cg_to_front_m + d.cg_to_rear_m + understeer_gradient(d) * speed * speed);
+  return feed_forward + heading_error + cross_term + gains.yaw_rate_damping_s * (path_yaw_rate - ego.yaw_rate_radps);
+}
+
+std::vector<PathPoint> straight_path(double x_m, double y_m) {
+  return {{x_m - 1000.0, y_m}, {x_m + 1000.0, y_m}};
+}
+
+}  // namespace mg

@@ -1,0 +1,36 @@
+// Lateral control of the ego (DESIGN §7): the Stanley controller (Hoffmann et al., 2007) on
+// the planner's road-frame reference polyline, with curvature feed-forward and yaw-rate damping.
+#pragma once
+
+#include <vector>
+
+#include "core/scenario.h"
+#include "core/vehicle_state.h"
+#include "planner/planner.h"
+
+namespace mg {
+
+struct PathTrackerGains {
+  double cross_track_gain = 1.0;     // k of Stanley, 1/s
+  double softening_mps = 2.0;        // k_soft: keeps the gain finite at low speed
+  double yaw_rate_damping_s = 0.05;  // k_d on (r_path - r)
+};
+
+// Signed lateral error of a point against a polyline (positive: point left of the path) and the
+// path's heading and curvature at the projection. Beyond either end the end segment extends
+// straight. The path must have >= 2 points with increasing X.
+struct PathProjection {
+  double cross_track_m = 0.0;
+  double heading_rad = 0.0;
+  double curvature_per_m = 0.0;
+};
+PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m);
+
+// Steering request that brings the front axle onto the path.
+double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleState& ego, const EgoDynamics& d,
+                            const PathTrackerGains& gains = {});
+
+// A straight path at constant Y ahead of and behind x_m (used before the first plan).
+std::vector<PathPoint> straight_path(double x_m, double y_m);
+
+}  // namespace mg

@@ -1,0 +1,199 @@
+#include "sim/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "sim/behaviour.h"
+#include "sim/path_tracker.h"
+#include "sim/single_track.h"
+#include "sim/speed_controller.h"
+#include "sim/v2v_channel.h"
+
+namespace mg {
+namespace {
+
+constexpr double kMergeStartOffsetM = 0.1;    // ego left of the side lane centre by this: merge started
+constexpr double kMergeAbortOffsetM = 0.05;   // back within this of the side lane centre: attempt over
+constexpr double kMergeCompleteOffsetM = 0.2; // trace.h: within 0.2 m of the main lane centre ...
+constexpr double kMergeCompleteYawRad = 0.02; // ... with the heading aligned
+constexpr double kHaltSpeedMps = 0.05;        // trace.h: stopped below this speed
+constexpr double kInLaneOffsetM = 0.5;        // drivers treat the ego as merged within this
+
+// Merge and halt events of the ego (trace.h EventKind), detected from consecutive states.
+class EgoEventDetector {
+ public:
+  explicit EgoEventDetector(const Road& road, const VehicleState& ego0)
+      : side_y_(road.side_lane_y_m()), boundary_y_(-0.5 * road.lane_width_m), from_side_(ego0.y_m < boundary_y_) {}
+
+  void update(double t, const VehicleState& ego, std::vector<TraceEvent>& events) {
+    const double speed = std::hypot(ego.vx_mps, ego.vy_mps);
+    if (!halted_ && speed < kHaltSpeedMps) {
+      halted_ = true;
+      events.push_back({t, EventKind::kHalt, 0, "ego stopped", std::nullopt});
+    } else if (halted_ && speed >= kHaltSpeedMps) {
+      halted_ = false;
+      events.push_back({t, EventKind::kResume, 0, "ego moving again", std::nullopt});
+    }
+    if (!from_side_ || completed_) return;
+    if (!started_ && ego.y_m > side_y_ + kMergeStartOffsetM) {
+      started_ = true;
+      events.push_back({t, EventKind::kMergeStart, 0, "ego leaves the side lane centre", std::nullopt});
+    } else if (started_ && !midpoint_ && ego.y_m < side_y_ + kMergeAbortOffsetM) {
+      started_ = false;  // back in the side lane: the next departure is a new attempt
+    }
+    if (started_ && !midpoint_ && ego.y_m >= boundary_y_) {
+      midpoint_ = true;
+      events.push_back({t, EventKind::kMergeMidpoint, 0, "ego centre crosses the lane boundary", std::nullopt});
+    }
+    if (midpoint_ && std::abs(ego.y_m) < kMergeCompleteOffsetM && std::abs(ego.yaw_rad) < kMergeCompleteYawRad) {
+      completed_ = true;
+      events.push_back({t, EventKind::kMergeComplete, 0, "ego on the main lane centre, heading aligned", std::nullopt});
+    }
+  }
+
+ private:
+  double side_y_, boundary_y_;
+  bool from_side_;
+  bool halted_ = false, started_ = false, midpoint_ = false, completed_ = false;
+};
+
+class Run {
+ public:
+  Run(const Scenario& s, Planner& planner)
+      : s_(s), planner_(planner), channel_(s), detector_(s.road, initial_ego(s)), ego_(initial_ego(s)) {
+    for (const MainVehicle& v : s.vehicles) {
+      VehicleState st;
+      st.x_m = v.x_m;
+      st.y_m = v.lane * s.road.lane_width_m;
+      st.vx_mps = v.speed_mps;
+      others_.push_back(st);
+      drivers_.emplace_back(v, s.road, s.params);
+      was_non_compliant_.push_back(false);
+    }
+    plan_.path = straight_path(ego_.x_m, ego_.y_m);
+    plan_.target_speed_mps = ego_.vx_mps;
+    trace_.planner = planner.name();
+  }
+
+  Trace execute() {
+    const double dt = s_.params.sim.step_s;
+    const long long cycle = std::max(1LL, std::llround(s_.params.sim.planner_cycle_s / dt));
+    const long long n_steps = std::llround(s_.params.sim.horizon_s / dt);
+    detector_.update(0.0, ego_, trace_.events);
+    for (long long k = 0;; ++k) {
+      const double t = static_cast<double>(k) * dt;
+      deliver_messages(t);
+      if (k % cycle == 0) run_planner(t);
+      trace_.steps.push_back({t, ego_, others_, plan_.decision.mode, plan_.proper_response});
+      if (k == n_steps) break;
+      advance(t, dt);
+      detector_.update(static_cast<double>(k + 1) * dt, ego_, trace_.events);
+    }
+    trace_.digest = compute_digest(trace_);
+    return std::move(trace_);
+  }
+
+ private:
+  static VehicleState initial_ego(const Scenario& s) {
+    VehicleState e;
+    e.x_m = s.ego.x_m;
+    e.y_m = s.ego.y_m;
+    e.vx_mps = s.ego.speed_mps;
+    return e;
+  }
+
+  void deliver_messages(double t) {
+    for (const V2vMessage& m : channel_.deliver_due(t, trace_.events)) {
+      if (m.to_id == 0) {
+        inbox_.push_back(m);
+        continue;
+      }
+      const std::size_t i = static_cast<std::size_t>(s_.index_of(m.to_id));
+      const std::optional<V2vMessage> reply = drivers_[i].answer(m, t, others_[i].vx_mps);
+      note_non_compliance(i, t);
+      if (reply) channel_.send(*reply, t, trace_.events);
+    }
+  }
+
+  void run_planner(double t) {
+    WorldSnapshot world;
+    world.time_s = t;
+    world.ego = ego_;
+    world.scenario = &s_;
+    world.inbox = std::move(inbox_);
+    inbox_.clear();
+    for (std::size_t i = 0; i < s_.vehicles.size(); ++i) {
+      const MainVehicle& v = s_.vehicles[i];
+      world.others.push_back({v.id, others_[i], v.size, v.limits, v.v2v.capable});
+    }
+    std::sort(world.others.begin(), world.others.end(),
+              [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
+    PlanOutput out = planner_.plan(world);
+    out.decision.time_s = t;
+    if (out.path.size() < 2) out.path = plan_.path;  // no new path: keep following the last one
+    for (std::size_t i = 1; i < out.path.size(); ++i)
+      if (!(out.path[i].x_m > out.path[i - 1].x_m))
+        throw std::logic_error("planner '" + planner_.name() + "' returned a path with non-increasing X at t = " +
+                               std::to_string(t) + " s");
+    const bool first = trace_.decisions.empty();
+    if (first || out.decision.mode != plan_.decision.mode)
+      trace_.events.push_back({t, EventKind::kDecision, 0, to_string(out.decision.mode) + ": " + out.decision.reason,
+                               std::nullopt});
+    trace_.decisions.push_back(out.decision);
+    for (V2vMessage m : out.outbox) {
+      m.from_id = 0;
+      m.sent_time_s = t;
+      channel_.send(m, t, trace_.events);
+    }
+    out.outbox.clear();
+    plan_ = std::move(out);
+  }
+
+  void note_non_compliance(std::size_t i, double t) {
+    const bool now = drivers_[i].non_compliant(t);
+    if (now && !was_non_compliant_[i])
+      trace_.events.push_back({t, EventKind::kNonCompliance, s_.vehicles[i].id,
+                               to_string(s_.vehicles[i].noncompliance.type), std::nullopt});
+    was_non_compliant_[i] = now;
+  }
+
+  void advance(double t, double dt) {
+    // Every driver decides on the states at t before anyone moves.
+    std::vector<double> accel(others_.size());
+    for (std::size_t i = 0; i < others_.size(); ++i) {
+      DriverInput in;
+      in.time_s = t;
+      in.speed_mps = others_[i].vx_mps;
+      in.leader = find_leader(s_, others_, i, ego_, true);
+      in.leader_main_only = find_leader(s_, others_, i, ego_, false);
+      in.ego_in_lane = std::abs(ego_.y_m - s_.vehicles[i].lane * s_.road.lane_width_m) < kInLaneOffsetM;
+      accel[i] = drivers_[i].accel_mps2(in);
+      note_non_compliance(i, t);
+    }
+    EgoCommand cmd;
+    cmd.steer_rad = stanley_steering_rad(plan_.path, ego_, s_.ego.dynamics);
+    cmd.accel_mps2 = speed_command_mps2(plan_, ego_.vx_mps, s_.ego.limits);
+    ego_ = step_single_track(ego_, cmd, s_.ego.dynamics, s_.ego.limits, dt);
+    for (std::size_t i = 0; i < others_.size(); ++i) advance_on_lane(others_[i], accel[i], dt);
+  }
+
+  const Scenario& s_;
+  Planner& planner_;
+  V2vChannel channel_;
+  EgoEventDetector detector_;
+  VehicleState ego_;
+  std::vector<VehicleState> others_;
+  std::vector<MainLaneDriver> drivers_;
+  std::vector<bool> was_non_compliant_;
+  std::vector<V2vMessage> inbox_;
+  PlanOutput plan_;
+  Trace trace_;
+};
+
+}  // namespace
+
+Trace simulate(const Scenario& scenario, Planner& planner) { return Run(scenario, planner).execute(); }
+
+}  // namespace mg

@@ -1,0 +1,25 @@
+// splitmix64 (Steele, Lea, Flood, OOPSLA 2014): a tiny seedable generator whose output is
+// identical on every platform and standard library (std::uniform_*_distribution is not).
+#pragma once
+
+#include <cstdint>
+
+namespace mg {
+
+class SplitMix64 {
+ public:
+  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  // Uniform in [0, 1) from the top 53 bits.
+  double uniform01() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+
+ private:
+  std::uint64_t state_;
+};
+
+}  // namespace mg

@@ -36,7 +36,8 @@ CliResult run_cli(const std::vector<std::string>& args, const std::string& stdin
   std::filesystem::create_directories(dir);
   { std::ofstream(dir / "in") << stdin_text; }
   // Every run is bounded in time: a hang shows up as exit code 124.
-  std::string cmd = "timeout 120 " + quote(cli);
+  std::string cmd = "timeout 120 ";
+  cmd += quote(cli);
   for (const auto& a : args) cmd += " " + quote(a);
   cmd += " < " + quote((dir / "in").string()) + " > " + quote((dir / "out").string()) + " 2> " +
          quote((dir / "err").string());

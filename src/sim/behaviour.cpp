@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include "core/rss.h"
 
@@ -191,10 +192,11 @@ double MainLaneDriver::accel_mps2(const DriverInput& in) {
   double a = 0.0;
   if (mode_ == Mode::kCooperating) {
     // Definition 2: brake at most b_min (2.1 B) or accelerate at most a_acc (2.2 B) to v_o*,
-    // and never closer to a leader than IDM allows.
+    // and never closer to a leader than IDM's interaction term allows (its free-road term is
+    // dropped: v_o* replaces the desired speed).
     const double track = std::clamp(kSpeedGainPerS * 4.0 * (coop_target_mps_ - in.speed_mps), -lim.brake_min_mps2,
                                     lim.accel_max_mps2);
-    const double idm = idm_accel_mps2(in.speed_mps, std::max(desired_speed(), coop_target_mps_), in.leader,
+    const double idm = idm_accel_mps2(in.speed_mps, std::numeric_limits<double>::infinity(), in.leader,
                                       spec_.size.length_m, spec_.behaviour, lim);
     a = std::min(track, idm);
   } else if (mode_ == Mode::kReneging) {

@@ -1,0 +1,204 @@
+#include "sim/behaviour.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "sim/simulator.h"
+#include "test_planners.h"
+
+namespace mg {
+namespace {
+
+DriverInput free_road(double t, double speed) {
+  DriverInput in;
+  in.time_s = t;
+  in.speed_mps = speed;
+  return in;
+}
+
+// Drives one main-lane vehicle alone for duration_s; returns its speeds and applied accels.
+struct Drive {
+  std::vector<double> speed, accel;
+};
+Drive drive_alone(MainLaneDriver& driver, double v0, double duration_s, double dt = 0.02) {
+  Drive r;
+  VehicleState s;
+  s.vx_mps = v0;
+  for (int k = 0; k * dt < duration_s; ++k) {
+    advance_on_lane(s, driver.accel_mps2(free_road(k * dt, s.vx_mps)), dt);
+    r.speed.push_back(s.vx_mps);
+    r.accel.push_back(s.accel_mps2);
+  }
+  return r;
+}
+
+TEST(Behaviour, IdmApproachesItsDesiredSpeedOnAFreeRoad) {
+  MainVehicle v = test::vehicle(1, 0.0, 15.0, BehaviourType::kIdm);
+  v.behaviour.desired_speed_mps = 25.0;
+  MainLaneDriver driver(v, Road{}, Params{});
+  const Drive r = drive_alone(driver, 15.0, 60.0);
+  EXPECT_NEAR(r.speed.back(), 25.0, 0.5);
+}
+
+TEST(Behaviour, IdmBrakesBehindAStoppedLeader) {
+  const Behaviour b;
+  const Limits lim;
+  const Leader stopped{2, 30.0, 0.0, 4.8, 8.0};
+  EXPECT_LT(idm_accel_mps2(20.0, 20.0, stopped, 4.8, b, lim), -lim.brake_min_mps2);
+}
+
+TEST(Behaviour, AdvanceOnLaneNeverGoesBackwards) {
+  VehicleState s;
+  s.vx_mps = 1.0;
+  advance_on_lane(s, -8.0, 0.5);
+  EXPECT_EQ(s.vx_mps, 0.0);
+  EXPECT_DOUBLE_EQ(s.x_m, 1.0 / 16.0);
+  EXPECT_DOUBLE_EQ(s.accel_mps2, -2.0);
+  advance_on_lane(s, -8.0, 0.5);
+  EXPECT_DOUBLE_EQ(s.x_m, 1.0 / 16.0);
+}
+
+// Bounded-random traffic (and everyone around it) never applies more than it declares and
+// never reverses, whatever the seed, limits and segment length.
+RC_GTEST_PROP(Behaviour, BoundedRandomNeverExceedsItsDeclaredLimits, ()) {
+  Scenario s = test::empty_scenario();
+  s.params.sim.horizon_s = 40.0;
+  const int n = *rc::gen::inRange(1, 5);
+  for (int i = 0; i < n; ++i) {
+    MainVehicle v = test::vehicle(i + 1, 30.0 * i, *rc::gen::inRange(0, 35), BehaviourType::kBoundedRandom);
+    v.limits.accel_max_mps2 = *rc::gen::inRange(0, 60) / 10.0;
+    v.limits.brake_max_mps2 = *rc::gen::inRange(10, 120) / 10.0;
+    v.limits.brake_min_mps2 = v.limits.brake_max_mps2 * *rc::gen::inRange(1, 11) / 10.0;
+    v.behaviour.seed = *rc::gen::arbitrary<std::uint32_t>();
+    v.behaviour.segment_s = *rc::gen::inRange(1, 50) / 10.0;
+    s.vehicles.push_back(v);
+  }
+  test::LaneKeepPlanner planner(-3.5, 20.0, 2.0);
+  const Trace t = simulate(s, planner);
+  for (const TraceStep& step : t.steps)
+    for (std::size_t i = 0; i < step.others.size(); ++i) {
+      const Limits& lim = s.vehicles[i].limits;
+      RC_ASSERT(step.others[i].vx_mps >= 0.0);
+      RC_ASSERT(step.others[i].accel_mps2 <= lim.accel_max_mps2 + 1e-12);
+      RC_ASSERT(step.others[i].accel_mps2 >= -lim.brake_max_mps2 - 1e-12);
+    }
+}
+
+TEST(Behaviour, BoundedRandomIsDrawnFromItsSeed) {
+  MainVehicle v = test::vehicle(1, 0.0, 20.0, BehaviourType::kBoundedRandom);
+  v.behaviour.seed = 7;
+  MainLaneDriver a(v, Road{}, Params{}), b(v, Road{}, Params{});
+  v.behaviour.seed = 8;
+  MainLaneDriver c(v, Road{}, Params{});
+  const Drive ra = drive_alone(a, 20.0, 20.0), rb = drive_alone(b, 20.0, 20.0), rd = drive_alone(c, 20.0, 20.0);
+  EXPECT_EQ(ra.accel, rb.accel);
+  EXPECT_NE(ra.accel, rd.accel);
+}
+
+V2vMessage request(CoopCase c, double vo_star_mps) {
+  V2vMessage m;
+  m.type = MessageType::kRequest;
+  m.from_id = 0;
+  m.to_id = 1;
+  m.coop_case = c;
+  m.target_speed_mps = vo_star_mps;
+  return m;
+}
+
+TEST(Behaviour, CooperativeResponderReachesRequestedSpeedWithinItsLimits) {
+  const MainVehicle v = test::vehicle(1, 0.0, 20.0, BehaviourType::kCooperative);
+  const Params p;  // rho_c = 1 s, b_min = 4, a_acc = 2
+  {
+    MainLaneDriver driver(v, Road{}, p);
+    const auto reply = driver.answer(request(CoopCase::kEgoAhead, 16.5), 0.0, 20.0);
+    ASSERT_TRUE(reply);
+    EXPECT_EQ(reply->type, MessageType::kAccept);
+    EXPECT_EQ(reply->to_id, 0);
+    const Drive r = drive_alone(driver, 20.0, 4.0);
+    EXPECT_NEAR(r.speed.back(), 16.5, 0.05);
+    for (double a : r.accel) EXPECT_GE(a, -v.limits.brake_min_mps2 - 1e-12) << "brakes at most b_min (Def. 2.1 B)";
+  }
+  {
+    MainLaneDriver driver(v, Road{}, p);
+    const auto reply = driver.answer(request(CoopCase::kEgoBehind, 21.5), 0.0, 20.0);
+    ASSERT_TRUE(reply);
+    EXPECT_EQ(reply->type, MessageType::kAccept);
+    const Drive r = drive_alone(driver, 20.0, 4.0);
+    EXPECT_NEAR(r.speed.back(), 21.5, 0.05);
+    for (double a : r.accel) EXPECT_LE(a, v.limits.accel_max_mps2 + 1e-12) << "accelerates at most a_acc (Def. 2.2 B)";
+  }
+}
+
+TEST(Behaviour, CooperativeResponderRefusesAnUnreachableSpeed) {
+  const MainVehicle v = test::vehicle(1, 0.0, 20.0, BehaviourType::kCooperative);
+  MainLaneDriver driver(v, Road{}, Params{});
+  const auto reply = driver.answer(request(CoopCase::kEgoAhead, 10.0), 0.0, 20.0);  // needs 10 m/s in 1 s
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->type, MessageType::kRefuse);
+}
+
+TEST(Behaviour, NonResponsiveVehicleNeverAnswers) {
+  MainVehicle v = test::vehicle(1, 40.0, 20.0, BehaviourType::kNonResponsive);
+  v.v2v.capable = true;
+  MainLaneDriver driver(v, Road{}, Params{});
+  EXPECT_FALSE(driver.answer(request(CoopCase::kEgoAhead, 19.0), 0.0, 20.0));
+
+  Scenario s = test::empty_scenario();
+  s.ego.v2v.capable = true;
+  s.vehicles.push_back(v);
+  test::RequestingPlanner planner(-3.5, 20.0, 1, 19.0, CoopCase::kEgoBehind);
+  const Trace t = simulate(s, planner);
+  EXPECT_TRUE(planner.received.empty());
+  int delivered_to_vehicle = 0;
+  for (const TraceEvent& e : t.events) {
+    EXPECT_NE(e.kind == EventKind::kMessageSent ? e.vehicle_id : 0, 1) << "vehicle 1 sent a message";
+    if (e.kind == EventKind::kMessageDelivered && e.vehicle_id == 1) ++delivered_to_vehicle;
+  }
+  EXPECT_EQ(delivered_to_vehicle, 1) << "the request did arrive";
+}
+
+TEST(Behaviour, ExceedBrakeAppliesItsMagnitudeOnlyInItsWindow) {
+  MainVehicle v = test::vehicle(1, 0.0, 25.0, BehaviourType::kIdm);
+  v.noncompliance = {NonComplianceType::kExceedBrake, 1.0, 0.5, 11.0};
+  MainLaneDriver driver(v, Road{}, Params{});
+  EXPECT_EQ(driver.accel_mps2(free_road(0.9, 25.0)), 0.0);
+  EXPECT_EQ(driver.accel_mps2(free_road(1.0, 25.0)), -11.0);
+  EXPECT_TRUE(driver.non_compliant(1.2));
+  EXPECT_EQ(driver.accel_mps2(free_road(1.5, 25.0)), 0.0);
+}
+
+TEST(Behaviour, RenegingResponderAcceptsAndDoesNotYield) {
+  MainVehicle v = test::vehicle(1, 0.0, 20.0, BehaviourType::kCooperative);
+  v.noncompliance.type = NonComplianceType::kRenege;
+  MainLaneDriver driver(v, Road{}, Params{});
+  const auto reply = driver.answer(request(CoopCase::kEgoAhead, 17.0), 0.0, 20.0);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->type, MessageType::kAccept);
+  EXPECT_TRUE(driver.non_compliant(0.0));
+  const Drive r = drive_alone(driver, 20.0, 3.0);
+  EXPECT_NEAR(r.speed.back(), 20.0, 0.01);
+}
+
+// The ego merged 25 m ahead of an RSS follower at a lower speed: the follower falls back to
+// at least D_lon behind it and keeps that distance.
+TEST(Behaviour, RssFollowerKeepsSafeDistanceBehindTheMergedEgo) {
+  Scenario s = test::empty_scenario();
+  s.ego.y_m = 0.0;
+  s.ego.x_m = 25.0;
+  s.ego.speed_mps = 15.0;
+  s.params.sim.horizon_s = 30.0;
+  s.vehicles.push_back(test::vehicle(1, 0.0, 20.0, BehaviourType::kRssFollower));
+  test::LaneKeepPlanner planner(0.0, 15.0, 2.0);
+  const Trace t = simulate(s, planner);
+  const TraceStep& last = t.steps.back();
+  const Leader ego_ahead{0, last.ego.x_m - last.others[0].x_m, last.ego.vx_mps, s.ego.size.length_m,
+                         s.ego.limits.brake_max_mps2};
+  EXPECT_FALSE(rss_unsafe_behind(last.others[0].vx_mps, 4.8, s.vehicles[0].limits, ego_ahead, s.params.rss));
+  EXPECT_NEAR(last.others[0].vx_mps, 15.0, 0.3);
+  for (const TraceStep& step : t.steps) EXPECT_LT(step.others[0].x_m + 4.8, step.ego.x_m) << "no collision";
+}
+
+}  // namespace
+}  // namespace mg

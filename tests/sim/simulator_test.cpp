@@ -1,0 +1,148 @@
+#include "sim/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "test_planners.h"
+
+namespace mg {
+namespace {
+
+std::vector<const TraceEvent*> events_of(const Trace& t, EventKind k) {
+  std::vector<const TraceEvent*> out;
+  for (const TraceEvent& e : t.events)
+    if (e.kind == k) out.push_back(&e);
+  return out;
+}
+
+// Busy scenario: bounded-random, cooperative and IDM traffic, lossy V2V, a merge.
+Scenario busy_scenario() {
+  Scenario s = test::empty_scenario();
+  s.ego.v2v = {true, 0.1, 0.3};
+  MainVehicle a = test::vehicle(1, -20.0, 22.0, BehaviourType::kBoundedRandom);
+  a.behaviour.seed = 42;
+  MainVehicle b = test::vehicle(2, 60.0, 18.0, BehaviourType::kCooperative);
+  b.v2v = {true, 0.2, 0.2};
+  MainVehicle c = test::vehicle(3, 120.0, 19.0, BehaviourType::kIdm);
+  s.vehicles = {a, b, c};
+  return s;
+}
+
+TEST(Simulator, SameScenarioTwiceGivesTheSameDigest) {
+  const Scenario s = busy_scenario();
+  test::SigmoidPlanner p1(100.0, 0.2, 3.5, -3.5, 20.0), p2(100.0, 0.2, 3.5, -3.5, 20.0);
+  const Trace t1 = simulate(s, p1);
+  const Trace t2 = simulate(s, p2);
+  EXPECT_EQ(t1.digest, t2.digest);
+  EXPECT_EQ(t1.digest, compute_digest(t1));
+  EXPECT_EQ(trace_to_json(t1), trace_to_json(t2));
+}
+
+TEST(Simulator, DigestChangesWhenTheSeedChanges) {
+  Scenario s = busy_scenario();
+  test::SigmoidPlanner p1(100.0, 0.2, 3.5, -3.5, 20.0), p2(100.0, 0.2, 3.5, -3.5, 20.0);
+  const Trace t1 = simulate(s, p1);
+  s.vehicles[0].behaviour.seed = 43;
+  EXPECT_NE(t1.digest, simulate(s, p2).digest);
+}
+
+TEST(Simulator, RecordsEveryStepAndEveryPlannerCycle) {
+  const Scenario s = busy_scenario();  // 10 s, step 0.02 s, planner every 0.1 s
+  test::LaneKeepPlanner planner(-3.5, 20.0, 2.0);
+  const Trace t = simulate(s, planner);
+  ASSERT_EQ(t.steps.size(), 501u);
+  EXPECT_EQ(t.decisions.size(), 101u);
+  EXPECT_EQ(t.steps.front().time_s, 0.0);
+  EXPECT_NEAR(t.steps.back().time_s, 10.0, 1e-12);
+  EXPECT_NEAR(t.decisions[7].time_s, 0.7, 1e-12);
+  for (const TraceStep& step : t.steps) EXPECT_EQ(step.others.size(), 3u);
+  EXPECT_EQ(events_of(t, EventKind::kDecision).size(), 1u) << "one mode for the whole run";
+  EXPECT_EQ(t.planner, "test-lane-keep");
+}
+
+TEST(Simulator, SigmoidMergeRaisesStartMidpointAndCompleteInOrder) {
+  const Scenario s = test::empty_scenario();
+  test::SigmoidPlanner planner(100.0, 0.2, 3.5, -3.5, 20.0);
+  const Trace t = simulate(s, planner);
+  const auto start = events_of(t, EventKind::kMergeStart);
+  const auto mid = events_of(t, EventKind::kMergeMidpoint);
+  const auto done = events_of(t, EventKind::kMergeComplete);
+  ASSERT_EQ(start.size(), 1u);
+  ASSERT_EQ(mid.size(), 1u);
+  ASSERT_EQ(done.size(), 1u);
+  EXPECT_LT(start[0]->time_s, mid[0]->time_s);
+  EXPECT_LT(mid[0]->time_s, done[0]->time_s);
+  EXPECT_NEAR(mid[0]->time_s, 5.0, 0.3) << "P_c = 100 m is reached at 5 s";
+  EXPECT_EQ(events_of(t, EventKind::kDecision).size(), 2u) << "def1_merge, then merged";
+}
+
+TEST(Simulator, CooperationRoundTripReachesTheEgoAfterBothLatencies) {
+  Scenario s = test::empty_scenario();
+  s.ego.v2v = {true, 0.2, 0.0};
+  MainVehicle v = test::vehicle(1, 10.0, 20.0, BehaviourType::kCooperative);
+  v.v2v = {true, 0.3, 0.0};
+  s.vehicles.push_back(v);
+  test::RequestingPlanner planner(-3.5, 20.0, 1, 17.0, CoopCase::kEgoAhead);
+  const Trace t = simulate(s, planner);
+  ASSERT_EQ(planner.received.size(), 1u);
+  EXPECT_EQ(planner.received[0].second.type, MessageType::kAccept);
+  EXPECT_NEAR(planner.received[0].first, 0.5, 1e-9) << "0.2 s out, 0.3 s back, next planner cycle";
+  EXPECT_NEAR(t.steps[150].others[0].vx_mps, 17.0, 0.05) << "tracking v_o* at t = 3 s";
+}
+
+TEST(Simulator, HaltAndResumeAreEvents) {
+  Scenario s = test::empty_scenario();
+  s.ego.speed_mps = 5.0;
+  class StopGo : public Planner {
+   public:
+    std::string name() const override { return "test-stop-go"; }
+    PlanOutput plan(const WorldSnapshot& w) override {
+      PlanOutput out;
+      out.path = test::line_at(w.ego.x_m, -3.5);
+      out.target_speed_mps = w.time_s < 4.0 ? 0.0 : 5.0;
+      out.accel_limit_mps2 = 3.0;
+      return out;
+    }
+  } planner;
+  const Trace t = simulate(s, planner);
+  const auto halt = events_of(t, EventKind::kHalt);
+  const auto resume = events_of(t, EventKind::kResume);
+  ASSERT_EQ(halt.size(), 1u);
+  ASSERT_EQ(resume.size(), 1u);
+  EXPECT_LT(halt[0]->time_s, 4.0);
+  EXPECT_GT(resume[0]->time_s, 4.0);
+  EXPECT_GT(t.steps.back().ego.vx_mps, 4.0);
+}
+
+TEST(Simulator, NonComplianceStartIsAnEvent) {
+  Scenario s = test::empty_scenario();
+  MainVehicle v = test::vehicle(1, 50.0, 20.0, BehaviourType::kIdm);
+  v.noncompliance = {NonComplianceType::kExceedAccel, 2.0, 1.0, 5.0};
+  s.vehicles.push_back(v);
+  test::LaneKeepPlanner planner(-3.5, 20.0, 2.0);
+  const Trace t = simulate(s, planner);
+  const auto nc = events_of(t, EventKind::kNonCompliance);
+  ASSERT_EQ(nc.size(), 1u);
+  EXPECT_NEAR(nc[0]->time_s, 2.0, 1e-9);
+  EXPECT_EQ(nc[0]->vehicle_id, 1);
+  const auto at = [&](double time) { return t.steps[static_cast<std::size_t>(std::llround(time / 0.02))]; };
+  EXPECT_DOUBLE_EQ(at(2.5).others[0].accel_mps2, 5.0);
+}
+
+TEST(Simulator, TraceJsonCarriesStepsDecisionsEventsAndHexDigest) {
+  const Scenario s = busy_scenario();
+  test::SigmoidPlanner planner(100.0, 0.2, 3.5, -3.5, 20.0);
+  const Trace t = simulate(s, planner);
+  const nlohmann::json j = trace_to_json(t);
+  EXPECT_EQ(j.at("steps").size(), t.steps.size());
+  EXPECT_EQ(j.at("decisions").size(), t.decisions.size());
+  EXPECT_EQ(j.at("events").size(), t.events.size());
+  EXPECT_EQ(j.at("digest").get<std::string>(), digest_hex(t.digest));
+  EXPECT_EQ(j.at("digest").get<std::string>().size(), 16u);
+  EXPECT_EQ(j.at("steps").at(0).at("others").size(), 3u);
+}
+
+}  // namespace
+}  // namespace mg

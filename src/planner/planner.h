@@ -67,6 +67,8 @@ struct Decision {
   double pc_max_m = std::numeric_limits<double>::quiet_NaN();
   double pc_m = std::numeric_limits<double>::quiet_NaN();
   double kappa_per_m = std::numeric_limits<double>::quiet_NaN();
+  // Merge duration rho the decision was evaluated with (rho_m, or longer for slow merges).
+  double merge_duration_s = std::numeric_limits<double>::quiet_NaN();
   // Definition 2: responder and the v_o* asked for.
   int coop_partner_id = -1;
   double vo_star_mps = std::numeric_limits<double>::quiet_NaN();

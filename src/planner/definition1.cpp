@@ -1,0 +1,99 @@
+#include "planner/definition1.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "core/rss.h"
+
+namespace mg {
+
+double SpeedRamp::speed_at_mps(double t_s) const {
+  if (v_target_mps >= v0_mps) return std::min(v_target_mps, v0_mps + accel_mps2 * t_s);
+  return std::max(v_target_mps, v0_mps - brake_mps2 * t_s);
+}
+
+double SpeedRamp::distance_at_m(double t_s) const {
+  const double dv = v_target_mps - v0_mps;
+  if (dv == 0.0) return v0_mps * t_s;
+  const double rate = dv >= 0.0 ? accel_mps2 : brake_mps2;
+  const double ramp_s = std::abs(dv) / rate;
+  if (t_s <= ramp_s) {  // still changing speed
+    const double signed_rate = dv >= 0.0 ? rate : -rate;
+    return v0_mps * t_s + 0.5 * signed_rate * t_s * t_s;
+  }
+  // Ramp completed: average speed during the ramp, then v_target.
+  return 0.5 * (v0_mps + v_target_mps) * ramp_s + v_target_mps * (t_s - ramp_s);
+}
+
+SpeedRamp Def1Context::ramp_to(double ve_star_mps) const {
+  return SpeedRamp{ego_speed_mps, ve_star_mps, ego_limits.accel_max_mps2, ego_limits.brake_min_mps2};
+}
+
+// RCPP ineq. (1.1); Def. 1.1 (DESIGN §4, with the bounded-rate fix).
+double def1_1_margin_m(const Def1Context& c, const MainLaneVehicle& follower, double ve_star_mps) {
+  const double half_s = 0.5 * c.merge_duration_s;
+  const SpeedRamp ramp = c.ramp_to(ve_star_mps);
+  const double follower_speed_mps = follower.speed_mps + follower.limits.accel_max_mps2 * half_s;
+  const double follower_x_m = follower.x_m + follower.speed_mps * half_s +
+                              follower.limits.accel_max_mps2 * c.merge_duration_s * c.merge_duration_s / 8.0;
+  const double d_lon_m = rss_longitudinal_m({follower_speed_mps, ramp.speed_at_mps(half_s), follower.length_m,
+                                             c.ego_length_m, c.response_time_s, follower.limits.accel_max_mps2,
+                                             follower.limits.brake_min_mps2, c.ego_limits.brake_max_mps2});
+  return (c.ego_x_m + ramp.distance_at_m(half_s) - d_lon_m) - follower_x_m;
+}
+
+// RCPP ineq. (1.2); Def. 1.2 (DESIGN §4, with the bounded-rate fix).
+double def1_2_margin_m(const Def1Context& c, const MainLaneVehicle& leader, double ve_star_mps) {
+  const double rho_s = c.merge_duration_s;
+  const SpeedRamp ramp = c.ramp_to(ve_star_mps);
+  const double d_lon_m = rss_longitudinal_m({ramp.speed_at_mps(rho_s), leader.speed_mps, c.ego_length_m,
+                                             leader.length_m, c.response_time_s, c.ego_limits.accel_max_mps2,
+                                             c.ego_limits.brake_min_mps2, leader.limits.brake_max_mps2});
+  return (leader.x_m + leader.speed_mps * rho_s - d_lon_m) - (c.ego_x_m + ramp.distance_at_m(rho_s));
+}
+
+std::vector<LaneGap> enumerate_gaps(std::vector<MainLaneVehicle> lane_vehicles) {
+  std::sort(lane_vehicles.begin(), lane_vehicles.end(), [](const MainLaneVehicle& a, const MainLaneVehicle& b) {
+    return a.x_m != b.x_m ? a.x_m < b.x_m : a.id < b.id;
+  });
+  std::vector<LaneGap> gaps;
+  std::optional<MainLaneVehicle> follower;
+  for (const MainLaneVehicle& v : lane_vehicles) {
+    gaps.push_back(LaneGap{follower, v});
+    follower = v;
+  }
+  gaps.push_back(LaneGap{follower, std::nullopt});
+  return gaps;
+}
+
+SpeedInterval solve_def1_interval(const Def1Context& c, const LaneGap& gap) {
+  assert(c.speed_limit_mps > 0.0 && c.merge_duration_s > 0.0);
+  double lo = 0.0;
+  double hi = c.speed_limit_mps;
+  if (gap.follower) {
+    const auto bound = lowest_satisfying(
+        [&](double v) { return def1_1_margin_m(c, *gap.follower, v); }, lo, hi);
+    if (!bound) return {};
+    lo = *bound;
+  }
+  if (gap.leader) {
+    const auto bound = highest_satisfying(
+        [&](double v) { return def1_2_margin_m(c, *gap.leader, v); }, 0.0, c.speed_limit_mps);
+    if (!bound || *bound < lo) return {};
+    hi = *bound;
+  }
+  return SpeedInterval{true, lo, hi};
+}
+
+double halt_point_x_m(const Road& road, double halt_margin_m, double ego_length_m,
+                      double standstill_merge_length_m) {
+  return road.side_lane_end_x_m - halt_margin_m - 0.5 * ego_length_m - standstill_merge_length_m;
+}
+
+double halt_speed_cap_mps(double ego_x_m, double halt_x_m, double brake_mps2) {
+  const double remaining_m = halt_x_m - ego_x_m;
+  return remaining_m > 0.0 ? std::sqrt(2.0 * brake_mps2 * remaining_m) : 0.0;
+}
+
+}  // namespace mg

@@ -1,0 +1,548 @@
+#include "planner/rcpp_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+
+#include "core/rss.h"
+#include "planner/potential_field.h"
+#include "planner/proper_response.h"
+#include "planner/world_view.h"
+
+namespace mg {
+namespace {
+
+constexpr double kPathBehindM = 10.0;
+constexpr double kPathAheadM = 160.0;
+constexpr double kPathStepM = 1.0;
+constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
+constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
+
+std::string fmt(const char* f, double a) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, a);
+  return buf;
+}
+
+std::string gap_name(const Gap& g) {
+  const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
+  return "gap (follower " + id(g.follower_id) + ", leader " + id(g.leader_id) + ")";
+}
+
+double ln_ratio(double fraction) { return std::log(fraction / (1.0 - fraction)); }
+// Distance from the start of the sigmoid (within kSigmoidEndFraction of the side lane) to P_c,
+// times kappa; the same from P_c to completion.
+double half_span_times_kappa() { return ln_ratio(1.0 - kSigmoidEndFraction); }
+
+Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
+  const Scenario& s = *w.scenario;
+  return Def1Context{w.ego.x_m, ego_speed_mps(w), s.ego.size.length_m, s.ego.limits,
+                     s.params.rss.response_time_s, rho_s, s.road.speed_limit_mps};
+}
+
+CoopContext coop_context(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  return CoopContext{w.ego.x_m, ego_speed_mps(w), s.ego.size.length_m, s.ego.limits,
+                     s.params.rss.response_time_s, s.params.planner.merge_duration_s,
+                     s.params.planner.comm_threshold_s, s.road.speed_limit_mps};
+}
+
+// The x the ego's centre may reach at most while its sigmoid still has `exit` left to cover:
+// the side lane's end minus half the ego length (DESIGN §2: never pass the end in the side lane).
+double side_exit_limit_x_m(const Scenario& s) { return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m; }
+
+// Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
+// start_x_m), completes by complete_by_x_m, leaves the side lane before its end, and respects the
+// comfort bound at peak_speed_mps and the configured [kappa_min, kappa_max].
+KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
+                           double peak_speed_mps) {
+  const PlannerParams& p = s.params.planner;
+  const double before_m = pc_m - start_x_m;
+  const double after_m = complete_by_x_m - pc_m;
+  const double exit_room_m = side_exit_limit_x_m(s) - pc_m;
+  if (before_m <= 0.0 || after_m <= 0.0 || exit_room_m <= 0.0) return std::nullopt;
+  const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
+  const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
+                              half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
+  const double hi = std::min(p.kappa_max_per_m,
+                             kappa_comfort_max_per_m(peak_speed_mps, s.road.lane_width_m, p.lat_accel_comfort_mps2));
+  if (lo > hi) return std::nullopt;
+  return std::make_pair(lo, hi);
+}
+
+// Potential field cost of a candidate path (docs/planner.md): the mean of RCPP eq. (3)-(5) over
+// kFieldSamples instants of [0, duration_s], the ego at ego_x_at(t) on the sigmoid, every other
+// vehicle at other_x_at(o, t), sigma from the RSS distances at the decision instant.
+double field_cost(const WorldSnapshot& w, const Sigmoid& sig, double duration_s,
+                  const std::function<double(double)>& ego_x_at,
+                  const std::function<double(const ObservedVehicle&, double)>& other_x_at) {
+  const Scenario& s = *w.scenario;
+  const double v_e = ego_speed_mps(w);
+  FieldScene scene{&s.road, s.ego.size.width_m, {}, 0.0, LaneCentreMode::kMerging};
+  std::vector<std::pair<double, double>> d_lat_lon;
+  for (const ObservedVehicle& o : w.others) {
+    const double v_o = std::max(0.0, o.state.road_vx_mps());
+    const bool ego_rear = o.state.x_m >= w.ego.x_m;
+    const double d_lon = ego_rear
+        ? rss_longitudinal_m({v_e, v_o, s.ego.size.length_m, o.size.length_m, s.params.rss.response_time_s,
+                              s.ego.limits.accel_max_mps2, s.ego.limits.brake_min_mps2, o.limits.brake_max_mps2})
+        : rss_longitudinal_m({v_o, v_e, o.size.length_m, s.ego.size.length_m, s.params.rss.response_time_s,
+                              o.limits.accel_max_mps2, o.limits.brake_min_mps2, s.ego.limits.brake_max_mps2});
+    const double d_lat = rss_lateral_m({0.0, 0.0, o.size.width_m, s.ego.size.width_m, s.params.rss.response_time_s,
+                                        s.ego.limits.lat_accel_max_mps2, s.ego.limits.lat_brake_min_mps2,
+                                        s.params.rss.fluctuation_margin_m});
+    d_lat_lon.emplace_back(d_lat, d_lon);
+  }
+  double sum = 0.0;
+  for (int k = 0; k <= kFieldSamples; ++k) {
+    const double t = duration_s * k / kFieldSamples;
+    scene.obstacles.clear();
+    for (std::size_t i = 0; i < w.others.size(); ++i)
+      scene.obstacles.push_back(obstacle_field_from_rss(other_x_at(w.others[i], t), w.others[i].state.y_m,
+                                                        d_lat_lon[i].first, d_lat_lon[i].second));
+    const double x = ego_x_at(t);
+    sum += field_potential(scene, s.params.planner, x, sig.y_at_m(x));
+  }
+  return sum / (kFieldSamples + 1);
+}
+
+double constant_speed_x(const ObservedVehicle& o, double t) {
+  return o.state.x_m + std::max(0.0, o.state.road_vx_mps()) * t;
+}
+
+double gap_traffic_speed_mps(const LaneGap& g, double fallback_mps) {
+  if (g.follower && g.leader) return 0.5 * (g.follower->speed_mps + g.leader->speed_mps);
+  if (g.follower) return g.follower->speed_mps;
+  if (g.leader) return g.leader->speed_mps;
+  return fallback_mps;
+}
+
+// Definition 1 for one merge duration rho_s.
+std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_s, std::string* why) {
+  const Scenario& s = *w.scenario;
+  const PlannerParams& p = s.params.planner;
+  const Def1Context ctx = def1_context(w, rho_s);
+  const double half_s = 0.5 * rho_s;
+  std::optional<Def1Plan> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  int n_def1 = 0, n_cross = 0, n_sigmoid = 0;
+  for (const LaneGap& gap : enumerate_gaps(target_lane_vehicles(w))) {
+    const Gap gid{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1};
+    const SpeedInterval iv = solve_def1_interval(ctx, gap);
+    if (!iv.feasible) { ++n_def1; continue; }
+    const auto pc_of = [&](double v) { return ctx.ego_x_m + ctx.ramp_to(v).distance_at_m(half_s); };
+    // Sigmoid upper bound (RCPP §II-C): P_c <= X_o - D_lon at the leader's predicted position.
+    double v_hi = iv.hi_mps;
+    if (gap.leader) {
+      const MainLaneVehicle& l = *gap.leader;
+      const auto margin = [&](double v) {
+        const double d = rss_longitudinal_m({ctx.ramp_to(v).speed_at_mps(half_s), l.speed_mps, ctx.ego_length_m,
+                                             l.length_m, ctx.response_time_s, ctx.ego_limits.accel_max_mps2,
+                                             ctx.ego_limits.brake_min_mps2, l.limits.brake_max_mps2});
+        return (l.x_m + l.speed_mps * half_s - d) - pc_of(v);
+      };
+      const auto bound = highest_satisfying(margin, iv.lo_mps, iv.hi_mps);
+      if (!bound) { ++n_cross; continue; }
+      v_hi = *bound;
+    }
+    // Lower bound X_o^i + D*_lon <= P_c coincides with ineq. (1.1) at v_e* = lo.
+    const double pc_min = pc_of(iv.lo_mps);
+    const double pc_max = std::min(pc_of(v_hi), side_exit_limit_x_m(s));
+    if (pc_min > pc_max) { ++n_cross; continue; }
+    const auto v_of_pc = [&](double pc) {
+      return lowest_satisfying([&](double v) { return pc_of(v) - pc; }, iv.lo_mps, v_hi).value_or(v_hi);
+    };
+    const double v_e = ctx.ego_speed_mps;
+    const double v_traffic = gap_traffic_speed_mps(gap, v_e);
+    const auto kappa_range = [&](double pc) {
+      const double v = v_of_pc(pc);
+      return kappa_range_for(s, pc, ctx.ego_x_m, ctx.ego_x_m + ctx.ramp_to(v).distance_at_m(rho_s), std::max(v_e, v));
+    };
+    const auto cost = [&](double pc, double kappa) {
+      const double v = v_of_pc(pc);
+      const SpeedRamp ramp = ctx.ramp_to(v);
+      const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
+      const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
+                               p.cost_traffic_speed_weight * std::abs(v - v_traffic);
+      return def1_cost + field_cost(w, sig, rho_s, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); },
+                                    constant_speed_x);
+    };
+    const auto choice = choose_sigmoid(pc_min, pc_max, p.pc_candidates, kappa_range, p.kappa_candidates, cost);
+    if (!choice) { ++n_sigmoid; continue; }
+    if (choice->cost >= best_cost) continue;
+    best_cost = choice->cost;
+    Def1Plan plan;
+    plan.ve_star_mps = v_of_pc(choice->pc_m);
+    plan.sigmoid = Sigmoid{s.road.lane_width_m, choice->kappa_per_m, choice->pc_m, -s.road.lane_width_m};
+    Decision& d = plan.decision;
+    d.time_s = w.time_s;
+    d.mode = DecisionMode::kDef1Merge;
+    d.gap = gid;
+    d.ve_min_mps = iv.lo_mps;
+    d.ve_max_mps = iv.hi_mps;
+    d.ve_star_mps = plan.ve_star_mps;
+    d.pc_min_m = pc_min;
+    d.pc_max_m = pc_max;
+    d.pc_m = choice->pc_m;
+    d.kappa_per_m = choice->kappa_per_m;
+    d.merge_duration_s = rho_s;
+    d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fmt("%.2f", iv.lo_mps) + ", " +
+               fmt("%.2f", iv.hi_mps) + "] m/s; merging at v_e* = " + fmt("%.2f", plan.ve_star_mps) +
+               " m/s, P_c = " + fmt("%.1f", choice->pc_m) + " m, kappa = " + fmt("%.3f", choice->kappa_per_m) +
+               "/m, rho = " + fmt("%.1f", rho_s) + " s (cost " + fmt("%.2f", choice->cost) + ")";
+    best = plan;
+  }
+  if (!best && why)
+    *why = std::to_string(n_def1) + " gap(s) violate ineq. 1.1/1.2, " + std::to_string(n_cross) +
+           " with crossing P_c bounds, " + std::to_string(n_sigmoid) + " without a comfortable sigmoid";
+  return best;
+}
+
+std::optional<MainLaneVehicle> neighbour(const std::vector<MainLaneVehicle>& lane, std::size_t i, int dir) {
+  const long j = static_cast<long>(i) + dir;
+  if (j < 0 || j >= static_cast<long>(lane.size())) return std::nullopt;
+  return lane[static_cast<std::size_t>(j)];
+}
+
+// One Definition 2 candidate: responder `o` (index i of the lane), case k.
+std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
+                                       std::size_t i, CoopCase k, double* cost_out) {
+  const Scenario& s = *w.scenario;
+  const PlannerParams& p = s.params.planner;
+  const CoopContext c = coop_context(w);
+  const MainLaneVehicle& o = lane[i];
+  const VoStar vo = solve_vo_star(c, o, k);
+  if (!vo.feasible) return std::nullopt;
+  const double v_after = coop_ego_speed_after_mps(c, k);
+  const double t_c = c.comm_threshold_s + 0.5 * c.merge_duration_s;  // decision to P_c
+  const double responder_at_pc_m = o.x_m + 0.5 * (o.speed_mps + vo.vo_star_mps) * c.comm_threshold_s +
+                                   vo.vo_star_mps * 0.5 * c.merge_duration_s;
+  double pc_min = c.ego_x_m + coop_ego_travel_m(c, k);
+  double pc_max = side_exit_limit_x_m(s);
+  Gap gap;
+  if (k == CoopCase::kEgoAhead) {
+    pc_min = std::max(pc_min, responder_at_pc_m + vo.d_lon_star_m);  // ineq. (3) in P_c form
+    gap = Gap{o.id, -1};
+    if (const auto l = neighbour(lane, i, +1)) {  // the gap's leader: ineq. (1.2) over rho_c + rho_m
+      gap.leader_id = l->id;
+      Def1Context d1 = def1_context(w, c.comm_threshold_s + c.merge_duration_s);
+      if (def1_2_margin_m(d1, *l, c.ego_speed_mps) < 0.0) return std::nullopt;
+      const double d = rss_longitudinal_m({v_after, l->speed_mps, c.ego_length_m, l->length_m, c.response_time_s,
+                                           c.ego_limits.accel_max_mps2, c.ego_limits.brake_min_mps2,
+                                           l->limits.brake_max_mps2});
+      pc_max = std::min(pc_max, l->x_m + l->speed_mps * t_c - d);
+    }
+  } else {
+    pc_max = std::min(pc_max, responder_at_pc_m - vo.d_lon_star_m);
+    gap = Gap{-1, o.id};
+    if (const auto f = neighbour(lane, i, -1)) {  // the gap's follower: ineq. (1.1) at P_c
+      gap.follower_id = f->id;
+      Def1Context d1 = def1_context(w, 2.0 * t_c);
+      const double margin = def1_1_margin_m(d1, *f, v_after);  // = P_c - (X_f + D_lon) at P_c
+      if (margin < 0.0) return std::nullopt;
+      pc_min = std::max(pc_min, coop_pc_m(c, k) - margin);
+    }
+  }
+  const double pc = coop_pc_m(c, k);
+  if (pc < pc_min || pc > pc_max) return std::nullopt;  // P_c bounds cross: abort (RCPP §II-C)
+  const double start_x = c.ego_x_m + coop_ego_travel_m(c, k);
+  const double complete_by_x = pc + v_after * 0.5 * c.merge_duration_s;
+  const auto kappa_range = [&](double pc_m) {
+    return kappa_range_for(s, pc_m, start_x, complete_by_x, std::max(c.ego_speed_mps, v_after));
+  };
+  const SpeedRamp ramp{c.ego_speed_mps, v_after, c.ego_limits.accel_max_mps2, c.ego_limits.brake_min_mps2};
+  const auto partner_x = [&](const ObservedVehicle& v, double t) {
+    if (v.id != o.id) return constant_speed_x(v, t);
+    const SpeedRamp r{o.speed_mps, vo.vo_star_mps, std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9,
+                      std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9};
+    return o.x_m + r.distance_at_m(t);
+  };
+  const double base = p.cost_time_weight * t_c +
+                      p.cost_speed_change_weight * (std::abs(vo.vo_star_mps - o.speed_mps) + std::abs(v_after - c.ego_speed_mps));
+  const auto cost = [&](double pc_m, double kappa) {
+    const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
+    return base + field_cost(w, sig, 2.0 * t_c, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); }, partner_x);
+  };
+  const auto choice = choose_sigmoid(pc, pc, 1, kappa_range, p.kappa_candidates, cost);
+  if (!choice) return std::nullopt;
+  *cost_out = choice->cost;
+  Def2Plan plan;
+  plan.sigmoid = Sigmoid{s.road.lane_width_m, choice->kappa_per_m, pc, -s.road.lane_width_m};
+  plan.vo = vo;
+  plan.partner = o;
+  plan.ego_speed_after_mps = v_after;
+  plan.gap = gap;
+  Decision& d = plan.decision;
+  d.time_s = w.time_s;
+  d.mode = DecisionMode::kDef2Request;
+  d.gap = gap;
+  d.pc_min_m = pc_min;
+  d.pc_max_m = pc_max;
+  d.pc_m = pc;
+  d.kappa_per_m = choice->kappa_per_m;
+  d.merge_duration_s = c.merge_duration_s;
+  d.coop_partner_id = o.id;
+  d.vo_star_mps = vo.vo_star_mps;
+  d.d_lon_star_m = vo.d_lon_star_m;
+  d.ve_star_mps = v_after;
+  d.reason = std::string(k == CoopCase::kEgoAhead ? "Def. 2.1 (ego ahead)" : "Def. 2.2 (ego behind)") +
+             ": no Def. 1 gap; asking vehicle " + std::to_string(o.id) + " for v_o* = " +
+             fmt("%.2f", vo.vo_star_mps) + " m/s (now " + fmt("%.2f", o.speed_mps) + "), P_c = " + fmt("%.1f", pc) +
+             " m, D*_lon = " + fmt("%.1f", vo.d_lon_star_m) + " m" +
+             (k == CoopCase::kEgoBehind ? "; ego brakes at b_min to " + fmt("%.2f", v_after) + " m/s" : "");
+  return plan;
+}
+
+std::vector<PathPoint> side_lane_path(const WorldSnapshot& w) {
+  return sample_straight(w.scenario->road.side_lane_y_m(), w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM,
+                         kPathStepM);
+}
+
+double accel_limit_toward(const Scenario& s, double current_mps, double target_mps) {
+  return target_mps >= current_mps ? s.ego.limits.accel_max_mps2 : s.ego.limits.brake_min_mps2;
+}
+
+}  // namespace
+
+double side_lane_exit_fraction(double ego_width_m, double lane_width_m) {
+  return std::clamp(0.5 + ego_width_m / (2.0 * lane_width_m), 0.5 + 1e-3, 1.0 - kSigmoidEndFraction);
+}
+
+double standstill_merge_length_m(const Scenario& s) {
+  const PlannerParams& p = s.params.planner;
+  const double kappa = std::clamp(
+      kappa_comfort_max_per_m(kStandstillMergeSpeedMps, s.road.lane_width_m, p.lat_accel_comfort_mps2),
+      p.kappa_min_per_m, p.kappa_max_per_m);
+  return (half_span_times_kappa() + ln_ratio(side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m))) /
+         kappa;
+}
+
+std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, std::string* why) {
+  for (const double factor : kMergeDurationFactors) {
+    std::string this_why;
+    if (auto plan = plan_definition1_rho(w, factor * w.scenario->params.planner.merge_duration_s, &this_why))
+      return plan;
+    if (why && factor == kMergeDurationFactors[0]) *why = this_why;
+  }
+  return std::nullopt;
+}
+
+std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<int, double>& retry_after_s) {
+  const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
+  std::optional<Def2Plan> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < lane.size(); ++i) {
+    const auto obs = std::find_if(w.others.begin(), w.others.end(),
+                                  [&](const ObservedVehicle& o) { return o.id == lane[i].id; });
+    if (obs == w.others.end() || !obs->v2v_capable) continue;
+    const auto retry = retry_after_s.find(lane[i].id);
+    if (retry != retry_after_s.end() && w.time_s < retry->second) continue;
+    for (const CoopCase k : {CoopCase::kEgoAhead, CoopCase::kEgoBehind}) {
+      double cost = 0.0;
+      auto plan = coop_candidate(w, lane, i, k, &cost);
+      if (plan && cost < best_cost) {
+        best_cost = cost;
+        best = std::move(plan);
+      }
+    }
+  }
+  return best;
+}
+
+PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const double lane_w = s.road.lane_width_m;
+  if (!merged_ && !merge_ && w.ego.y_m > -0.5 * lane_w) merged_ = true;  // already in the main lane
+  std::string note;
+  if (merge_) {
+    const Sigmoid& sig = merge_->sigmoid;
+    const double progress = (w.ego.y_m - sig.offset_m) / sig.width_m;
+    if (w.ego.x_m >= sig.x_at_fraction_m(1.0 - kSigmoidEndFraction) || progress >= 1.0 - kSigmoidEndFraction) {
+      merged_ = true;
+      merge_.reset();
+    } else if (merge_->decision.mode == DecisionMode::kDef1Merge && progress < kAbortLateralFraction &&
+               committed_bounds_crossed(w)) {
+      note = "merge aborted (P_c bounds crossed at the predicted positions); ";
+      merge_.reset();
+    }
+  }
+  PlanOutput out = merged_ ? keep_main_lane(w) : merge_ ? follow_merge(w) : decide_in_side_lane(w);
+  if (!note.empty()) out.decision.reason = note + out.decision.reason;
+  apply_override(w, out);
+  return out;
+}
+
+bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
+  const Scenario& s = *w.scenario;
+  const Decision& d = merge_->decision;
+  const SpeedRamp ramp{ego_speed_mps(w), merge_->target_speed_mps, s.ego.limits.accel_max_mps2,
+                       s.ego.limits.brake_min_mps2};
+  const double to_pc_m = merge_->sigmoid.pc_m - w.ego.x_m;
+  if (to_pc_m <= 0.0) return false;
+  const auto t_reach = lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_pc_m; }, 0.0, 600.0, 1e-4);
+  if (!t_reach) return true;  // the ego would never reach P_c
+  const double t = *t_reach;
+  const double v_at = ramp.speed_at_mps(t);
+  for (const ObservedVehicle& ov : w.others) {
+    const MainLaneVehicle o = to_lane_vehicle(ov);
+    if (d.gap && o.id == d.gap->follower_id) {
+      const double v_f = o.speed_mps + o.limits.accel_max_mps2 * t;
+      const double x_f = o.x_m + o.speed_mps * t + 0.5 * o.limits.accel_max_mps2 * t * t;
+      const double dl = rss_longitudinal_m({v_f, v_at, o.length_m, s.ego.size.length_m, s.params.rss.response_time_s,
+                                            o.limits.accel_max_mps2, o.limits.brake_min_mps2,
+                                            s.ego.limits.brake_max_mps2});
+      if (x_f + dl > merge_->sigmoid.pc_m) return true;
+    }
+    if (d.gap && o.id == d.gap->leader_id) {
+      const double dl = rss_longitudinal_m({v_at, o.speed_mps, s.ego.size.length_m, o.length_m,
+                                            s.params.rss.response_time_s, s.ego.limits.accel_max_mps2,
+                                            s.ego.limits.brake_min_mps2, o.limits.brake_max_mps2});
+      if (merge_->sigmoid.pc_m > o.x_m + o.speed_mps * t - dl) return true;
+    }
+  }
+  return false;
+}
+
+PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  PlanOutput out;
+  out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM, kPathStepM);
+  double target = merge_->target_speed_mps;
+  if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m))
+    target = std::min(target, rss_follow_speed_mps(w, *leader));
+  out.target_speed_mps = target;
+  out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
+  out.decision = merge_->decision;
+  if (merge_->decision.time_s != w.time_s)
+    out.decision.reason = "following the merge decided at t = " + fmt("%.2f", merge_->decision.time_s) +
+                          " s: " + merge_->decision.reason;
+  out.decision.time_s = w.time_s;
+  return out;
+}
+
+PlanOutput RcppPlanner::keep_main_lane(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const double lane_w = s.road.lane_width_m;
+  const double lane_y = std::max(0.0, std::round(w.ego.y_m / lane_w)) * lane_w;
+  PlanOutput out;
+  out.path = sample_straight(lane_y, w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM, kPathStepM);
+  double target = s.road.speed_limit_mps;
+  std::string reason = "lane keeping at the speed limit";
+  for (const ObservedVehicle& o : w.others) {  // nearest vehicle ahead in the ego's lane
+    if (std::abs(o.state.y_m - lane_y) >= 0.5 * lane_w || o.state.x_m <= w.ego.x_m) continue;
+    const double v = rss_follow_speed_mps(w, to_lane_vehicle(o));
+    if (v < target) {
+      target = v;
+      reason = "lane keeping, RSS following of vehicle " + std::to_string(o.id);
+    }
+  }
+  out.target_speed_mps = target;
+  out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
+  out.decision.time_s = w.time_s;
+  out.decision.mode = DecisionMode::kMerged;
+  out.decision.reason = reason;
+  return out;
+}
+
+PlanOutput RcppPlanner::start_merge(const WorldSnapshot& w, const Sigmoid& sig, double speed_mps, Decision d) {
+  merge_ = Merge{sig, speed_mps, std::move(d)};
+  return follow_merge(w);
+}
+
+PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const PlannerParams& p = s.params.planner;
+  const double v_e = ego_speed_mps(w);
+  const double halt_x = halt_point_x_m(s.road, p.halt_margin_m, s.ego.size.length_m, standstill_merge_length_m(s));
+  const double halt_cap = halt_speed_cap_mps(w.ego.x_m, halt_x, 0.5 * s.ego.limits.brake_min_mps2);
+  std::string note;
+  if (pending_) {
+    const int partner = pending_->plan.partner.id;
+    for (const V2vMessage& m : w.inbox) {
+      if (m.to_id != 0 || m.from_id != partner || m.sent_time_s < pending_->plan.decision.time_s) continue;
+      if (m.type == MessageType::kAccept && w.time_s <= pending_->deadline_s + s.params.sim.planner_cycle_s) {
+        Decision d = pending_->plan.decision;
+        d.mode = DecisionMode::kDef2Merge;
+        d.reason = "vehicle " + std::to_string(partner) + " accepted: " + d.reason;
+        const Def2Plan plan = pending_->plan;
+        pending_.reset();
+        return start_merge(w, plan.sigmoid, plan.ego_speed_after_mps, d);
+      }
+      if (m.type == MessageType::kRefuse) note = "Def. 2.3: vehicle " + std::to_string(partner) + " refused; ";
+    }
+    if (note.empty() && w.time_s > pending_->deadline_s)
+      note = "Def. 2.3: no acceptance from vehicle " + std::to_string(partner) + " within rho_c; ";
+    if (!note.empty()) {
+      retry_after_s_[partner] = w.time_s + kRetryAfterRhoC * p.comm_threshold_s;
+      pending_.reset();
+    }
+  }
+  std::string why;
+  if (auto plan = plan_definition1(w, &why)) {
+    pending_.reset();
+    plan->decision.reason = note + plan->decision.reason;
+    return start_merge(w, plan->sigmoid, plan->ve_star_mps, plan->decision);
+  }
+  PlanOutput out;
+  out.path = side_lane_path(w);
+  // Braking needed to stop the ego's front before the side lane's end; beyond b_min use up to b_max.
+  const double room_m = s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - w.ego.x_m;
+  const double needed = room_m > 0.0 ? v_e * v_e / (2.0 * room_m) : s.ego.limits.brake_max_mps2;
+  const double brake_limit = needed > 0.8 * s.ego.limits.brake_min_mps2 ? s.ego.limits.brake_max_mps2
+                                                                          : s.ego.limits.brake_min_mps2;
+  if (!pending_ && cooperative_ && s.ego.v2v.capable) {
+    if (auto plan = plan_definition2(w, retry_after_s_)) {
+      pending_ = Pending{*plan, w.time_s + p.comm_threshold_s};
+      V2vMessage req;
+      req.type = MessageType::kRequest;
+      req.from_id = 0;
+      req.to_id = plan->partner.id;
+      req.sent_time_s = w.time_s;
+      req.coop_case = plan->vo.coop_case;
+      req.pc_m = plan->vo.pc_m;
+      req.d_lon_star_m = plan->vo.d_lon_star_m;
+      req.target_speed_mps = plan->vo.vo_star_mps;
+      out.outbox.push_back(req);
+      plan->decision.reason = note + plan->decision.reason;
+      note.clear();
+      pending_->plan.decision = plan->decision;
+    }
+  }
+  if (pending_) {
+    out.target_speed_mps = std::min(pending_->plan.ego_speed_after_mps, halt_cap);
+    out.accel_limit_mps2 = std::max(brake_limit, accel_limit_toward(s, v_e, out.target_speed_mps));
+    out.decision = pending_->plan.decision;
+    if (out.outbox.empty())
+      out.decision.reason = "waiting for vehicle " + std::to_string(pending_->plan.partner.id) + " until t = " +
+                            fmt("%.2f", pending_->deadline_s) + " s: " + out.decision.reason;
+    out.decision.time_s = w.time_s;
+    return out;
+  }
+  out.target_speed_mps = std::min(v_e, halt_cap);
+  out.accel_limit_mps2 = brake_limit;
+  out.decision.time_s = w.time_s;
+  out.decision.mode = DecisionMode::kDef1Halt;
+  out.decision.reason = note + "Def. 1.3: no feasible gap (" + why + "); braking to halt by x = " +
+                        fmt("%.1f", halt_x) + " m and re-evaluating";
+  return out;
+}
+
+void RcppPlanner::apply_override(const WorldSnapshot& w, PlanOutput& out) const {
+  const auto danger = rss_danger_ahead(w);
+  if (!danger) return;
+  const Scenario& s = *w.scenario;
+  const auto o = std::find_if(w.others.begin(), w.others.end(),
+                              [&](const ObservedVehicle& v) { return v.id == danger->vehicle_id; });
+  out.proper_response = true;
+  out.target_speed_mps = std::min(out.target_speed_mps, rss_follow_speed_mps(w, to_lane_vehicle(*o)));
+  out.accel_limit_mps2 = std::max(out.accel_limit_mps2, s.ego.limits.brake_max_mps2);
+  out.decision.mode = DecisionMode::kProperResponse;
+  out.decision.reason = "RSS proper response: vehicle " + std::to_string(danger->vehicle_id) + " ahead at " +
+                        fmt("%.1f", danger->lon_distance_m) + " m < D_lon " + fmt("%.1f", danger->d_lon_m) +
+                        " m and lateral " + fmt("%.2f", danger->lat_distance_m) + " m < D_lat " +
+                        fmt("%.2f", danger->d_lat_m) + " m; braking at least b_min (" + out.decision.reason + ")";
+}
+
+}  // namespace mg

@@ -1,0 +1,84 @@
+// The RCPP planner (RCPP §II, DESIGN §4-§6): each cycle, the RSS override first; a committed merge
+// is followed along its sigmoid; otherwise Definition 1 picks a gap, v_e* and the sigmoid, and
+// with cooperation enabled ("rcpp-coop") Definition 2 asks a V2V neighbour for v_o* when no
+// Definition 1 gap exists; with neither, Definition 1.3 halts before the side lane's end.
+// Decision rules and cost: docs/planner.md.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "planner/definition2.h"
+#include "planner/planner.h"
+#include "planner/sigmoid.h"
+
+namespace mg {
+
+// Merge durations tried, as multiples of rho_m: rho_m itself first; longer ones only admit slow
+// merges (from standstill) whose comfortable sigmoid does not fit in rho_m (docs/planner.md).
+inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
+// A committed merge may be aborted (P_c bounds crossed) only while the ego has covered less than
+// this fraction of the lateral offset; later it completes, protected by the RSS override.
+inline constexpr double kAbortLateralFraction = 0.25;
+// Fraction of the ego width that must have left the side lane before the side lane's end: the
+// ego's right edge is beyond the lane line, i.e. the sigmoid has covered 1/2 + w/(2W) of W.
+double side_lane_exit_fraction(double ego_width_m, double lane_width_m);
+
+// The room a merge from standstill needs ahead of the halted ego: the distance from the start of
+// a comfortable sigmoid at kStandstillMergeSpeed to the side-lane exit (Def. 1.3).
+inline constexpr double kStandstillMergeSpeedMps = 5.0;
+double standstill_merge_length_m(const Scenario& s);
+
+// Definition 1 at one decision instant: the best gap and sigmoid over the merge durations.
+struct Def1Plan {
+  Decision decision;  // mode kDef1Merge, gap, v_e* interval and choice, P_c bounds/choice, kappa
+  Sigmoid sigmoid;
+  double ve_star_mps = 0.0;
+};
+// nullopt when no gap is feasible; `why` then says why the gaps failed.
+std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, std::string* why);
+
+// Definition 2 request at one decision instant (excluding partners in `excluded`).
+struct Def2Plan {
+  Decision decision;  // mode kDef2Request, partner, v_o*, D*_lon, P_c bounds/choice, kappa
+  Sigmoid sigmoid;
+  VoStar vo;
+  MainLaneVehicle partner;
+  double ego_speed_after_mps = 0.0;  // the ego's speed during and after the exchange
+  Gap gap;
+};
+std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<int, double>& retry_after_s);
+
+class RcppPlanner : public Planner {
+ public:
+  explicit RcppPlanner(bool cooperative) : cooperative_(cooperative) {}
+  std::string name() const override { return cooperative_ ? "rcpp-coop" : "rcpp"; }
+  PlanOutput plan(const WorldSnapshot& w) override;
+
+ private:
+  struct Merge {
+    Sigmoid sigmoid;
+    double target_speed_mps = 0.0;
+    Decision decision;
+  };
+  struct Pending {
+    Def2Plan plan;
+    double deadline_s = 0.0;
+  };
+
+  PlanOutput follow_merge(const WorldSnapshot& w);
+  PlanOutput keep_main_lane(const WorldSnapshot& w);
+  PlanOutput decide_in_side_lane(const WorldSnapshot& w);
+  PlanOutput start_merge(const WorldSnapshot& w, const Sigmoid& s, double speed_mps, Decision d);
+  bool committed_bounds_crossed(const WorldSnapshot& w) const;
+  void apply_override(const WorldSnapshot& w, PlanOutput& out) const;
+
+  bool cooperative_;
+  bool merged_ = false;
+  std::optional<Merge> merge_;
+  std::optional<Pending> pending_;
+  std::map<int, double> retry_after_s_;  // partner id -> earliest time of a new request
+};
+
+}  // namespace mg

@@ -1,0 +1,74 @@
+#include "planner/sigmoid.h"
+
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace mg {
+namespace {
+
+const double kSixRootThree = 6.0 * std::sqrt(3.0);
+
+std::vector<double> even_grid(double lo, double hi, int n) {
+  if (n <= 1 || hi <= lo) return {0.5 * (lo + hi)};
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) v.push_back(lo + (hi - lo) * i / (n - 1));
+  return v;
+}
+
+}  // namespace
+
+// RCPP §II-C, f_sig.
+double Sigmoid::y_at_m(double x_m) const {
+  return width_m / (1.0 + std::exp(-kappa_per_m * (x_m - pc_m))) + offset_m;
+}
+
+double Sigmoid::x_at_fraction_m(double fraction) const {
+  assert(fraction > 0.0 && fraction < 1.0);
+  return pc_m + std::log(fraction / (1.0 - fraction)) / kappa_per_m;
+}
+
+double sigmoid_peak_lat_accel_mps2(double speed_mps, double width_m, double kappa_per_m) {
+  return speed_mps * speed_mps * width_m * kappa_per_m * kappa_per_m / kSixRootThree;
+}
+
+double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_accel_mps2) {
+  if (speed_mps <= 0.0) return std::numeric_limits<double>::infinity();
+  return std::sqrt(kSixRootThree * lat_accel_mps2 / width_m) / speed_mps;
+}
+
+std::vector<PathPoint> sample_sigmoid(const Sigmoid& s, double x_from_m, double x_to_m, double step_m) {
+  assert(step_m > 0.0 && x_to_m > x_from_m);
+  std::vector<PathPoint> path;
+  const int n = static_cast<int>(std::ceil((x_to_m - x_from_m) / step_m));
+  for (int i = 0; i <= n; ++i) {
+    const double x = std::min(x_from_m + i * step_m, x_to_m);
+    path.push_back({x, s.y_at_m(x)});
+  }
+  return path;
+}
+
+std::vector<PathPoint> sample_straight(double y_m, double x_from_m, double x_to_m, double step_m) {
+  assert(step_m > 0.0 && x_to_m > x_from_m);
+  std::vector<PathPoint> path;
+  const int n = static_cast<int>(std::ceil((x_to_m - x_from_m) / step_m));
+  for (int i = 0; i <= n; ++i) path.push_back({std::min(x_from_m + i * step_m, x_to_m), y_m});
+  return path;
+}
+
+std::optional<SigmoidChoice> choose_sigmoid(double pc_min_m, double pc_max_m, int n_pc,
+                                            const std::function<KappaRange(double)>& kappa_range, int n_kappa,
+                                            const std::function<double(double, double)>& cost) {
+  std::optional<SigmoidChoice> best;
+  for (const double pc : even_grid(pc_min_m, pc_max_m, n_pc)) {
+    const KappaRange range = kappa_range(pc);
+    if (!range || range->first > range->second) continue;
+    for (const double kappa : even_grid(range->first, range->second, n_kappa)) {
+      const double c = cost(pc, kappa);
+      if (!best || c < best->cost) best = SigmoidChoice{pc, kappa, c};
+    }
+  }
+  return best;
+}
+
+}  // namespace mg

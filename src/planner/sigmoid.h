@@ -1,0 +1,55 @@
+// The sigmoid planner of RCPP §II-C (DESIGN §6): the merge path
+//   y(X) = W / (1 + exp(-kappa (X - P_c))) + b,
+// the comfort bound on kappa, and the choice of (P_c, kappa) among candidates scored by a cost
+// (the potential field along the path plus the Definition 1 cost; docs/planner.md).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "planner/planner.h"
+
+namespace mg {
+
+struct Sigmoid {
+  double width_m = 0.0;      // W, lane-centre to lane-centre
+  double kappa_per_m = 0.0;  // slope parameter, > 0
+  double pc_m = 0.0;         // P_c, midpoint
+  double offset_m = 0.0;     // b, the start lane's centre
+  double y_at_m(double x_m) const;
+  // x where the path has covered `fraction` (0..1) of W: P_c + ln(f/(1-f))/kappa.
+  double x_at_fraction_m(double fraction) const;
+};
+
+// Peak lateral acceleration of the logistic path at constant speed v: v^2 W kappa^2 / (6 sqrt 3)
+// (max |y''| = W kappa^2/(6 sqrt 3) at X - P_c = +-ln(2 + sqrt 3)/kappa; DESIGN §6).
+double sigmoid_peak_lat_accel_mps2(double speed_mps, double width_m, double kappa_per_m);
+// The largest kappa with sigmoid_peak_lat_accel <= lat_accel_mps2 (infinite at speed 0).
+double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_accel_mps2);
+
+// Fraction of W within which the path counts as "at" a lane centre: the sigmoid starts within
+// kSigmoidEndFraction of the side lane at the ego (so the path is continuous with the ego's
+// position) and the merge is complete at 1 - kSigmoidEndFraction.
+inline constexpr double kSigmoidEndFraction = 0.02;
+
+// Samples the path from x_from to x_to (inclusive, step_m apart), strictly increasing in X.
+std::vector<PathPoint> sample_sigmoid(const Sigmoid& s, double x_from_m, double x_to_m, double step_m);
+std::vector<PathPoint> sample_straight(double y_m, double x_from_m, double x_to_m, double step_m);
+
+struct SigmoidChoice {
+  double pc_m = 0.0;
+  double kappa_per_m = 0.0;
+  double cost = 0.0;
+};
+
+// Grid search: n_pc values of P_c evenly over [pc_min, pc_max] (the midpoint when n_pc == 1 or
+// the bounds coincide), for each the admissible kappa range from kappa_range(pc) (nullopt: none),
+// n_kappa values evenly over it, each scored by cost(pc, kappa). Returns the cheapest (first on
+// ties, so the result is deterministic), nullopt when no candidate is admissible.
+using KappaRange = std::optional<std::pair<double, double>>;
+std::optional<SigmoidChoice> choose_sigmoid(double pc_min_m, double pc_max_m, int n_pc,
+                                            const std::function<KappaRange(double)>& kappa_range, int n_kappa,
+                                            const std::function<double(double, double)>& cost);
+
+}  // namespace mg

@@ -1,0 +1,105 @@
+#include "planner/tripfield_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "planner/definition1.h"
+#include "planner/potential_field.h"
+#include "planner/world_view.h"
+
+namespace mg {
+namespace {
+
+constexpr double kStepM = 2.0;
+constexpr double kBehindM = 10.0;
+constexpr double kAheadM = 160.0;
+constexpr double kGradientDeltaM = 0.05;  // central difference for dU/dY
+constexpr double kLookaheadS = 1.0;       // speed adaptation looks this far ahead
+
+struct FieldModel {
+  const WorldSnapshot* w;
+  const TripFieldCoefficients* k;
+
+  double obstacles(double x, double y, double t) const {
+    const Scenario& s = *w->scenario;
+    double u = 0.0;
+    for (const ObservedVehicle& o : w->others) {
+      const double v_o = std::max(0.0, o.state.road_vx_mps());
+      u += tripfield_obstacle_potential(x - (o.state.x_m + v_o * t), y - o.state.y_m, v_o,
+                                        0.5 * (o.size.length_m + s.ego.size.length_m),
+                                        0.5 * (o.size.width_m + s.ego.size.width_m), *k);
+    }
+    return u;
+  }
+
+  double total(double x, double y, double t) const {
+    const Scenario& s = *w->scenario;
+    const Road& road = s.road;
+    const bool side_lane_here = x >= road.side_lane_start_x_m && x <= road.side_lane_end_x_m;
+    const double right_y = side_lane_here ? -1.5 * road.lane_width_m : -0.5 * road.lane_width_m;
+    const double left_y = (road.main_lanes - 0.5) * road.lane_width_m;
+    const double urgency = 1.0 + k->end_urgency_gain * std::exp(-std::max(0.0, road.side_lane_end_x_m - x) /
+                                                                  k->end_urgency_length_m);
+    return road_mark_potential(y, right_y, false, s.ego.size.width_m, s.params.planner.pf_road_beta) +
+           road_mark_potential(y, left_y, true, s.ego.size.width_m, s.params.planner.pf_road_beta) +
+           obstacles(x, y, t) + 0.5 * k->lane_attraction * urgency * y * y;
+  }
+};
+
+}  // namespace
+
+double tripfield_obstacle_potential(double dx_m, double dy_m, double obstacle_speed_mps, double length_sum_m,
+                                    double width_sum_m, const TripFieldCoefficients& k) {
+  // Elongated in the direction of travel: ahead of the obstacle by its headway, behind by half.
+  const double ax = length_sum_m + (dx_m >= 0.0 ? 1.0 : 0.5) * obstacle_speed_mps * k.headway_s;
+  const double ay = width_sum_m + k.lateral_margin_m;
+  return k.obstacle_gain * std::exp(-(dx_m * dx_m / (ax * ax) + dy_m * dy_m / (ay * ay)));
+}
+
+PlanOutput TripFieldPlanner::plan(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const Road& road = s.road;
+  const FieldModel field{&w, &k_};
+  const double v_e = ego_speed_mps(w);
+  const double v_path = std::max(v_e, 1.0);
+  const double y_min = road.side_lane_y_m();
+  const double y_max = (road.main_lanes - 1) * road.lane_width_m;
+  PlanOutput out;
+  out.path.push_back({w.ego.x_m - kBehindM, w.ego.y_m});
+  double y = w.ego.y_m;
+  for (double x = w.ego.x_m; x <= w.ego.x_m + kAheadM; x += kStepM) {
+    out.path.push_back({x, y});
+    const double t = (x - w.ego.x_m) / v_path;
+    const double grad = (field.total(x, y + kGradientDeltaM, t) - field.total(x, y - kGradientDeltaM, t)) /
+                        (2.0 * kGradientDeltaM);
+    const double dy = std::clamp(-k_.gradient_step * grad * kStepM, -k_.max_slope * kStepM, k_.max_slope * kStepM);
+    y = std::clamp(y + dy, y_min, y_max);
+    if (x + kStepM > road.side_lane_end_x_m) y = std::max(y, -0.5 * road.lane_width_m);  // no side lane there
+  }
+  // Speed adapted to the obstacle field a little ahead on the path.
+  const double x_ahead = w.ego.x_m + v_e * kLookaheadS;
+  const double u_ahead = field.obstacles(x_ahead, w.ego.y_m, kLookaheadS);
+  const double cruise = s.ego.speed_mps > 0.0 ? std::min(s.ego.speed_mps, road.speed_limit_mps)
+                                              : 0.8 * road.speed_limit_mps;
+  double target = cruise / (1.0 + k_.speed_field_gain * u_ahead);
+  double brake = s.ego.limits.brake_min_mps2;
+  if (w.ego.y_m < -0.5 * road.lane_width_m) {  // still in the side lane: stop before its end
+    const double stop_x = road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - s.params.planner.halt_margin_m;
+    target = std::min(target, halt_speed_cap_mps(w.ego.x_m, stop_x, 0.5 * s.ego.limits.brake_min_mps2));
+    const double room = stop_x + s.params.planner.halt_margin_m - w.ego.x_m;
+    if (room <= 0.0 || v_e * v_e / (2.0 * room) > 0.8 * brake) brake = s.ego.limits.brake_max_mps2;
+  }
+  out.target_speed_mps = target;
+  out.accel_limit_mps2 = target >= v_e ? s.ego.limits.accel_max_mps2 : brake;
+  out.decision.time_s = w.time_s;
+  out.decision.mode = DecisionMode::kPotentialField;
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "TriPField-style baseline: path follows the field gradient; obstacle field ahead %.2f, target %.2f m/s",
+                u_ahead, target);
+  out.decision.reason = buf;
+  return out;
+}
+
+}  // namespace mg

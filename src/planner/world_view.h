@@ -1,0 +1,26 @@
+// What the planners read from a WorldSnapshot: the ego's road-frame speeds, the vehicles of the
+// merge target lane (the rightmost main lane, centre Y = 0), and the RSS following speed.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "planner/definition1.h"
+#include "planner/planner.h"
+
+namespace mg {
+
+double ego_speed_mps(const WorldSnapshot& w);      // road-frame longitudinal speed, >= 0
+double ego_lat_speed_mps(const WorldSnapshot& w);  // road-frame lateral speed (+Y left)
+
+MainLaneVehicle to_lane_vehicle(const ObservedVehicle& o);
+// Vehicles whose centre lies in the rightmost main lane (|Y| < W/2), sorted by x then id.
+std::vector<MainLaneVehicle> target_lane_vehicles(const WorldSnapshot& w);
+// The nearest vehicle of the target lane ahead of x_m (strictly), if any.
+std::optional<MainLaneVehicle> leader_ahead_of(const std::vector<MainLaneVehicle>& lane, double x_m);
+
+// The highest ego speed in [0, speed_limit] whose RSS distance (RCPP eq. 1, ego as the rear
+// vehicle) to `leader` fits in the current centre distance; 0 when even standing still does not.
+double rss_follow_speed_mps(const WorldSnapshot& w, const MainLaneVehicle& leader);
+
+}  // namespace mg

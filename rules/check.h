@@ -16,7 +16,8 @@ namespace mg {
 // Liable party: kNobody, kEgoId (the ego) or a main-lane vehicle id (>= 1).
 inline constexpr int kNobody = -1;
 inline constexpr int kEgoId = 0;
-std::string party_name(int party_id);  // "none", "ego", "vehicle 3"
+inline constexpr int kMainLane = -2;  // right-of-way holder: the main-lane traffic as a whole
+std::string party_name(int party_id);  // "none", "ego", "vehicle 3", "main lane"
 
 // One rule's judgement over the whole trace.
 struct RuleResult {
@@ -39,15 +40,21 @@ struct CheckResult {
   std::vector<RuleResult> rules;
   bool collision = false;
   int collision_liable_id = kNobody;  // meaningful when collision
+  // Overall liable party: the party whose obligation broke first (DESIGN §8); kNobody when
+  // every rule holds, or when a collision has nobody liable (see liability_detail).
+  int liable_id = kNobody;
+  std::string liability_detail;       // one line: which rule, when, why
   // Right-of-way holder over time: (time_s, party id) at every change.
   std::vector<std::pair<double, int>> right_of_way;
   Trace trace;
 };
 
-// Runs the simulation and all monitors. Never throws for a valid scenario.
+// Runs the simulation and all monitors. Never throws for a valid scenario; an unknown planner
+// name raises std::invalid_argument.
 CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name);
-// Runs all monitors over an existing trace.
+// Runs all monitors over an existing trace (the rvalue overload takes the trace without a copy).
 CheckResult check_trace(const Scenario& scenario, const Trace& trace);
+CheckResult check_trace(const Scenario& scenario, Trace&& trace);
 
 nlohmann::json check_result_to_json(const CheckResult& r);
 

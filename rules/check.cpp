@@ -1,0 +1,141 @@
+#include "rules/check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include "rules/collision_monitor.h"
+#include "rules/definition1_monitor.h"
+#include "rules/definition2_monitor.h"
+#include "rules/liability.h"
+#include "rules/monitor.h"
+#include "rules/progress_monitor.h"
+#include "rules/road_monitor.h"
+#include "rules/rss_distance_monitor.h"
+#include "rules/sigmoid_bounds_monitor.h"
+#include "rules/smoothness_monitor.h"
+
+namespace mg {
+
+std::string party_name(int party_id) {
+  if (party_id == kNobody) return "none";
+  if (party_id == kEgoId) return "ego";
+  if (party_id == kMainLane) return "main lane";
+  return "vehicle " + std::to_string(party_id);
+}
+
+const std::vector<MonitorEntry>& rule_monitors() {
+  static const std::vector<MonitorEntry> monitors = {
+      {"rss_longitudinal", monitor_rss_longitudinal},
+      {"rss_lateral", monitor_rss_lateral},
+      {"def1_1_gap", monitor_def1_1_gap},
+      {"def1_1_follower", monitor_def1_1_follower},
+      {"def1_2_gap", monitor_def1_2_gap},
+      {"def1_2_leader", monitor_def1_2_leader},
+      {"def1_3_halt", monitor_def1_3_halt},
+      {"def2_1a_request", monitor_def2_1a_request},
+      {"def2_1b_responder", monitor_def2_1b_responder},
+      {"def2_2a_ego_brake", monitor_def2_2a_ego_brake},
+      {"def2_2b_responder", monitor_def2_2b_responder},
+      {"def2_3_fallback", monitor_def2_3_fallback},
+      {"sigmoid_pc_bounds", monitor_sigmoid_pc_bounds},
+      {"collision", monitor_collision},
+      {"on_road", monitor_on_road},
+      {"side_lane_end", monitor_side_lane_end},
+      {"smoothness_oscillation", monitor_smoothness_oscillation},
+      {"sideslip", monitor_sideslip},
+      {"progress", monitor_progress},
+  };
+  return monitors;
+}
+
+std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const RightOfWay& row,
+                                     std::vector<std::vector<double>>* margins) {
+  const MonitorContext ctx{s, t, row, catalog_params()};
+  std::vector<RuleResult> results;
+  results.reserve(rule_monitors().size());
+  for (const MonitorEntry& m : rule_monitors()) {
+    MonitorOutput out = m.run(ctx);
+    results.push_back(std::move(out.result));
+    if (margins) margins->push_back(std::move(out.margin));
+  }
+  return results;
+}
+
+CheckResult check_trace(const Scenario& scenario, Trace&& trace) {
+  CheckResult r;
+  r.planner = trace.planner;
+  const RightOfWay row = compute_right_of_way(scenario, trace);
+  r.right_of_way = row.timeline;
+  r.rules = run_monitors(scenario, trace, row, nullptr);
+  for (const RuleResult& rule : r.rules) r.holds = r.holds && rule.holds;
+  assign_liability(r);
+  r.trace = std::move(trace);
+  return r;
+}
+
+CheckResult check_trace(const Scenario& scenario, const Trace& trace) {
+  return check_trace(scenario, Trace(trace));
+}
+
+namespace {
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+nlohmann::json rule_to_json(const RuleResult& r) {
+  return {{"rule_id", r.rule_id},
+          {"paper_ref", r.paper_ref},
+          {"unit", r.unit},
+          {"holds", r.holds},
+          {"applicable", std::isfinite(r.min_margin)},
+          {"min_margin", number_or_null(r.min_margin)},
+          {"min_margin_time_s", std::isfinite(r.min_margin) ? nlohmann::json(r.min_margin_time_s) : nlohmann::json()},
+          {"first_violation_time_s", r.first_violation_time_s ? nlohmann::json(*r.first_violation_time_s) : nlohmann::json()},
+          {"liable", party_name(r.holds ? kNobody : r.liable_id)},
+          {"required_value", number_or_null(r.required_value)},
+          {"actual_value", number_or_null(r.actual_value)},
+          {"detail", r.detail}};
+}
+
+}  // namespace
+
+nlohmann::json check_result_to_json(const CheckResult& r) {
+  nlohmann::json rules = nlohmann::json::array();
+  nlohmann::json violated = nlohmann::json::array();
+  nlohmann::json timeline = nlohmann::json::array();
+  for (const RuleResult& rule : r.rules) {
+    rules.push_back(rule_to_json(rule));
+    if (!rule.holds) violated.push_back(rule.rule_id);
+  }
+  for (const TraceEvent& e : r.trace.events) {
+    timeline.push_back({{"time_s", e.time_s}, {"kind", to_string(e.kind)}, {"actor", party_name(e.vehicle_id)},
+                        {"detail", e.detail}});
+  }
+  for (const RuleResult& rule : r.rules) {
+    if (rule.holds) continue;
+    timeline.push_back({{"time_s", *rule.first_violation_time_s}, {"kind", "violation"},
+                        {"actor", party_name(rule.liable_id)}, {"detail", rule.rule_id + ": " + rule.detail}});
+  }
+  std::stable_sort(timeline.begin(), timeline.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return a.at("time_s").get<double>() < b.at("time_s").get<double>();
+  });
+  nlohmann::json row = nlohmann::json::array();
+  for (const auto& [t, holder] : r.right_of_way) row.push_back({{"time_s", t}, {"holder", party_name(holder)}});
+  char digest[17];
+  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(r.trace.digest));
+  return {{"report_format_version", 1},
+          {"planner", r.planner},
+          {"verdict", r.holds ? "holds" : "violated"},
+          {"liable", party_name(r.liable_id)},
+          {"liability_detail", r.liability_detail},
+          {"collision", r.collision},
+          {"collision_liable", party_name(r.collision ? r.collision_liable_id : kNobody)},
+          {"rules_violated", violated},
+          {"rules", rules},
+          {"right_of_way", row},
+          {"timeline", timeline},
+          {"trace_digest", digest}};
+}
+
+}  // namespace mg

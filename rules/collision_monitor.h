@@ -1,0 +1,16 @@
+// Collision freedom (DESIGN §8): FCL boxes of every pair of vehicles, discrete at every step and
+// continuous between steps (rules/collision.h), behind an axis-aligned pre-filter.
+#pragma once
+
+#include "rules/collision.h"
+#include "rules/monitor.h"
+
+namespace mg {
+
+BoxPose box_pose_of(const Scenario& s, const TraceStep& step, std::size_t k);
+
+// The collision rule does not name a liable party itself (kNobody): the liability engine
+// takes it from the broken obligations before the collision (rules/liability.h).
+MonitorOutput monitor_collision(const MonitorContext& ctx);
+
+}  // namespace mg

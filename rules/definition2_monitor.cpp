@@ -1,0 +1,180 @@
+#include "rules/definition2_monitor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace mg {
+
+std::vector<CoopExchange> coop_exchanges(const Trace& t) {
+  std::vector<CoopExchange> out;
+  for (const TraceEvent& e : t.events) {
+    if (e.kind != EventKind::kMessageSent || !e.message) continue;
+    const V2vMessage& m = *e.message;
+    if (m.type == MessageType::kRequest && m.from_id == kEgoId) {
+      out.push_back({&m, e.time_s, -1.0});
+    } else if (m.type == MessageType::kAccept && m.to_id == kEgoId) {
+      for (auto it = out.rbegin(); it != out.rend(); ++it) {  // the latest request to this responder
+        if (it->request->to_id == m.from_id) {
+          if (it->accept_time_s < 0.0) it->accept_time_s = e.time_s;
+          break;
+        }
+      }
+    }
+  }
+  return out;
+}
+
+namespace {
+
+double merge_complete_time(const Trace& t) {
+  for (const TraceEvent& e : t.events) {
+    if (e.kind == EventKind::kMergeComplete && e.vehicle_id == kEgoId) return e.time_s;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+// Def. 2.1B / 2.2B: the responder of an accepted request changes speed toward v_o* at most at
+// its b_min (2.1) or a_acc (2.2), and has reached v_o* once rho_c (+T) has passed.
+MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
+  const Scenario& s = ctx.scenario;
+  const auto& steps = ctx.trace.steps;
+  const bool ahead = which == CoopCase::kEgoAhead;
+  MarginAccumulator acc(ahead ? "def2_1b_responder" : "def2_2b_responder", steps.size());
+  const double rho_c = s.params.planner.comm_threshold_s;
+  const double end_cap = merge_complete_time(ctx.trace);
+  const double tol = ctx.params.speed_tolerance_mps;
+  for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
+    if (x.request->coop_case != which || x.accept_time_s < 0.0 || steps.empty()) continue;
+    const int partner = x.request->to_id;
+    const int k = index_of_party(s, partner);
+    if (k < 1) continue;
+    const Limits& lim = limits_of(s, k);
+    double v_star = x.request->target_speed_mps;
+    if (!ahead) v_star = std::min(v_star, s.road.speed_limit_mps);
+    const std::size_t first = step_at(ctx.trace, x.accept_time_s);
+    const double v0 = speed_of(state_of(steps[first], k));
+    const double deadline = x.request_time_s + rho_c + s.params.rss.response_time_s;
+    const double end = std::min(end_cap, x.request_time_s + rho_c + s.params.planner.merge_duration_s);
+    bool reached = false;
+    for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end; ++i) {
+      const double t = steps[i].time_s;
+      const double v = speed_of(state_of(steps[i], k));
+      reached = reached || (ahead ? v <= v_star + tol : v >= v_star - tol);
+      // Rate bound: not below v0 - b_min (t - t_a) (2.1B), not above v0 + a_acc (t - t_a) (2.2B).
+      double m = std::numeric_limits<double>::infinity();
+      double required = v_star;
+      if (!reached) {
+        m = ahead ? v - (v0 - lim.brake_min_mps2 * (t - x.accept_time_s)) + tol
+                  : (v0 + lim.accel_max_mps2 * (t - x.accept_time_s)) + tol - v;
+        required = ahead ? v0 - lim.brake_min_mps2 * (t - x.accept_time_s) : v0 + lim.accel_max_mps2 * (t - x.accept_time_s);
+      }
+      if (t >= deadline) {
+        const double yield = ahead ? v_star + ctx.params.yield_speed_tolerance_mps - v
+                                   : v - (v_star - ctx.params.yield_speed_tolerance_mps);
+        if (yield < m) {
+          m = yield;
+          required = v_star;
+        }
+      }
+      if (!std::isfinite(m)) continue;
+      if (acc.record(i, t, m, partner, required, v)) {
+        std::ostringstream os;
+        os << party_name(partner) << " accepted the Def. 2." << (ahead ? "1" : "2") << " request of t = "
+           << x.request_time_s << " s (v_o* = " << v_star << " m/s) but drove at " << v << " m/s at t = " << t
+           << " s (" << (t >= deadline && m < 0.0 && (ahead ? v > v_star : v < v_star) ? "did not yield"
+                         : ahead ? "braked harder than b_min" : "accelerated harder than a_acc")
+           << ")";
+        acc.set_detail(os.str());
+      }
+    }
+  }
+  return acc.finish();
+}
+
+}  // namespace
+
+// Def. 2.1A: the request carries P_c ahead of the ego and D*_lon covering at least contact.
+MonitorOutput monitor_def2_1a_request(const MonitorContext& ctx) {
+  const Scenario& s = ctx.scenario;
+  MarginAccumulator acc("def2_1a_request", ctx.trace.steps.size());
+  if (ctx.trace.steps.empty()) return acc.finish();
+  for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
+    const V2vMessage& m = *x.request;
+    if (m.coop_case != CoopCase::kEgoAhead) continue;
+    const std::size_t i = step_at(ctx.trace, x.request_time_s);
+    const int k = index_of_party(s, m.to_id);
+    const double contact = (s.ego.size.length_m + (k > 0 ? size_of(s, k).length_m : 0.0)) / 2.0;
+    const double pc_ahead = std::isfinite(m.pc_m) ? m.pc_m - ctx.trace.steps[i].ego.x_m : -1.0;
+    const double d_star = std::isfinite(m.d_lon_star_m) ? m.d_lon_star_m - contact : -1.0;
+    const double margin = std::min(pc_ahead, d_star);
+    if (acc.record(i, x.request_time_s, margin, kEgoId, contact, m.d_lon_star_m)) {
+      std::ostringstream os;
+      os << "request to " << party_name(m.to_id) << " at t = " << x.request_time_s << " s carries P_c = " << m.pc_m
+         << " m (ego at x = " << ctx.trace.steps[i].ego.x_m << " m) and D*_lon = " << m.d_lon_star_m << " m";
+      acc.set_detail(os.str());
+    }
+  }
+  return acc.finish();
+}
+
+MonitorOutput monitor_def2_1b_responder(const MonitorContext& ctx) { return monitor_responder(ctx, CoopCase::kEgoAhead); }
+MonitorOutput monitor_def2_2b_responder(const MonitorContext& ctx) { return monitor_responder(ctx, CoopCase::kEgoBehind); }
+
+// Def. 2.2A: after its request the ego brakes at most b_min during rho_c.
+MonitorOutput monitor_def2_2a_ego_brake(const MonitorContext& ctx) {
+  const Scenario& s = ctx.scenario;
+  const auto& steps = ctx.trace.steps;
+  MarginAccumulator acc("def2_2a_ego_brake", steps.size());
+  const double b_min = s.ego.limits.brake_min_mps2;
+  for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
+    if (x.request->coop_case != CoopCase::kEgoBehind || steps.empty()) continue;
+    const std::size_t first = step_at(ctx.trace, x.request_time_s);
+    const double v0 = speed_of(steps[first].ego);
+    for (std::size_t i = first; i < steps.size() && steps[i].time_s <= x.request_time_s + s.params.planner.comm_threshold_s; ++i) {
+      const double floor_v = v0 - b_min * (steps[i].time_s - x.request_time_s);
+      const double v = speed_of(steps[i].ego);
+      if (acc.record(i, steps[i].time_s, v - floor_v + ctx.params.speed_tolerance_mps, kEgoId, floor_v, v)) {
+        std::ostringstream os;
+        os << "after its Def. 2.2 request at t = " << x.request_time_s << " s the ego braked harder than b_min = "
+           << b_min << " m/s2 (speed " << v << " m/s < " << floor_v << " m/s)";
+        acc.set_detail(os.str());
+      }
+    }
+  }
+  return acc.finish();
+}
+
+// Def. 2.3: a cooperative merge needs the partner's acceptance, delivered within rho_c.
+MonitorOutput monitor_def2_3_fallback(const MonitorContext& ctx) {
+  const Scenario& s = ctx.scenario;
+  MarginAccumulator acc("def2_3_fallback", ctx.trace.steps.size());
+  if (ctx.trace.steps.empty()) return acc.finish();
+  const double rho_c = s.params.planner.comm_threshold_s;
+  const auto exchanges = coop_exchanges(ctx.trace);
+  const Decision* previous = nullptr;
+  for (const Decision& d : ctx.trace.decisions) {
+    const bool starts = d.mode == DecisionMode::kDef2Merge &&
+                        !(previous && previous->mode == DecisionMode::kDef2Merge &&
+                          previous->coop_partner_id == d.coop_partner_id);
+    if (d.mode != DecisionMode::kProperResponse) previous = &d;
+    if (!starts) continue;
+    double request_time = -1.0;
+    for (const CoopExchange& x : exchanges) {
+      if (x.request->to_id == d.coop_partner_id && x.request_time_s <= d.time_s) request_time = x.request_time_s;
+    }
+    const double accepted = acceptance_time(ctx.trace, d.coop_partner_id, d.time_s);
+    const bool valid = request_time >= 0.0 && accepted >= request_time;
+    const double m = valid ? request_time + rho_c - accepted : -rho_c;
+    if (acc.record(step_at(ctx.trace, d.time_s), d.time_s, m, kEgoId, request_time + rho_c, accepted)) {
+      std::ostringstream os;
+      os << "ego started a Def. 2 merge with " << party_name(d.coop_partner_id) << " at t = " << d.time_s << " s "
+         << (valid ? "on an acceptance delivered after rho_c" : "without an acceptance");
+      acc.set_detail(os.str());
+    }
+  }
+  return acc.finish();
+}
+
+}  // namespace mg

@@ -1,0 +1,74 @@
+#include "rules/monitor.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mg {
+
+MarginAccumulator::MarginAccumulator(std::string_view rule_id, std::size_t steps) {
+  const RuleSpec& spec = rule_spec(rule_id);
+  out_.result.rule_id = spec.id;
+  out_.result.paper_ref = spec.paper_ref;
+  out_.result.unit = spec.unit;
+  out_.result.min_margin = std::numeric_limits<double>::infinity();
+  out_.margin.assign(steps, kNotApplicable);
+}
+
+bool MarginAccumulator::record(std::size_t step, double time_s, double margin, int party,
+                               double required, double actual) {
+  if (step < out_.margin.size()) {
+    double& m = out_.margin[step];
+    m = std::isnan(m) ? margin : std::min(m, margin);
+  }
+  RuleResult& r = out_.result;
+  if (margin < r.min_margin) {
+    r.min_margin = margin;
+    r.min_margin_time_s = time_s;
+    r.required_value = required;
+    r.actual_value = actual;
+  }
+  if (margin < 0.0 && !r.first_violation_time_s) {
+    r.first_violation_time_s = time_s;
+    r.liable_id = party;
+    r.holds = false;
+    return true;
+  }
+  return false;
+}
+
+MonitorOutput MarginAccumulator::finish() {
+  if (std::isinf(out_.result.min_margin) && out_.result.detail.empty()) {
+    out_.result.detail = "not applicable in this trace";
+  }
+  return std::move(out_);
+}
+
+int party_of(const Scenario& s, std::size_t k) { return k == 0 ? kEgoId : s.vehicles[k - 1].id; }
+
+const VehicleSize& size_of(const Scenario& s, std::size_t k) {
+  return k == 0 ? s.ego.size : s.vehicles[k - 1].size;
+}
+
+const Limits& limits_of(const Scenario& s, std::size_t k) {
+  return k == 0 ? s.ego.limits : s.vehicles[k - 1].limits;
+}
+
+int index_of_party(const Scenario& s, int party_id) {
+  if (party_id == kEgoId) return 0;
+  const int i = s.index_of(party_id);
+  return i < 0 ? -1 : i + 1;
+}
+
+std::size_t step_at(const Trace& t, double time_s) {
+  if (t.steps.empty()) return 0;
+  auto it = std::lower_bound(t.steps.begin(), t.steps.end(), time_s,
+                             [](const TraceStep& s, double v) { return s.time_s < v; });
+  if (it == t.steps.end()) return t.steps.size() - 1;
+  std::size_t i = static_cast<std::size_t>(it - t.steps.begin());
+  if (i > 0 && time_s - t.steps[i - 1].time_s < it->time_s - time_s) --i;
+  return i;
+}
+
+double speed_of(const VehicleState& v) { return v.road_vx_mps(); }
+
+}  // namespace mg

@@ -1,0 +1,79 @@
+// What every rule monitor shares (DESIGN §8): a monitor is a pure function of the scenario and
+// the trace (plus the right-of-way timeline derived from them) that yields a signed robustness
+// margin per trace step (NaN where the rule does not apply) and a RuleResult.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/scenario.h"
+#include "rules/check.h"
+#include "rules/liability.h"
+#include "rules/rule_catalog.h"
+#include "sim/trace.h"
+
+namespace mg {
+
+struct MonitorContext {
+  const Scenario& scenario;
+  const Trace& trace;
+  const RightOfWay& row;
+  const CatalogParams& params;
+};
+
+struct MonitorOutput {
+  RuleResult result;
+  std::vector<double> margin;  // one value per trace step; NaN = not applicable
+};
+
+// Folds per-step margins into a RuleResult: minimum margin and its time, first violation time
+// and the party liable for it, required/actual values at the worst moment.
+class MarginAccumulator {
+ public:
+  MarginAccumulator(std::string_view rule_id, std::size_t steps);
+  // Records a margin at a step. Returns true when this is the rule's first violation (the
+  // caller may then set the detail line).
+  bool record(std::size_t step, double time_s, double margin, int party, double required,
+              double actual);
+  void set_detail(std::string detail) { out_.result.detail = std::move(detail); }
+  bool violated() const { return out_.result.first_violation_time_s.has_value(); }
+  MonitorOutput finish();
+
+ private:
+  MonitorOutput out_;
+};
+
+// Vehicle k of a trace step: 0 = ego, k >= 1 = scenario.vehicles[k - 1].
+inline const VehicleState& state_of(const TraceStep& s, std::size_t k) {
+  return k == 0 ? s.ego : s.others[k - 1];
+}
+int party_of(const Scenario& s, std::size_t k);
+const VehicleSize& size_of(const Scenario& s, std::size_t k);
+const Limits& limits_of(const Scenario& s, std::size_t k);
+// Index k of a party id (0 for the ego), or -1.
+int index_of_party(const Scenario& s, int party_id);
+// Index of the trace step nearest to time_s.
+std::size_t step_at(const Trace& t, double time_s);
+double speed_of(const VehicleState& v);  // road-frame longitudinal speed
+
+inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace mg
+
+namespace mg {
+
+using MonitorFn = MonitorOutput (*)(const MonitorContext&);
+struct MonitorEntry {
+  std::string_view rule_id;
+  MonitorFn run;
+};
+// Every monitor, in catalogue order (rules/catalog.json lists exactly these ids).
+const std::vector<MonitorEntry>& rule_monitors();
+// Runs every monitor; margins are kept only when `margins` is not null (reports).
+std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const RightOfWay& row,
+                                     std::vector<std::vector<double>>* margins);
+
+}  // namespace mg

@@ -1,0 +1,165 @@
+#include "rules/rss_distance_monitor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/rss.h"
+
+namespace mg {
+namespace {
+
+constexpr double kNever = -std::numeric_limits<double>::infinity();
+
+struct Episode {
+  bool active = false;
+  double blame_time_s = 0.0;
+  bool lateral_entrance = false;  // lateral distance became unsafe last (a cut-in)
+  int breach = kNobody;
+  double response_speed_mps = 0.0;  // lateral: ego speed toward the other at t_b + T
+  bool response_speed_set = false;
+};
+
+std::size_t pair_count(std::size_t n) { return n * (n - 1) / 2; }
+
+template <typename Fn>
+void for_each_pair(std::size_t n, Fn&& fn) {
+  std::size_t p = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) fn(p++, i, j);
+  }
+}
+
+std::string describe(const Scenario& s, std::size_t k) { return party_name(party_of(s, k)); }
+
+}  // namespace
+
+PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j) {
+  const VehicleState& a = state_of(step, i);
+  const VehicleState& b = state_of(step, j);
+  PairGeometry g;
+  g.rear = a.x_m <= b.x_m ? i : j;
+  g.front = g.rear == i ? j : i;
+  g.left = a.y_m >= b.y_m ? i : j;
+  g.right = g.left == i ? j : i;
+  const VehicleState& r = state_of(step, g.rear);
+  const VehicleState& f = state_of(step, g.front);
+  const double T = s.params.rss.response_time_s;
+  g.gap_m = f.x_m - r.x_m;
+  g.d_lon_m = rss_longitudinal_m({std::max(speed_of(r), 0.0), std::max(speed_of(f), 0.0),
+                                  size_of(s, g.rear).length_m, size_of(s, g.front).length_m, T,
+                                  limits_of(s, g.rear).accel_max_mps2, limits_of(s, g.rear).brake_min_mps2,
+                                  limits_of(s, g.front).brake_max_mps2});
+  const VehicleState& l = state_of(step, g.left);
+  const VehicleState& rt = state_of(step, g.right);
+  // Lateral limits: the ego's when it is in the pair (the only vehicle that moves laterally).
+  const Limits& lat = limits_of(s, i == 0 || j == 0 ? 0 : g.left);
+  g.dy_m = l.y_m - rt.y_m;
+  g.d_lat_m = rss_lateral_m({l.road_vy_mps(), rt.road_vy_mps(), size_of(s, g.left).width_m,
+                             size_of(s, g.right).width_m, T, lat.lat_accel_max_mps2,
+                             lat.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
+  return g;
+}
+
+MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
+  const Scenario& s = ctx.scenario;
+  const auto& steps = ctx.trace.steps;
+  const std::size_t n = s.vehicles.size() + 1;
+  const double T = s.params.rss.response_time_s;
+  const double tol = ctx.params.accel_tolerance_mps2;
+  MarginAccumulator acc("rss_longitudinal", steps.size());
+  std::vector<Episode> episodes(pair_count(n));
+  std::vector<double> last_overbrake(n, kNever);
+  std::vector<char> prev_lon_only(pair_count(n), 0);  // previous step: lon unsafe, lat safe
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const TraceStep& st = steps[k];
+    for (std::size_t v = 0; v < n; ++v) {
+      if (state_of(st, v).accel_mps2 < -(limits_of(s, v).brake_max_mps2 + tol)) last_overbrake[v] = st.time_s;
+    }
+    for_each_pair(n, [&](std::size_t p, std::size_t i, std::size_t j) {
+      const PairGeometry g = pair_geometry(s, st, i, j);
+      Episode& e = episodes[p];
+      const bool was_lon_only = prev_lon_only[p] != 0;
+      prev_lon_only[p] = g.lon_unsafe() && !g.lat_unsafe();
+      if (!g.lat_unsafe() || !g.lon_unsafe()) {
+        e.active = false;
+        if (g.lat_unsafe()) acc.record(k, st.time_s, g.gap_m - g.d_lon_m, kNobody, g.d_lon_m, g.gap_m);
+        return;
+      }
+      if (!e.active) e = Episode{true, st.time_s, was_lon_only && (i == 0 || j == 0), kNobody, 0.0, false};
+      const VehicleState& rear = state_of(st, g.rear);
+      std::string why;
+      if (e.breach == kNobody) {
+        if (last_overbrake[g.front] >= e.blame_time_s - T) {
+          e.breach = party_of(s, g.front);
+          why = describe(s, g.front) + " braked harder than its declared b_max " +
+                std::to_string(limits_of(s, g.front).brake_max_mps2) + " m/s2 while " +
+                describe(s, g.rear) + " followed";
+        } else if (e.lateral_entrance && !ctx.row.ego_holds_at(e.blame_time_s)) {
+          e.breach = kEgoId;
+          why = "ego entered the lane of " + describe(s, i == 0 ? j : i) +
+                " at an unsafe longitudinal distance without the right of way";
+        } else if (st.time_s >= e.blame_time_s + T - 1e-9 && speed_of(rear) > ctx.params.halted_speed_mps &&
+                   rear.accel_mps2 > -(limits_of(s, g.rear).brake_min_mps2 - tol)) {
+          e.breach = party_of(s, g.rear);
+          std::ostringstream os;
+          os << describe(s, g.rear) << " did not brake at least b_min "
+             << limits_of(s, g.rear).brake_min_mps2 << " m/s2 (applied " << rear.accel_mps2
+             << " m/s2) " << T << " s after the situation became dangerous at t = " << e.blame_time_s << " s";
+          why = os.str();
+        }
+      }
+      const double margin = e.breach == kNobody ? 0.0 : g.gap_m - g.d_lon_m;
+      if (acc.record(k, st.time_s, margin, e.breach, g.d_lon_m, g.gap_m)) acc.set_detail(why);
+    });
+  }
+  return acc.finish();
+}
+
+MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
+  const Scenario& s = ctx.scenario;
+  const auto& steps = ctx.trace.steps;
+  const std::size_t n = s.vehicles.size() + 1;
+  const double T = s.params.rss.response_time_s;
+  const double tol = ctx.params.speed_tolerance_mps;
+  MarginAccumulator acc("rss_lateral", steps.size());
+  std::vector<Episode> episodes(n - 1);  // only ego pairs: main-lane vehicles keep their lane
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const TraceStep& st = steps[k];
+    for (std::size_t j = 1; j < n; ++j) {
+      const PairGeometry g = pair_geometry(s, st, 0, j);
+      Episode& e = episodes[j - 1];
+      if (!g.lon_unsafe() || !g.lat_unsafe()) {
+        e.active = false;
+        if (g.lon_unsafe()) acc.record(k, st.time_s, g.dy_m - g.d_lat_m, kNobody, g.d_lat_m, g.dy_m);
+        continue;
+      }
+      if (!e.active) e = Episode{true, st.time_s, false, kNobody, 0.0, false};
+      const bool obliged = !ctx.row.ego_holds_at(e.blame_time_s);
+      const double toward = g.right == 0 ? st.ego.road_vy_mps() : -st.ego.road_vy_mps();
+      std::string why;
+      if (obliged && e.breach == kNobody && st.time_s >= e.blame_time_s + T - 1e-9) {
+        if (!e.response_speed_set) {
+          e.response_speed_mps = toward;
+          e.response_speed_set = true;
+        }
+        const double allowed =
+            std::max(0.0, e.response_speed_mps - s.ego.limits.lat_brake_min_mps2 * (st.time_s - e.blame_time_s - T));
+        if (toward > allowed + tol) {
+          e.breach = kEgoId;
+          std::ostringstream os;
+          os << "ego kept moving toward " << describe(s, j) << " at " << toward
+             << " m/s laterally (allowed " << allowed << " m/s) without the right of way, "
+             << T << " s after the lateral danger began at t = " << e.blame_time_s << " s";
+          why = os.str();
+        }
+      }
+      const double margin = e.breach == kNobody ? 0.0 : g.dy_m - g.d_lat_m;
+      if (acc.record(k, st.time_s, margin, e.breach, g.d_lat_m, g.dy_m)) acc.set_detail(why);
+    }
+  }
+  return acc.finish();
+}
+
+}  // namespace mg

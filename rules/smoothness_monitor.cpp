@@ -1,0 +1,49 @@
+#include "rules/smoothness_monitor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace mg {
+
+MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
+  const auto& steps = ctx.trace.steps;
+  MarginAccumulator acc("smoothness_oscillation", steps.size());
+  int merges = 0;
+  for (const TraceEvent& e : ctx.trace.events) merges += e.kind == EventKind::kMergeStart && e.vehicle_id == kEgoId;
+  const int allowed = ctx.params.max_lat_speed_sign_changes_per_merge * std::max(merges, 1);
+  const double h = ctx.params.lat_speed_hysteresis_mps;
+  int sign = 0, changes = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const double vy = steps[i].ego.road_vy_mps();
+    const int now = vy > h ? 1 : vy < -h ? -1 : 0;
+    if (now != 0 && sign != 0 && now != sign) ++changes;
+    if (now != 0) sign = now;
+    if (acc.record(i, steps[i].time_s, allowed - changes, kEgoId, allowed, changes)) {
+      std::ostringstream os;
+      os << "ego lateral velocity changed sign " << changes << " times (" << merges << " merge(s), at most "
+         << allowed << " allowed) by t = " << steps[i].time_s << " s: the path oscillates";
+      acc.set_detail(os.str());
+    }
+  }
+  return acc.finish();
+}
+
+MonitorOutput monitor_sideslip(const MonitorContext& ctx) {
+  const auto& steps = ctx.trace.steps;
+  MarginAccumulator acc("sideslip", steps.size());
+  const double limit = ctx.params.sideslip_max_rad;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const VehicleState& e = steps[i].ego;
+    if (e.vx_mps < ctx.params.sideslip_min_speed_mps) continue;
+    const double beta = std::atan2(e.vy_mps, e.vx_mps);
+    if (acc.record(i, steps[i].time_s, limit - std::abs(beta), kEgoId, limit, beta)) {
+      std::ostringstream os;
+      os << "ego sideslip " << beta << " rad exceeds " << limit << " rad at t = " << steps[i].time_s << " s";
+      acc.set_detail(os.str());
+    }
+  }
+  return acc.finish();
+}
+
+}  // namespace mg

@@ -1,0 +1,266 @@
+#include "fuzz/campaign.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "fuzz/corpus_case.h"
+
+namespace mg::fuzz {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Shrinking may run this long past a --time deadline so that a late failure still gets a case.
+constexpr double kShrinkGraceS = 10.0;
+
+struct WorkerStats {
+  std::uint64_t property_failures = 0;
+  std::map<std::string, std::uint64_t> by_property, by_rule, by_party;
+  std::map<std::string, MarginStats> margins;
+};
+
+class Campaign {
+ public:
+  Campaign(const CampaignOptions& options, const CheckFactory& make_check)
+      : opt_(options), make_check_(make_check), start_(Clock::now()) {
+    if (opt_.time_s) deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(*opt_.time_s));
+    if (opt_.runs) shard_runs_ = runs_in_shard(*opt_.runs, opt_.shard_index, opt_.shard_count);
+    if (!opt_.corpus_dir.empty()) known_ = corpus_signatures(opt_.corpus_dir);
+  }
+
+  CampaignResult run() {
+    std::vector<WorkerStats> stats(static_cast<std::size_t>(opt_.jobs));
+    std::vector<std::thread> threads;
+    active_ = opt_.jobs;
+    for (int w = 0; w < opt_.jobs; ++w) threads.emplace_back([this, &stats, w] { work(stats[static_cast<std::size_t>(w)]); });
+    report_progress_until_done();
+    for (std::thread& t : threads) t.join();
+    if (error_) std::rethrow_exception(error_);
+    return collect(stats);
+  }
+
+ private:
+  bool externally_stopped() const { return opt_.stop != nullptr && opt_.stop->load(); }
+  bool should_stop() const {
+    return abort_.load() || externally_stopped() || (deadline_ && Clock::now() >= *deadline_);
+  }
+
+  void work(WorkerStats& stats) {
+    try {
+      const CheckFn check = make_check_();
+      while (!should_stop()) {
+        const std::uint64_t j = next_.fetch_add(1);
+        if (shard_runs_ && j >= *shard_runs_) break;
+        run_one(check, static_cast<std::uint64_t>(opt_.shard_index) + static_cast<std::uint64_t>(opt_.shard_count) * j, stats);
+      }
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      if (!error_) error_ = std::current_exception();
+      abort_ = true;
+    }
+    --active_;
+  }
+
+  void run_one(const CheckFn& check, std::uint64_t i, WorkerStats& stats) {
+    const rc::Shrinkable<Scenario> generated = generate_scenario(run_seed(opt_.seed, i), opt_.gen);
+    const Scenario scenario = generated.value();
+    const bool twice = opt_.determinism_every > 0 && i % static_cast<std::uint64_t>(opt_.determinism_every) == 0;
+    const RunOutcome outcome = run_properties(scenario, check, opt_.planner, twice);
+    if (outcome.result)
+      for (const RuleResult& r : outcome.result->rules) {
+        MarginStats& m = stats.margins[r.rule_id];
+        m.unit = r.unit;
+        m.add(r.min_margin, r.holds);
+      }
+    std::map<Signature, PropertyFailure> distinct;  // first failure per signature in this scenario
+    for (const PropertyFailure& f : outcome.failures) distinct.try_emplace(signature_of(outcome.planner, f), f);
+    for (const auto& [signature, failure] : distinct) {
+      ++stats.property_failures;
+      ++stats.by_property[signature.property];
+      ++stats.by_rule[signature.rule];
+      ++stats.by_party[signature.party];
+      if (claim_for_shrinking(signature, failure, i)) shrink_into_corpus(check, signature, failure, i, generated);
+    }
+    if (!distinct.empty()) ++failing_;
+    ++scenarios_;
+  }
+
+  // Counts the failure; true when run i is now the signature's lowest failing run and its case
+  // is to be (re)written.
+  bool claim_for_shrinking(const Signature& signature, const PropertyFailure& failure, std::uint64_t i) {
+    std::lock_guard lock(mutex_);
+    auto [it, inserted] = signatures_.try_emplace(signature);
+    SignatureRecord& rec = it->second;
+    ++rec.count;
+    if (inserted) {
+      rec.signature = signature;
+      rec.known_before = known_.count(signature) > 0;
+    } else if (i >= rec.first_run) {
+      return false;
+    }
+    rec.first_run = i;
+    rec.example = failure;
+    return !opt_.corpus_dir.empty() && !rec.known_before;
+  }
+
+  void shrink_into_corpus(const CheckFn& check, const Signature& signature, const PropertyFailure& failure,
+                          std::uint64_t i, const rc::Shrinkable<Scenario>& generated) {
+    ShrinkBudget budget = opt_.shrink;
+    budget.stop = opt_.stop;
+    if (deadline_) {
+      const double left_s = std::chrono::duration<double>(*deadline_ - Clock::now()).count() + kShrinkGraceS;
+      budget.max_seconds = std::max(0.0, std::min(budget.max_seconds, left_s));
+    }
+    const bool twice = signature.property == property::kDeterminism;
+    auto keeps_failure = [&](const Scenario& s) {
+      const RunOutcome o = run_properties(s, check, opt_.planner, twice);
+      return std::any_of(o.failures.begin(), o.failures.end(),
+                         [&](const PropertyFailure& f) { return signature_of(o.planner, f) == signature; });
+    };
+    const ShrinkOutcome shrunk = shrink_scenario(generated, keeps_failure, budget);
+
+    CorpusCase c;
+    c.signature = signature;
+    c.scenario = shrunk.scenario;
+    c.scenario.name = signature.file_stem();
+    c.scenario.description = "Found by mergeguard fuzz (seed " + std::to_string(opt_.seed) + ", run " +
+                             std::to_string(i) + "), shrunk in " + std::to_string(shrunk.steps) + " steps.";
+    const RunOutcome final_run = run_properties(c.scenario, check, opt_.planner, /*check_determinism=*/true);
+    c.verdict = verdict_of(final_run);
+    c.failure = failure;
+    for (const PropertyFailure& f : final_run.failures)
+      if (signature_of(final_run.planner, f) == signature) c.failure = f;
+    c.provenance = {"mergeguard fuzz", opt_.seed, i, shrunk.steps, shrunk.attempts, shrunk.minimal, utc_now_iso8601()};
+    const std::string path = (std::filesystem::path(opt_.corpus_dir) / (signature.file_stem() + ".json")).string();
+
+    std::lock_guard lock(mutex_);
+    SignatureRecord& rec = signatures_.at(signature);
+    if (rec.first_run != i) return;  // a lower run index failed meanwhile; its case wins
+    write_case(c, path);
+    rec.case_path = path;
+    rec.shrink_steps = shrunk.steps;
+    rec.shrink_attempts = shrunk.attempts;
+    rec.shrink_minimal = shrunk.minimal;
+    rec.case_vehicles = c.scenario.vehicles.size();
+  }
+
+  CampaignProgress progress() {
+    CampaignProgress p;
+    p.scenarios = scenarios_.load();
+    p.failing_scenarios = failing_.load();
+    {
+      std::lock_guard lock(mutex_);
+      p.signatures = signatures_.size();
+    }
+    p.elapsed_s = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (deadline_) p.remaining_s = std::max(0.0, std::chrono::duration<double>(*deadline_ - Clock::now()).count());
+    if (shard_runs_ && p.scenarios > 0) {
+      const double left = static_cast<double>(*shard_runs_ - std::min(*shard_runs_, p.scenarios));
+      const double by_runs = left * p.elapsed_s / static_cast<double>(p.scenarios);
+      p.remaining_s = p.remaining_s ? std::min(*p.remaining_s, by_runs) : by_runs;
+    }
+    return p;
+  }
+
+  void report_progress_until_done() {
+    auto next_report = Clock::now();
+    while (active_.load() > 0) {
+      if (opt_.on_progress && Clock::now() >= next_report) {
+        opt_.on_progress(progress());
+        next_report += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(opt_.progress_period_s));
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    if (opt_.on_progress) opt_.on_progress(progress());
+  }
+
+  CampaignResult collect(const std::vector<WorkerStats>& stats) {
+    CampaignResult r;
+    r.scenarios = scenarios_.load();
+    r.failing_scenarios = failing_.load();
+    r.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    r.interrupted = externally_stopped();
+    r.signatures = signatures_;
+    for (const WorkerStats& s : stats) {
+      r.property_failures += s.property_failures;
+      for (const auto& [k, n] : s.by_property) r.by_property[k] += n;
+      for (const auto& [k, n] : s.by_rule) r.by_rule[k] += n;
+      for (const auto& [k, n] : s.by_party) r.by_party[k] += n;
+      for (const auto& [rule, m] : s.margins) r.margins[rule].merge(m);
+    }
+    for (const auto& [signature, rec] : r.signatures)
+      if (!rec.case_path.empty()) r.new_cases.push_back(rec.case_path);
+    std::sort(r.new_cases.begin(), r.new_cases.end());
+    return r;
+  }
+
+  const CampaignOptions& opt_;
+  const CheckFactory& make_check_;
+  const Clock::time_point start_;
+  std::optional<Clock::time_point> deadline_;
+  std::optional<std::uint64_t> shard_runs_;
+  std::set<Signature> known_;
+  std::atomic<std::uint64_t> next_{0}, scenarios_{0}, failing_{0};
+  std::atomic<int> active_{0};
+  std::atomic<bool> abort_{false};
+  std::mutex mutex_;  // guards signatures_, error_ and corpus writes
+  std::map<Signature, SignatureRecord> signatures_;
+  std::exception_ptr error_;
+};
+
+void validate(const CampaignOptions& o) {
+  if (o.jobs < 1 || o.jobs > 1024) throw std::invalid_argument("--jobs must be in [1, 1024]");
+  if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
+    throw std::invalid_argument("--shard K/N needs 0 <= K < N");
+  if (!o.runs && !o.time_s) throw std::invalid_argument("a campaign needs --runs or --time");
+  if (o.time_s && !(*o.time_s > 0.0 && *o.time_s <= 1e7)) throw std::invalid_argument("--time must be in (0, 1e7] s");
+  if (o.determinism_every < 0) throw std::invalid_argument("determinism period must be >= 0");
+  if (o.gen.max_vehicles < 0 || o.gen.max_vehicles > static_cast<int>(kMaxVehicles))
+    throw std::invalid_argument("--max-vehicles must be in [0, " + std::to_string(kMaxVehicles) + "]");
+}
+
+int bin_of(double margin) {
+  int b = 0;
+  while (b < static_cast<int>(kMarginBinEdges.size()) && margin >= kMarginBinEdges[static_cast<std::size_t>(b)]) ++b;
+  return b;
+}
+
+}  // namespace
+
+void MarginStats::add(double margin, bool holds) {
+  min = count == 0 ? margin : std::min(min, margin);
+  ++count;
+  if (!holds) ++violated;
+  sum_micro += static_cast<std::int64_t>(std::llround(std::clamp(margin, -1e9, 1e9) * 1e6));
+  ++bins[static_cast<std::size_t>(bin_of(margin))];
+}
+
+void MarginStats::merge(const MarginStats& other) {
+  if (other.count == 0) return;
+  if (unit.empty()) unit = other.unit;
+  min = count == 0 ? other.min : std::min(min, other.min);
+  count += other.count;
+  violated += other.violated;
+  sum_micro += other.sum_micro;
+  for (std::size_t b = 0; b < bins.size(); ++b) bins[b] += other.bins[b];
+}
+
+std::uint64_t runs_in_shard(std::uint64_t runs, int shard_index, int shard_count) {
+  const auto k = static_cast<std::uint64_t>(shard_index);
+  const auto n = static_cast<std::uint64_t>(shard_count);
+  return runs > k ? (runs - k + n - 1) / n : 0;
+}
+
+CampaignResult run_campaign(const CampaignOptions& options, const CheckFactory& make_check) {
+  validate(options);
+  return Campaign(options, make_check).run();
+}
+
+}  // namespace mg::fuzz

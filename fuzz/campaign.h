@@ -1,0 +1,104 @@
+// A fuzzing campaign (DESIGN §9, §10 `mergeguard fuzz`): generate scenario i of the campaign
+// from run_seed(seed, i), check it, evaluate every property, and shrink the first (lowest run
+// index) failure of each new signature into one corpus case.
+//
+// Determinism: run i's scenario depends only on (seed, i). Shard K of N runs the indices
+// i = K, K+N, K+2N, ... so shards are disjoint and together form the unsharded campaign. Workers
+// take indices from a shared counter; each signature's case is shrunk from its lowest failing
+// run index (a worker that finds a lower one re-shrinks and replaces the file), so with --runs
+// the counts, signatures and cases do not depend on --jobs. Workers share nothing mutable but
+// the counters and the signature table (under a mutex); each has its own check function.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "fuzz/properties.h"
+#include "fuzz/scenario_gen.h"
+#include "fuzz/shrink.h"
+
+namespace mg::fuzz {
+
+// Makes one check function per worker (per-thread planner, simulator and FCL objects).
+using CheckFactory = std::function<CheckFn()>;
+
+struct CampaignProgress {
+  std::uint64_t scenarios = 0;
+  std::uint64_t failing_scenarios = 0;
+  std::size_t signatures = 0;
+  double elapsed_s = 0.0;
+  std::optional<double> remaining_s;   // estimate with --runs (after the first runs), exact with --time
+};
+
+struct CampaignOptions {
+  std::uint64_t seed = 1;
+  std::optional<std::uint64_t> runs;   // total run indices of the whole campaign (all shards)
+  std::optional<double> time_s;        // wall-clock budget for generating new runs
+  int jobs = 1;
+  int shard_index = 0;                 // K of --shard K/N
+  int shard_count = 1;                 // N
+  std::string planner;                 // recorded when the check throws (else the result's planner)
+  std::string corpus_dir;              // cases are written here; empty: failures are counted only
+  GenConfig gen;
+  int determinism_every = 8;           // run i is checked twice when i % determinism_every == 0
+  ShrinkBudget shrink;                 // `stop` is replaced by the campaign's own
+  const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT) to stop after the runs in flight
+  std::function<void(const CampaignProgress&)> on_progress;  // called about every progress_period_s
+  double progress_period_s = 1.0;
+};
+
+// Margin histogram bin edges (in each rule's unit); bins are (-inf,e0), [e0,e1), ..., [e_last,inf).
+inline constexpr std::array<double, 7> kMarginBinEdges = {-10.0, -1.0, -0.1, 0.0, 0.1, 1.0, 10.0};
+
+struct MarginStats {
+  std::string unit;
+  std::uint64_t count = 0;
+  std::uint64_t violated = 0;
+  double min = 0.0;
+  std::int64_t sum_micro = 0;   // sum of margins in micro-units, clamped to +-1e9: exact, order-independent
+  double mean() const { return count > 0 ? static_cast<double>(sum_micro) * 1e-6 / static_cast<double>(count) : 0.0; }
+  std::array<std::uint64_t, kMarginBinEdges.size() + 1> bins{};
+  void add(double margin, bool holds);
+  void merge(const MarginStats& other);
+};
+
+struct SignatureRecord {
+  Signature signature;
+  std::uint64_t count = 0;            // scenarios that failed with it
+  std::uint64_t first_run = 0;        // lowest failing run index
+  bool known_before = false;          // already in the corpus when the campaign started
+  PropertyFailure example;            // the failure at first_run (before shrinking)
+  std::string case_path;              // written case (new signatures with a corpus only)
+  int shrink_steps = 0;
+  int shrink_attempts = 0;
+  bool shrink_minimal = false;
+  std::size_t case_vehicles = 0;      // vehicles left in the minimal case
+};
+
+struct CampaignResult {
+  std::uint64_t scenarios = 0;
+  std::uint64_t failing_scenarios = 0;   // scenarios with at least one property failure
+  std::uint64_t property_failures = 0;   // (scenario, signature) pairs
+  double seconds = 0.0;
+  bool interrupted = false;
+  std::map<Signature, SignatureRecord> signatures;
+  std::map<std::string, std::uint64_t> by_property, by_rule, by_party;  // (scenario, signature) counts
+  std::map<std::string, MarginStats> margins;  // per rule, over every checked scenario
+  std::vector<std::string> new_cases;          // paths, sorted
+  double scenarios_per_second() const { return seconds > 0.0 ? static_cast<double>(scenarios) / seconds : 0.0; }
+};
+
+// Validates the options (InputError on nonsense such as jobs < 1 or K >= N) and runs.
+CampaignResult run_campaign(const CampaignOptions& options, const CheckFactory& make_check);
+
+// Number of run indices of [0, runs) that belong to shard K of N.
+std::uint64_t runs_in_shard(std::uint64_t runs, int shard_index, int shard_count);
+
+}  // namespace mg::fuzz

@@ -1,0 +1,212 @@
+#include "fuzz/campaign_report.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+#include "core/atomic_file.h"
+#include "fuzz/corpus_case.h"
+
+namespace mg::fuzz {
+namespace {
+
+using nlohmann::json;
+
+std::string fixed(double x, int digits) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << x;
+  return out.str();
+}
+
+std::string bin_label(std::size_t b) {
+  const auto& e = kMarginBinEdges;
+  if (b == 0) return "< " + fixed(e.front(), 1);
+  if (b == e.size()) return ">= " + fixed(e.back(), 1);
+  return "[" + fixed(e[b - 1], 1) + ", " + fixed(e[b], 1) + ")";
+}
+
+std::string relative_to(const std::string& path, const std::string& dir) {
+  std::error_code ec;
+  const auto rel = std::filesystem::relative(std::filesystem::absolute(path), std::filesystem::absolute(dir), ec);
+  return ec ? path : rel.string();
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// One table as rows of cells, rendered to Markdown or HTML.
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+std::string markdown(const Table& t) {
+  std::string out = "|";
+  for (const auto& h : t.header) out += " " + h + " |";
+  out += "\n|";
+  for (std::size_t i = 0; i < t.header.size(); ++i) out += "---|";
+  out += "\n";
+  for (const auto& row : t.rows) {
+    out += "|";
+    for (const auto& cell : row) out += " " + cell + " |";
+    out += "\n";
+  }
+  return out;
+}
+
+// Cells may hold a Markdown link "[text](href)"; HTML renders it as an anchor.
+std::string html_cell(const std::string& cell) {
+  const auto mid = cell.find("](");
+  if (!cell.empty() && cell.front() == '[' && mid != std::string::npos && cell.back() == ')')
+    return "<a href=\"" + html_escape(cell.substr(mid + 2, cell.size() - mid - 3)) + "\">" +
+           html_escape(cell.substr(1, mid - 1)) + "</a>";
+  return html_escape(cell);
+}
+
+std::string html(const Table& t) {
+  std::string out = "<table>\n<tr>";
+  for (const auto& h : t.header) out += "<th>" + html_escape(h) + "</th>";
+  out += "</tr>\n";
+  for (const auto& row : t.rows) {
+    out += "<tr>";
+    for (const auto& cell : row) out += "<td>" + html_cell(cell) + "</td>";
+    out += "</tr>\n";
+  }
+  return out + "</table>\n";
+}
+
+Table count_table(const std::string& what, const std::map<std::string, std::uint64_t>& counts) {
+  Table t{{what, "failures"}, {}};
+  for (const auto& [k, n] : counts) t.rows.push_back({k, std::to_string(n)});
+  return t;
+}
+
+Table signature_table(const CampaignResult& r, const std::string& dir, const std::map<std::string, std::string>& reports) {
+  Table t{{"signature", "scenarios", "first run", "case", "vehicles", "shrink steps", "liability report"}, {}};
+  for (const auto& [sig, rec] : r.signatures) {
+    std::string case_cell = rec.known_before ? "already in corpus" : "not written";
+    if (!rec.case_path.empty()) case_cell = "[" + std::filesystem::path(rec.case_path).filename().string() + "](" + relative_to(rec.case_path, dir) + ")";
+    const auto report = reports.find(rec.case_path);
+    const std::string report_cell = report == reports.end() ? "-" : "[report](" + report->second + ")";
+    t.rows.push_back({sig.key(), std::to_string(rec.count), std::to_string(rec.first_run), case_cell,
+                      rec.case_path.empty() ? "-" : std::to_string(rec.case_vehicles),
+                      rec.case_path.empty() ? "-" : std::to_string(rec.shrink_steps) + (rec.shrink_minimal ? "" : " (budget)"),
+                      report_cell});
+  }
+  return t;
+}
+
+Table margin_table(const CampaignResult& r) {
+  Table t{{"rule", "unit", "scenarios", "violated", "min", "mean"}, {}};
+  for (std::size_t b = 0; b < kMarginBinEdges.size() + 1; ++b) t.header.push_back(bin_label(b));
+  for (const auto& [rule, m] : r.margins) {
+    std::vector<std::string> row{rule, m.unit, std::to_string(m.count), std::to_string(m.violated), fixed(m.min, 3),
+                                 fixed(m.mean(), 3)};
+    for (auto n : m.bins) row.push_back(std::to_string(n));
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+struct Section {
+  std::string title;
+  Table table;
+};
+
+std::string headline(const CampaignOptions& o, const CampaignResult& r) {
+  std::ostringstream out;
+  out << r.scenarios << " scenarios with planner " << o.planner << " in " << fixed(r.seconds, 1) << " s ("
+      << fixed(r.scenarios_per_second(), 1) << " scenarios/s, " << o.jobs << " jobs, seed " << o.seed << ", shard "
+      << o.shard_index << "/" << o.shard_count << (r.interrupted ? ", interrupted" : "") << "): "
+      << r.failing_scenarios << " failing scenarios, " << r.signatures.size() << " signatures, " << r.new_cases.size()
+      << " new corpus cases.";
+  return out.str();
+}
+
+}  // namespace
+
+json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
+  json signatures = json::array();
+  for (const auto& [sig, rec] : r.signatures) {
+    signatures.push_back({{"signature", sig.key()},
+                          {"planner", sig.planner},
+                          {"property", sig.property},
+                          {"rule", sig.rule},
+                          {"party", sig.party},
+                          {"scenarios", rec.count},
+                          {"first_run", rec.first_run},
+                          {"known_before", rec.known_before},
+                          {"case", rec.case_path.empty() ? json(nullptr) : json(rec.case_path)},
+                          {"case_vehicles", rec.case_vehicles},
+                          {"shrink_steps", rec.shrink_steps},
+                          {"shrink_attempts", rec.shrink_attempts},
+                          {"shrink_minimal", rec.shrink_minimal}});
+  }
+  json margins = json::object();
+  for (const auto& [rule, m] : r.margins) {
+    json bins = json::array();
+    for (std::size_t b = 0; b < m.bins.size(); ++b) bins.push_back({{"range", bin_label(b)}, {"count", m.bins[b]}});
+    margins[rule] = {{"unit", m.unit}, {"scenarios", m.count}, {"violated", m.violated},
+                     {"min", std::isfinite(m.min) ? json(m.min) : json(nullptr)}, {"mean", m.mean()}, {"bins", bins}};
+  }
+  return {{"planner", o.planner},
+          {"seed", o.seed},
+          {"runs", o.runs ? json(*o.runs) : json(nullptr)},
+          {"time_budget_s", o.time_s ? json(*o.time_s) : json(nullptr)},
+          {"jobs", o.jobs},
+          {"shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count)},
+          {"corpus", o.corpus_dir},
+          {"interrupted", r.interrupted},
+          {"scenarios", r.scenarios},
+          {"seconds", r.seconds},
+          {"scenarios_per_second", r.scenarios_per_second()},
+          {"violations", r.failing_scenarios},
+          {"property_failures", r.property_failures},
+          {"signatures", r.signatures.size()},
+          {"new_cases", r.new_cases},
+          {"failures_by_property", r.by_property},
+          {"failures_by_rule", r.by_rule},
+          {"failures_by_party", r.by_party},
+          {"signature_list", signatures},
+          {"margins", margins},
+          {"date", utc_now_iso8601()}};
+}
+
+void write_campaign_report(const std::string& dir, const CampaignOptions& o, const CampaignResult& r,
+                           const std::map<std::string, std::string>& reports) {
+  const std::vector<Section> sections = {
+      {"Failure signatures and corpus cases", signature_table(r, dir, reports)},
+      {"Failures by property", count_table("property", r.by_property)},
+      {"Failures by rule", count_table("rule", r.by_rule)},
+      {"Failures by liable party", count_table("party", r.by_party)},
+      {"Robustness margins per rule (bins in the rule's unit)", margin_table(r)},
+  };
+  std::string md = "# mergeguard fuzzing campaign\n\n" + headline(o, r) + "\n";
+  std::string page = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>mergeguard fuzzing campaign</title>"
+                     "<style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #999;"
+                     "padding:2px 6px;text-align:left}</style></head><body>\n<h1>mergeguard fuzzing campaign</h1>\n<p>" +
+                     html_escape(headline(o, r)) + "</p>\n";
+  for (const Section& s : sections) {
+    md += "\n## " + s.title + "\n\n" + (s.table.rows.empty() ? "None.\n" : markdown(s.table));
+    page += "<h2>" + html_escape(s.title) + "</h2>\n" + (s.table.rows.empty() ? "<p>None.</p>\n" : html(s.table));
+  }
+  page += "</body></html>\n";
+  const std::filesystem::path base(dir);
+  write_file_atomic((base / "campaign.json").string(), campaign_summary_json(o, r).dump(2) + "\n");
+  write_file_atomic((base / "campaign.md").string(), md);
+  write_file_atomic((base / "campaign.html").string(), page);
+}
+
+}  // namespace mg::fuzz

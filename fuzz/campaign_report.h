@@ -1,0 +1,24 @@
+// Campaign reports (issue #6 item 8): a JSON summary and the same content as Markdown and HTML:
+// scenarios run, rate, failures by property, rule and liable party, the signatures with their
+// corpus cases (and liability reports when written), and the margin distribution per rule.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "fuzz/campaign.h"
+
+namespace mg::fuzz {
+
+// The summary printed by `mergeguard fuzz --json` and saved as campaign.json. Only "seconds",
+// "scenarios_per_second" and "date" depend on timing.
+nlohmann::json campaign_summary_json(const CampaignOptions& options, const CampaignResult& result);
+
+// Writes campaign.json, campaign.md and campaign.html into `dir` (atomically, each). `liability_reports`
+// maps a case path to its liability report (relative to `dir`) when one was written.
+void write_campaign_report(const std::string& dir, const CampaignOptions& options, const CampaignResult& result,
+                           const std::map<std::string, std::string>& liability_reports);
+
+}  // namespace mg::fuzz

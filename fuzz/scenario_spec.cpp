@@ -1,0 +1,127 @@
+#include "fuzz/scenario_spec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace mg::fuzz {
+namespace {
+
+Limits limits_of(const LimitsSpec& s) {
+  Limits l;
+  l.accel_max_mps2 = s.accel_max_mps2;
+  l.brake_min_mps2 = s.brake_min_mps2;
+  l.brake_max_mps2 = snap_to_grid(s.brake_min_mps2 + s.brake_max_extra_mps2, 0.1);
+  l.lat_accel_max_mps2 = s.lat_accel_max_mps2;
+  l.lat_brake_min_mps2 = s.lat_brake_min_mps2;
+  return l;
+}
+
+V2v v2v_of(const V2vSpec& s) {
+  V2v v;
+  v.capable = s.capable;
+  if (s.capable) {  // latency and loss mean nothing without a radio: keep the defaults
+    v.latency_s = s.latency_s;
+    v.loss_prob = s.loss_prob;
+  }
+  return v;
+}
+
+Behaviour behaviour_of(const VehicleSpec& s, double speed_mps) {
+  Behaviour b;
+  b.type = s.behaviour;
+  if (s.desired_speed_delta_mps != 0.0)
+    b.desired_speed_mps = std::max(0.0, snap_to_grid(speed_mps + s.desired_speed_delta_mps, 0.1));
+  const bool idm_like = s.behaviour == BehaviourType::kIdm || s.behaviour == BehaviourType::kCooperative ||
+                        s.behaviour == BehaviourType::kNonResponsive;
+  if (idm_like) {
+    b.time_headway_s = s.time_headway_s;
+    b.min_gap_m = s.min_gap_m;
+    b.comfort_brake_mps2 = s.comfort_brake_mps2;
+  }
+  if (s.behaviour == BehaviourType::kBoundedRandom) {
+    b.seed = s.behaviour_seed;
+    b.segment_s = s.segment_s;
+  }
+  return b;
+}
+
+NonCompliance noncompliance_of(const VehicleSpec& s, const Limits& declared) {
+  NonCompliance nc;
+  nc.type = s.noncompliance;
+  if (nc.type == NonComplianceType::kNone) return nc;
+  nc.start_time_s = s.nc_start_s;
+  if (nc.type == NonComplianceType::kRenege) return nc;
+  nc.duration_s = s.nc_duration_s;
+  const double declared_mps2 =
+      nc.type == NonComplianceType::kExceedAccel ? declared.accel_max_mps2 : declared.brake_max_mps2;
+  nc.accel_mps2 = std::min(30.0, snap_to_grid(declared_mps2 + s.nc_excess_mps2, 0.1));
+  return nc;
+}
+
+}  // namespace
+
+Scenario assemble_scenario(const ScenarioSpec& spec) {
+  Scenario s;
+  s.name = "fuzz";
+  s.road.lane_width_m = spec.road.lane_width_m;
+  s.road.main_lanes = std::clamp(spec.road.main_lanes, 1, 4);
+  s.road.side_lane_start_x_m = spec.road.side_lane_start_x_m;
+  s.road.speed_limit_mps = spec.road.speed_limit_mps;
+
+  Ego& ego = s.ego;
+  ego.x_m = spec.road.side_lane_start_x_m + spec.ego.offset_m;
+  ego.y_m = snap_to_grid(-spec.road.lane_width_m + spec.ego.lateral_offset_m, 0.01);
+  ego.speed_mps = std::min(spec.ego.speed_mps, spec.road.speed_limit_mps);
+  ego.size.length_m = spec.ego.length_m;
+  ego.size.width_m = spec.ego.width_m;
+  ego.limits = limits_of(spec.ego.limits);
+  ego.v2v = v2v_of(spec.ego.v2v);
+  ego.dynamics.mass_kg = spec.ego.mass_kg;
+  ego.dynamics.yaw_inertia_kgm2 = 1.5 * spec.ego.mass_kg;
+  ego.dynamics.cg_to_front_m = spec.ego.cg_to_front_m;
+  ego.dynamics.cg_to_rear_m = spec.ego.cg_to_rear_m;
+  ego.dynamics.cornering_front_npr = spec.ego.cornering_front_npr;
+  ego.dynamics.cornering_rear_npr = spec.ego.cornering_rear_npr;
+
+  s.params.rss.response_time_s = spec.params.response_time_s;
+  s.params.planner.merge_duration_s = spec.params.merge_duration_s;
+  s.params.planner.comm_threshold_s = spec.params.comm_threshold_s;
+  s.params.sim.horizon_s = spec.params.horizon_s;
+
+  // The side lane must leave room to stop: reaction distance, braking at b_min, the planner's
+  // halt margin and a car length, rounded up to 10 m.
+  const double v = ego.speed_mps;
+  const double stop_m = v * s.params.rss.response_time_s + v * v / (2.0 * ego.limits.brake_min_mps2) +
+                        s.params.planner.halt_margin_m + ego.size.length_m;
+  const double end_m = std::max(spec.road.side_lane_start_x_m + spec.road.side_lane_length_m, ego.x_m + stop_m);
+  s.road.side_lane_end_x_m = std::ceil(end_m / 10.0) * 10.0;
+
+  std::map<int, std::size_t> last_in_lane;  // lane -> index of its frontmost vehicle so far
+  int next_id = 1;
+  for (const VehicleSpec& vs : spec.vehicles) {
+    MainVehicle m;
+    m.id = next_id++;
+    m.lane = std::clamp(vs.lane, 0, s.road.main_lanes - 1);
+    m.speed_mps = std::min(vs.speed_mps, snap_to_grid(1.1 * spec.road.speed_limit_mps, 0.1));
+    m.size.length_m = vs.length_m;
+    m.size.width_m = vs.width_m;
+    m.size.height_m = vs.height_m;
+    m.limits = limits_of(vs.limits);
+    m.behaviour = behaviour_of(vs, m.speed_mps);
+    m.v2v = v2v_of(vs.v2v);
+    m.noncompliance = noncompliance_of(vs, m.limits);
+    const auto prev = last_in_lane.find(m.lane);
+    if (prev == last_in_lane.end()) {
+      m.x_m = snap_to_grid(ego.x_m + vs.first_offset_m, 0.05);
+    } else {
+      const MainVehicle& p = s.vehicles[prev->second];
+      m.x_m = snap_to_grid(p.x_m + (p.size.length_m + m.size.length_m) / 2.0 + vs.gap_m, 0.05);
+    }
+    last_in_lane[m.lane] = s.vehicles.size();
+    s.vehicles.push_back(m);
+  }
+  return s;
+}
+
+}  // namespace mg::fuzz

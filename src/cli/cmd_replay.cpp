@@ -1,0 +1,65 @@
+// mergeguard replay [CASE.json | DIR]... [--json]: re-run corpus cases from their JSON alone and
+// compare verdict, violations and failed properties (DESIGN §9, §10). Exit 1 naming every case
+// that does not reproduce; 2 when a case cannot be read (future format_version included).
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command.h"
+#include "core/input_error.h"
+#include "fuzz/corpus_case.h"
+#include "fuzz/replay.h"
+#include "planner/planner.h"
+#include "rules/check.h"
+
+namespace mg::cli {
+namespace {
+
+int run_replay(const std::vector<std::string>& args) {
+  CLI::App app("Replay corpus cases and compare their recorded verdicts", "mergeguard replay");
+  std::vector<std::string> paths;
+  bool json = false;
+  app.add_option("cases", paths, "case files or directories of cases (default corpus/cases)");
+  app.add_flag("--json", json, "print one JSON document");
+  if (!parse_args(app, args)) return kExitOk;
+  if (paths.empty()) paths.push_back("corpus/cases");
+
+  // Load (and so validate) every case before running any.
+  std::vector<std::pair<std::string, fuzz::CorpusCase>> cases;
+  for (const std::string& p : paths)
+    for (const std::string& file : fuzz::case_files(p)) {
+      fuzz::CorpusCase c = fuzz::load_case(file);
+      if (!make_planner(c.signature.planner))
+        throw InputError(file, "/planner", "unknown planner '" + c.signature.planner + "'");
+      cases.emplace_back(file, std::move(c));
+    }
+
+  nlohmann::json report = nlohmann::json::array();
+  int failed = 0;
+  for (const auto& [file, c] : cases) {
+    const std::string planner = c.signature.planner;
+    const fuzz::ReplayResult r =
+        fuzz::replay_case(c, [&planner](const Scenario& s) { return check_scenario(s, planner); });
+    if (!r.reproduces) ++failed;
+    if (json) {
+      report.push_back({{"case", file}, {"signature", c.signature.key()}, {"reproduces", r.reproduces},
+                        {"differences", r.differences}});
+    } else {
+      std::cout << (r.reproduces ? "reproduces      " : "DOES NOT REPRODUCE ") << file << "\n";
+      for (const std::string& d : r.differences) std::cout << "    " << d << "\n";
+    }
+  }
+  if (json) {
+    std::cout << nlohmann::json{{"cases", cases.size()}, {"not_reproduced", failed}, {"results", report}}.dump(2) << "\n";
+  } else {
+    std::cout << cases.size() - static_cast<std::size_t>(failed) << " of " << cases.size() << " cases reproduce\n";
+  }
+  return failed > 0 ? kExitViolation : kExitOk;
+}
+
+const CommandRegistration kRegistration("replay", "replay [CASE.json | DIR]... [--json]", run_replay);
+
+}  // namespace
+}  // namespace mg::cli

@@ -109,7 +109,7 @@ PairCheck check_box_pair(const BoxPose& a0, const BoxPose& a1, const BoxPose& b0
   const ContactResult at_step = fcl_box_contact(a1, b1);
   if (at_step.collide) {
     out.collide = true;
-    out.margin_m = -at_step.penetration_m;
+    out.margin_m = -std::max(at_step.penetration_m, 1e-6);  // touching is contact: never >= 0
     return out;
   }
   out.margin_m = now > 0.0 ? now : at_step.clearance_m;

@@ -70,7 +70,11 @@ RightOfWay compute_right_of_way(const Scenario& s, const Trace& t) {
     if (holder == kEgoId) row.ego_holds.back().second = time_s;
     if (h == kEgoId) row.ego_holds.emplace_back(time_s, end);
     holder = h;
-    row.timeline.emplace_back(time_s, h);
+    if (row.timeline.back().first == time_s) {
+      row.timeline.back().second = h;  // decided at the same instant: only the outcome counts
+    } else {
+      row.timeline.emplace_back(time_s, h);
+    }
   };
   for (const auto& d : t.decisions) {
     if (d.time_s >= merge_complete) break;
@@ -96,9 +100,16 @@ void assign_liability(CheckResult& r) {
   }
   r.collision = collision != nullptr;
   if (collision) {
-    r.collision_liable_id = collision->liable_id != kNobody ? collision->liable_id
-                            : first                         ? first->liable_id
-                                                            : kNobody;
+    // The obligation broken first, at or before the collision (the last safe moment + T).
+    const RuleResult* cause = nullptr;
+    for (const auto& rule : r.rules) {
+      if (rule.holds || rule.liable_id == kNobody ||
+          *rule.first_violation_time_s > *collision->first_violation_time_s + 1e-9)
+        continue;
+      if (!cause || *rule.first_violation_time_s < *cause->first_violation_time_s) cause = &rule;
+    }
+    r.collision_liable_id = cause ? cause->liable_id : kNobody;
+    if (!cause) first = nullptr;
   }
   if (first) {
     r.liable_id = first->liable_id;

@@ -46,8 +46,11 @@ bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho, dou
     for (std::size_t g = 0; g <= lane.size(); ++g) {
       const bool follower_ok = g == 0 || def1_1_margin_m(s, at_half, lane[g - 1], state_of(step, lane[g - 1]),
                                                           v_star, rho) >= margin;
-      const bool leader_ok = g == lane.size() || def1_2_margin_m(s, at_full, lane[g], state_of(step, lane[g]),
-                                                                  v_star, rho) >= margin;
+      // Ineq. (2) must hold over [T_dec, T_dec + rho] (RCPP Def. 1.2): checked at rho/2 and rho.
+      const bool leader_ok =
+          g == lane.size() ||
+          (def1_2_margin_m(s, at_full, lane[g], state_of(step, lane[g]), v_star, rho) >= margin &&
+           def1_2_margin_m(s, at_half, lane[g], state_of(step, lane[g]), v_star, rho / 2.0) >= margin);
       if (follower_ok && leader_ok) return true;
     }
   }

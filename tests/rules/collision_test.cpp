@@ -65,17 +65,16 @@ TEST(CollisionAdapter, PenetrationDepthIsNegativeMargin) {
 }
 
 TEST(CollisionAdapter, ExactDistanceWhenOnlyBoundingRectanglesOverlap) {
-  // b rotated 45 deg at x = 4.5: AABB half-extent (4+2)/2 cos45 = 2.121, so its AABB starts at
-  // 2.379 > 2: apart. At x = 4.0 the AABB overlaps a's (starts at 1.879) but the corner nearest
-  // to a lies at x = 4.0 - 2.121 = 1.879 only at y = +-... the boxes do not touch: FCL gives the
-  // exact positive distance.
+  // b rotated 45 deg at (3.8, 2.8): its corners are (4.507, 4.921), (5.921, 3.507),
+  // (1.679, 2.093), (3.093, 0.679), so its AABB starts at x = 1.679 < 2 and y = 0.679 < 1 and
+  // overlaps a's AABB [-2, 2] x [-1, 1]. The near edge of b lies on x + y = 3.772 and a's corner
+  // (2, 1) has x + y = 3: the boxes are apart by (3.772 - 3) / sqrt(2) = 0.546 m.
   const double kPi = std::acos(-1.0);
-  const BoxPose b = car(4.2, 1.9, kPi / 4);
-  const double aabb = aabb_clearance_m(car(0, 0), b);
+  const BoxPose b = car(3.8, 2.8, kPi / 4);
+  ASSERT_LE(aabb_clearance_m(car(0, 0), b), 0.0);
   const ContactResult exact = fcl_box_contact(car(0, 0), b);
-  ASSERT_LE(aabb, 0.0);
   ASSERT_FALSE(exact.collide);
-  EXPECT_GT(exact.clearance_m, 0.0);
+  EXPECT_NEAR(exact.clearance_m, (3.8 + 2.8 - 2.0 * std::sqrt(2.0) - 3.0) / std::sqrt(2.0), 1e-6);
   EXPECT_NEAR(check_box_pair(car(0, 0), car(0, 0), b, b).margin_m, exact.clearance_m, 1e-12);
 }
 

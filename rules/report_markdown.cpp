@@ -1,0 +1,77 @@
+#include "rules/report_markdown.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "rules/rule_catalog.h"
+
+namespace mg {
+
+std::string format_number(double v, int decimals) {
+  if (!std::isfinite(v)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+namespace {
+
+std::string cell(std::string s) {
+  for (char& c : s) {
+    if (c == '|' || c == '\n') c = ' ';
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string report_markdown(const Scenario& s, const CheckResult& r) {
+  std::ostringstream md;
+  md << "# mergeguard liability report: " << s.name << "\n\n"
+     << "**Verdict: " << (r.holds ? "HOLDS" : "VIOLATED") << "** - liable: **" << party_name(r.liable_id) << "**"
+     << (r.collision ? " - collision (liable: " + party_name(r.collision_liable_id) + ")" : "") << "\n\n";
+  if (!r.liability_detail.empty()) md << r.liability_detail << "\n\n";
+  md << "Planner: `" << r.planner << "`. Scenario: " << (s.description.empty() ? s.name : s.description) << "\n\n";
+  md << "## Violations\n\n";
+  bool any = false;
+  for (const RuleResult& rule : r.rules) {
+    if (rule.holds) continue;
+    if (!any) {
+      md << "| rule | paper reference | liable | first violation [s] | required | actual | margin | at [s] | what happened |\n"
+         << "|---|---|---|---|---|---|---|---|---|\n";
+    }
+    any = true;
+    md << "| " << rule.rule_id << " | " << cell(rule.paper_ref) << " | " << party_name(rule.liable_id) << " | "
+       << format_number(*rule.first_violation_time_s, 2) << " | " << format_number(rule.required_value) << " "
+       << rule.unit << " | " << format_number(rule.actual_value) << " " << rule.unit << " | "
+       << format_number(rule.min_margin) << " " << rule.unit << " | " << format_number(rule.min_margin_time_s, 2)
+       << " | " << cell(rule.detail) << " |\n";
+  }
+  if (!any) md << "None: every rule holds.\n";
+  md << "\n## Right of way\n\n";
+  for (const auto& [t, holder] : r.right_of_way) {
+    md << "- from t = " << format_number(t, 2) << " s: " << party_name(holder) << "\n";
+  }
+  md << "\n## All rules\n\n| rule | paper reference | holds | min margin | at [s] | statement |\n|---|---|---|---|---|---|\n";
+  for (const RuleResult& rule : r.rules) {
+    md << "| " << rule.rule_id << " | " << cell(rule.paper_ref) << " | " << (rule.holds ? "yes" : "**no**") << " | "
+       << (std::isfinite(rule.min_margin) ? format_number(rule.min_margin) + " " + rule.unit : "n/a") << " | "
+       << format_number(rule.min_margin_time_s, 2) << " | " << cell(rule_spec(rule.rule_id).statement) << " |\n";
+  }
+  md << "\n## Timeline\n\n";
+  for (const TraceEvent& e : r.trace.events) {
+    md << "- t = " << format_number(e.time_s, 2) << " s - " << to_string(e.kind) << " (" << party_name(e.vehicle_id)
+       << "): " << e.detail << "\n";
+  }
+  for (const RuleResult& rule : r.rules) {
+    if (!rule.holds) {
+      md << "- t = " << format_number(*rule.first_violation_time_s, 2) << " s - violation of " << rule.rule_id << " ("
+         << party_name(rule.liable_id) << ")\n";
+    }
+  }
+  md << "\nTrace: " << r.trace.steps.size() << " steps, digest " << std::hex << r.trace.digest << std::dec << ".\n";
+  return md.str();
+}
+
+}  // namespace mg

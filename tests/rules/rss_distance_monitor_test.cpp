@@ -1,0 +1,104 @@
+#include "rules/rss_distance_monitor.h"
+
+#include <gtest/gtest.h>
+
+#include "trace_builder.h"
+
+namespace mg {
+namespace {
+
+using test::base_scenario;
+using test::constant_accel_trace;
+using test::vehicle;
+
+// Vehicle 1 follows vehicle 2 in the main lane, both at 20 m/s; the ego is far away.
+// D_lon = (4.8 + 4.8)/2 + [20*0.5 + 2*0.5^2/2 + (20 + 2*0.5)^2/(2*4) - 20^2/(2*8)]
+//       = 4.8 + [10 + 0.25 + 55.125 - 25] = 45.175 m.
+Scenario two_in_lane(double gap_m) {
+  Scenario s = base_scenario();
+  s.ego.x_m = -500.0;
+  s.vehicles = {vehicle(1, 0.0, 20.0), vehicle(2, gap_m, 20.0)};
+  return s;
+}
+
+TEST(RssLongitudinalMonitor, SafeFollowingHoldsWithGapMinusDlonMargin) {
+  const Scenario s = two_in_lane(50.0);
+  const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 2.0));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 50.0 - 45.175, 1e-9);  // 4.825 m
+}
+
+TEST(RssLongitudinalMonitor, RearThatDoesNotBrakeOnceUnsafeIsLiable) {
+  // Gap 40 m < 45.175 m from t = 0 (t_b = 0); vehicle 1 keeps its speed: after T = 0.5 s it
+  // breaks its obligation to brake at least b_min. Margin = 40 - 45.175 = -5.175 m.
+  const Scenario s = two_in_lane(40.0);
+  const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 2.0));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 0.5, 1e-9);
+  EXPECT_NEAR(out.result.min_margin, -5.175, 1e-9);
+}
+
+TEST(RssLongitudinalMonitor, RearBrakingAtBminIsAProperResponse) {
+  // Same unsafe start, but vehicle 1 brakes at b_min = 4 m/s2 from t = 0: margin clamps to 0.
+  const Scenario s = two_in_lane(40.0);
+  const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 2.0, {0.0, -4.0, 0.0}));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 0.0, 1e-12);
+}
+
+TEST(RssLongitudinalMonitor, FrontBrakingBeyondBmaxIsLiable) {
+  // Vehicle 2 brakes at 9 > b_max 8 m/s2 from t = 0 with a safe 50 m gap; as the gap shrinks
+  // below D_lon the front is liable even though the rear brakes at b_min after T.
+  const Scenario s = two_in_lane(50.0);
+  const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 3.0, {0.0, 0.0, -9.0}));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 2);
+}
+
+// The ego moves left at 1 m/s beside vehicle 1 (same X: longitudinally unsafe). With the ego
+// as the right vehicle: v_R = 1, v_R,rho = 1 + 0.5*0.2 = 1.1, d_R = -(1 + 1.1)/2*0.5 - 1.1^2/1.6
+// = -1.28125; v_L = 0, v_L,rho = -0.1, d_L = 0.025 + 0.1^2/1.6 = 0.03125;
+// D_lat = 0.1 + 1.9 + 1.3125 = 3.3125 m. dy = 3.5 - t: dangerous from t_b = 0.2 s.
+Scenario side_by_side() {
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 0.0, 20.0)};
+  return s;
+}
+
+Trace lateral_trace(const Scenario& s, bool respond) {
+  Trace t = constant_accel_trace(s, 2.0);
+  double vy = 1.0, y = s.ego.y_m;
+  for (auto& st : t.steps) {
+    st.ego.y_m = y;
+    st.ego.vy_mps = vy;
+    if (respond && st.time_s >= 0.7 - 1e-9) vy = std::max(0.0, vy - 1.0 * 0.02);  // 1 m/s2 >= b_lat,min
+    y += vy * 0.02;
+  }
+  return t;
+}
+
+TEST(RssLateralMonitor, EgoWithoutRightOfWayThatKeepsMovingTowardIsLiable) {
+  // After t_b + T = 0.7 s the allowed lateral speed is 1 - 0.8 (t - 0.7) + 0.2 (tolerance):
+  // below 1 m/s from t = 0.96 s on, so the breach is at t = 0.96 s with dy = 3.5 - 0.96 =
+  // 2.54 m: margin 2.54 - 3.3125 = -0.7725 m.
+  const Scenario s = side_by_side();
+  const MonitorOutput out = test::run(monitor_rss_lateral, s, lateral_trace(s, false));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 0.96, 0.021);
+  EXPECT_NEAR(out.margin[48], -0.7725, 1e-6);  // step 48: t = 0.96 s
+  // The worst moment is the end, t = 2 s: dy = 1.5 m, margin 1.5 - 3.3125 = -1.8125 m.
+  EXPECT_NEAR(out.result.min_margin, -1.8125, 1e-6);
+}
+
+TEST(RssLateralMonitor, LateralBrakingAfterResponseTimeHolds) {
+  const Scenario s = side_by_side();
+  const MonitorOutput out = test::run(monitor_rss_lateral, s, lateral_trace(s, true));
+  EXPECT_TRUE(out.result.holds);
+  // Before t_b the margin is dy - D_lat = 3.5 - 3.3125 = 0.1875 m at t = 0; afterwards 0.
+  EXPECT_NEAR(out.result.min_margin, 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace mg

@@ -11,30 +11,39 @@ namespace {
 
 double wrap_angle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
-double segment_heading(const std::vector<PathPoint>& p, std::size_t i) {
-  return std::atan2(p[i + 1].y_m - p[i].y_m, p[i + 1].x_m - p[i].x_m);
+// The point at signed arc distance ds from parameter t of segment i, walking along the
+// polyline; beyond an end, the end segment extends straight.
+PathPoint point_along(const std::vector<PathPoint>& p, std::size_t i, double t, double ds) {
+  double seg_len = std::hypot(p[i + 1].x_m - p[i].x_m, p[i + 1].y_m - p[i].y_m);
+  double at = t * seg_len + ds;  // arc position within segment i
+  while (at > seg_len && i + 2 < p.size()) {
+    at -= seg_len;
+    ++i;
+    seg_len = std::hypot(p[i + 1].x_m - p[i].x_m, p[i + 1].y_m - p[i].y_m);
+  }
+  while (at < 0.0 && i > 0) {
+    --i;
+    seg_len = std::hypot(p[i + 1].x_m - p[i].x_m, p[i + 1].y_m - p[i].y_m);
+    at += seg_len;
+  }
+  const double u = seg_len > 0.0 ? at / seg_len : 0.0;
+  return {p[i].x_m + u * (p[i + 1].x_m - p[i].x_m), p[i].y_m + u * (p[i + 1].y_m - p[i].y_m)};
 }
 
-// Curvature as heading change per arc length between the segments around vertex i+1.
-double vertex_curvature(const std::vector<PathPoint>& p, std::size_t i) {
-  if (i + 2 >= p.size()) return 0.0;
-  const double dh = wrap_angle(segment_heading(p, i + 1) - segment_heading(p, i));
-  const double ds = 0.5 * (std::hypot(p[i + 1].x_m - p[i].x_m, p[i + 1].y_m - p[i].y_m) +
-                           std::hypot(p[i + 2].x_m - p[i + 1].x_m, p[i + 2].y_m - p[i + 1].y_m));
-  return ds > 0.0 ? dh / ds : 0.0;
-}
+double chord_heading(const PathPoint& a, const PathPoint& b) { return std::atan2(b.y_m - a.y_m, b.x_m - a.x_m); }
 
 }  // namespace
 
-PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m) {
-  assert(path.size() >= 2);
+PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m, double preview_m) {
+  assert(path.size() >= 2 && preview_m > 0.0);
   // The segment whose X range holds x_m, then its neighbours, by perpendicular distance.
   auto it = std::upper_bound(path.begin(), path.end(), x_m, [](double x, const PathPoint& p) { return x < p.x_m; });
   const std::size_t last_seg = path.size() - 2;
   const std::size_t guess = std::min<std::size_t>(it == path.begin() ? 0 : (it - path.begin()) - 1, last_seg);
   const std::size_t lo = guess >= 3 ? guess - 3 : 0;
   const std::size_t hi = std::min(last_seg, guess + 3);
-  double best_d2 = INFINITY;
+  double best_d2 = INFINITY, best_t = 0.0;
+  std::size_t best_i = guess;
   PathProjection best;
   for (std::size_t i = lo; i <= hi; ++i) {
     const double ax = path[i].x_m, ay = path[i].y_m;
@@ -47,13 +56,18 @@ PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, d
     const double d2 = (x_m - px) * (x_m - px) + (y_m - py) * (y_m - py);
     if (d2 < best_d2) {
       best_d2 = d2;
+      best_i = i;
+      best_t = t;
       const double len = std::sqrt(len2);
-      best.heading_rad = std::atan2(dy, dx);
       // Cross product sign: positive when the point is left of the segment direction.
       best.cross_track_m = len > 0.0 ? (dx * (y_m - ay) - dy * (x_m - ax)) / len : 0.0;
-      best.curvature_per_m = (t > 0.5 || i == 0) ? vertex_curvature(path, i) : vertex_curvature(path, i - 1);
     }
   }
+  const PathPoint back = point_along(path, best_i, best_t, -preview_m);
+  const PathPoint here = point_along(path, best_i, best_t, 0.0);
+  const PathPoint ahead = point_along(path, best_i, best_t, preview_m);
+  best.heading_rad = chord_heading(back, ahead);
+  best.curvature_per_m = wrap_angle(chord_heading(here, ahead) - chord_heading(back, here)) / preview_m;
   return best;
 }
 
@@ -61,8 +75,9 @@ double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleSta
                             const PathTrackerGains& gains) {
   const double front_x = ego.x_m + d.cg_to_front_m * std::cos(ego.yaw_rad);
   const double front_y = ego.y_m + d.cg_to_front_m * std::sin(ego.yaw_rad);
-  const PathProjection proj = project_on_path(path, front_x, front_y);
   const double speed = std::max(ego.vx_mps, 0.0);
+  const double preview = std::max(gains.preview_min_m, gains.preview_time_s * speed);
+  const PathProjection proj = project_on_path(path, front_x, front_y, preview);
   const double heading_error = wrap_angle(proj.heading_rad - ego.yaw_rad);
   const double cross_term = std::atan2(-gains.cross_track_gain * proj.cross_track_m, gains.softening_mps + speed);
   const double path_yaw_rate = speed * proj.curvature_per_m;

@@ -12,19 +12,23 @@ namespace mg {
 
 struct PathTrackerGains {
   double cross_track_gain = 1.0;     // k of Stanley, 1/s
+  double preview_min_m = 3.0;        // heading/curvature chord: max(preview_min, preview_time * v)
+  double preview_time_s = 0.3;
   double softening_mps = 2.0;        // k_soft: keeps the gain finite at low speed
   double yaw_rate_damping_s = 0.05;  // k_d on (r_path - r)
 };
 
 // Signed lateral error of a point against a polyline (positive: point left of the path) and the
-// path's heading and curvature at the projection. Beyond either end the end segment extends
-// straight. The path must have >= 2 points with increasing X.
+// path's heading and curvature at the projection, measured over chords reaching preview_m
+// back and ahead along the path, so that a jagged polyline (a gradient-following planner's)
+// does not turn into steering noise. Beyond either end the end segment extends straight.
+// The path must have >= 2 points with increasing X.
 struct PathProjection {
   double cross_track_m = 0.0;
   double heading_rad = 0.0;
   double curvature_per_m = 0.0;
 };
-PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m);
+PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m, double preview_m = 2.0);
 
 // Steering request that brings the front axle onto the path.
 double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleState& ego, const EgoDynamics& d,

@@ -132,6 +132,10 @@ class Run {
               [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
     PlanOutput out = planner_.plan(world);
     out.decision.time_s = t;
+    // Repeated points carry no direction: drop them; a path that turns back is a planner bug.
+    out.path.erase(std::unique(out.path.begin(), out.path.end(),
+                               [](const PathPoint& a, const PathPoint& b) { return a.x_m == b.x_m && a.y_m == b.y_m; }),
+                   out.path.end());
     if (out.path.size() < 2) out.path = plan_.path;  // no new path: keep following the last one
     for (std::size_t i = 1; i < out.path.size(); ++i)
       if (!(out.path[i].x_m > out.path[i - 1].x_m))

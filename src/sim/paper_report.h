@@ -1,0 +1,49 @@
+// `mergeguard reproduce-paper` (issue #4, DESIGN §11): runs the paper's merge scenario with
+// the TriPField-style baseline and both RCPP variants, and writes metrics.json, the figures in
+// the manner of the paper's Fig. 4 and Fig. 5, and report.md comparing with the paper.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/scenario.h"
+#include "sim/paper_metrics.h"
+#include "sim/trace.h"
+
+namespace mg {
+
+inline const std::vector<std::string> kPaperPlanners{"tripfield", "rcpp", "rcpp-coop"};
+
+struct PaperRun {
+  std::string planner;
+  Trace trace;
+  PaperMetrics metrics;
+};
+
+struct PaperExperiment {
+  Scenario scenario;
+  std::string scenario_path;
+  std::vector<PaperRun> runs;  // in kPaperPlanners order
+};
+
+PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scenario_path);
+
+// {"planners": {name: metrics}, "merge_time_saving_pct": {"rcpp": x, "rcpp-coop": y},
+//  "path_length_reduction_pct": {...}, "scenario": path, "definitions": {...}}
+nlohmann::json paper_metrics_json(const PaperExperiment& e);
+
+std::string fig4_paths_svg(const PaperExperiment& e);
+std::string fig5_motion_svg(const PaperExperiment& e);
+std::string paper_report_markdown(const PaperExperiment& e);
+
+// Every planner merged without collision and both RCPP variants are no worse than the
+// baseline in merge time and path length; `why` lists what failed.
+bool paper_results_consistent(const PaperExperiment& e, std::vector<std::string>& why);
+
+// Writes metrics.json, fig4_paths.svg, fig5_motion.svg and report.md into out_dir, each
+// atomically.
+void write_paper_report(const PaperExperiment& e, const std::string& out_dir);
+
+}  // namespace mg

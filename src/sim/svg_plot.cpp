@@ -1,0 +1,179 @@
+#include "sim/svg_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace mg::svg {
+namespace {
+
+constexpr int kMarginLeft = 72, kMarginRight = 16, kMarginTop = 34, kMarginBottom = 50;
+constexpr int kGridTitleHeight = 36;
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
+
+std::string tick_label(double v, double step) {
+  char buf[32];
+  const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+  std::snprintf(buf, sizeof buf, "%.*f", std::min(decimals, 6), std::abs(v) < step * 1e-9 ? 0.0 : v);
+  return buf;
+}
+
+Range data_range(const Plot& p, bool x_axis) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Series& s : p.series)
+    for (double v : x_axis ? s.x : s.y)
+      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!std::isfinite(lo)) return {0.0, 1.0};
+  if (hi - lo < 1e-12) return {lo - 1.0, hi + 1.0};
+  if (!x_axis) {
+    const double pad = 0.05 * (hi - lo);
+    return {lo - pad, hi + pad};
+  }
+  return {lo, hi};
+}
+
+// Draws one plot into `out` with its top-left corner at (ox, oy).
+void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
+  const Range xr = p.x_range.value_or(data_range(p, true));
+  const Range yr = p.y_range.value_or(data_range(p, false));
+  const double x0 = ox + kMarginLeft, x1 = ox + p.width_px - kMarginRight;
+  const double y0 = oy + p.height_px - kMarginBottom, y1 = oy + kMarginTop;  // y0 bottom
+  auto px = [&](double x) { return x0 + (x - xr.lo) / (xr.hi - xr.lo) * (x1 - x0); };
+  auto py = [&](double y) { return y0 - (y - yr.lo) / (yr.hi - yr.lo) * (y0 - y1); };
+
+  out << "<g font-family=\"sans-serif\" font-size=\"12\">\n";
+  out << "<text x=\"" << num(0.5 * (x0 + x1)) << "\" y=\"" << oy + 20
+      << "\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">" << escape(p.title) << "</text>\n";
+  out << "<clipPath id=\"clip" << ox << "_" << oy << "\"><rect x=\"" << num(x0) << "\" y=\"" << num(y1)
+      << "\" width=\"" << num(x1 - x0) << "\" height=\"" << num(y0 - y1) << "\"/></clipPath>\n";
+  for (const Band& b : p.bands) {
+    const double bx0 = std::clamp(px(b.x_from), x0, x1), bx1 = std::clamp(px(b.x_to), x0, x1);
+    out << "<rect x=\"" << num(bx0) << "\" y=\"" << num(y1) << "\" width=\"" << num(bx1 - bx0) << "\" height=\""
+        << num(y0 - y1) << "\" fill=\"" << b.colour << "\" opacity=\"0.6\"/>\n";
+    out << "<text x=\"" << num(0.5 * (bx0 + bx1)) << "\" y=\"" << num(y1 + 14)
+        << "\" text-anchor=\"middle\" font-size=\"11\" fill=\"#665\">" << escape(b.caption) << "</text>\n";
+  }
+  // Grid, ticks and tick labels.
+  const auto xt = nice_ticks(xr.lo, xr.hi), yt = nice_ticks(yr.lo, yr.hi);
+  const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1.0, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1.0;
+  for (double t : xt) {
+    out << "<line x1=\"" << num(px(t)) << "\" y1=\"" << num(y0) << "\" x2=\"" << num(px(t)) << "\" y2=\"" << num(y1)
+        << "\" stroke=\"#e4e4e4\"/>\n";
+    out << "<text x=\"" << num(px(t)) << "\" y=\"" << num(y0 + 16) << "\" text-anchor=\"middle\">"
+        << tick_label(t, xstep) << "</text>\n";
+  }
+  for (double t : yt) {
+    out << "<line x1=\"" << num(x0) << "\" y1=\"" << num(py(t)) << "\" x2=\"" << num(x1) << "\" y2=\"" << num(py(t))
+        << "\" stroke=\"#e4e4e4\"/>\n";
+    out << "<text x=\"" << num(x0 - 6) << "\" y=\"" << num(py(t) + 4) << "\" text-anchor=\"end\">"
+        << tick_label(t, ystep) << "</text>\n";
+  }
+  out << "<rect x=\"" << num(x0) << "\" y=\"" << num(y1) << "\" width=\"" << num(x1 - x0) << "\" height=\""
+      << num(y0 - y1) << "\" fill=\"none\" stroke=\"#333\"/>\n";
+  out << "<text x=\"" << num(0.5 * (x0 + x1)) << "\" y=\"" << num(y0 + 36) << "\" text-anchor=\"middle\">"
+      << escape(p.x_label) << "</text>\n";
+  out << "<text transform=\"translate(" << ox + 16 << "," << num(0.5 * (y0 + y1))
+      << ") rotate(-90)\" text-anchor=\"middle\">" << escape(p.y_label) << "</text>\n";
+  // Data.
+  for (const Series& s : p.series) {
+    std::string d;
+    bool pen_down = false;
+    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
+        pen_down = false;
+        continue;
+      }
+      d += (pen_down ? " L" : " M") + num(px(s.x[i])) + " " + num(py(s.y[i]));
+      pen_down = true;
+    }
+    if (d.empty()) continue;
+    out << "<path clip-path=\"url(#clip" << ox << "_" << oy << ")\" d=\"" << d << "\" fill=\"none\" stroke=\""
+        << s.colour << "\" stroke-width=\"" << num(s.width_px) << "\"";
+    if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
+    out << "/>\n";
+  }
+  // Legend, top right inside the axes.
+  int row = 0;
+  for (const Series& s : p.series) {
+    if (s.label.empty()) continue;
+    const double ly = y1 + 12 + 16 * row++;
+    const double lx = x1 - 190;
+    out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 28) << "\" y2=\"" << num(ly)
+        << "\" stroke=\"" << s.colour << "\" stroke-width=\"" << num(s.width_px + 0.4) << "\"";
+    if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
+    out << "/>\n<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">" << escape(s.label)
+        << "</text>\n";
+  }
+  out << "</g>\n";
+}
+
+std::string header(int w, int h) {
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(w) + "\" height=\"" +
+         std::to_string(h) + "\" viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) +
+         "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+}
+
+}  // namespace
+
+std::vector<double> nice_ticks(double lo, double hi, int target) {
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return {lo};
+  const double raw = (hi - lo) / std::max(target, 1);
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = mag;
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+    if (m * mag >= raw) {
+      step = m * mag;
+      break;
+    }
+  std::vector<double> ticks;
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + step * 1e-9; t += step) ticks.push_back(t);
+  return ticks;
+}
+
+std::string render(const Plot& plot) {
+  std::ostringstream out;
+  out << header(plot.width_px, plot.height_px);
+  draw(out, plot, 0, 0);
+  out << "</svg>\n";
+  return out.str();
+}
+
+std::string render_grid(const std::vector<Plot>& plots, int columns, const std::string& title) {
+  columns = std::max(columns, 1);
+  int cell_w = 0, cell_h = 0;
+  for (const Plot& p : plots) cell_w = std::max(cell_w, p.width_px), cell_h = std::max(cell_h, p.height_px);
+  const int rows = (static_cast<int>(plots.size()) + columns - 1) / columns;
+  const int top = title.empty() ? 0 : kGridTitleHeight;
+  std::ostringstream out;
+  out << header(cell_w * columns, top + cell_h * rows);
+  if (!title.empty())
+    out << "<text x=\"" << cell_w * columns / 2 << "\" y=\"24\" text-anchor=\"middle\" font-family=\"sans-serif\" "
+        << "font-size=\"16\" font-weight=\"bold\">" << escape(title) << "</text>\n";
+  for (std::size_t i = 0; i < plots.size(); ++i)
+    draw(out, plots[i], static_cast<int>(i % columns) * cell_w, top + static_cast<int>(i / columns) * cell_h);
+  out << "</svg>\n";
+  return out.str();
+}
+
+}  // namespace mg::svg

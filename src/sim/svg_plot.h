@@ -1,0 +1,52 @@
+// A small, dependency-free SVG line-plot writer for reports: axes with "nice" ticks, axis
+// labels with units, a legend, polylines with colour and dash pattern, optional shaded bands.
+// Output is a standalone SVG document; several panels can share one document (a grid).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mg::svg {
+
+struct Series {
+  std::string label;               // legend entry; empty = not in the legend
+  std::vector<double> x, y;        // same length; non-finite points break the line
+  std::string colour = "#1f77b4";
+  std::string dash;                // SVG stroke-dasharray, e.g. "6 3"; empty = solid
+  double width_px = 1.6;
+};
+
+// A shaded vertical band [x_from, x_to] with a caption (e.g. the merge manoeuvre).
+struct Band {
+  double x_from = 0.0, x_to = 0.0;
+  std::string caption;
+  std::string colour = "#f2e6b3";
+};
+
+struct Range {
+  double lo = 0.0, hi = 1.0;
+};
+
+struct Plot {
+  std::string title;
+  std::string x_label;             // with unit, e.g. "time t [s]"
+  std::string y_label;
+  std::vector<Series> series;
+  std::vector<Band> bands;
+  std::optional<Range> x_range;    // default: data extent
+  std::optional<Range> y_range;    // default: data extent with 5 % padding
+  int width_px = 640;
+  int height_px = 360;
+};
+
+// Round tick values ("1, 2, 5 x 10^k" steps) covering [lo, hi], about `target` of them.
+std::vector<double> nice_ticks(double lo, double hi, int target = 6);
+
+// One plot as a standalone SVG document.
+std::string render(const Plot& plot);
+
+// Several plots in a grid (row-major) in one SVG document with an overall title.
+std::string render_grid(const std::vector<Plot>& plots, int columns, const std::string& title = "");
+
+}  // namespace mg::svg

@@ -1,0 +1,199 @@
+#include "fuzz/campaign.h"
+
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "core/input_error.h"
+#include "fake_check.h"
+#include "fuzz/corpus_case.h"
+#include "fuzz/replay.h"
+
+namespace mg::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch_dir(const std::string& tag) {
+  const auto dir = fs::temp_directory_path() / ("mg_campaign_test_" + std::to_string(::getpid()) + "_" + tag);
+  fs::remove_all(dir);
+  return dir;
+}
+
+CheckFactory fake_factory() {
+  return [] { return CheckFn(test::fake_check); };
+}
+
+CampaignOptions options(std::uint64_t runs, int jobs, const fs::path& corpus) {
+  CampaignOptions o;
+  o.seed = 11;
+  o.runs = runs;
+  o.jobs = jobs;
+  o.planner = "fake";
+  o.corpus_dir = corpus.string();
+  o.gen.max_vehicles = 3;
+  return o;
+}
+
+nlohmann::json case_without_date(const std::string& path) {
+  auto j = case_to_json(load_case(path));
+  j["provenance"].erase("date");
+  return j;
+}
+
+TEST(Campaign, ResultsDoNotDependOnTheNumberOfJobs) {
+  const auto a = scratch_dir("jobs1"), b = scratch_dir("jobs3");
+  const CampaignResult one = run_campaign(options(200, 1, a), fake_factory());
+  const CampaignResult three = run_campaign(options(200, 3, b), fake_factory());
+  EXPECT_EQ(one.scenarios, 200u);
+  EXPECT_EQ(three.scenarios, 200u);
+  EXPECT_GT(one.failing_scenarios, 0u);
+  EXPECT_EQ(one.failing_scenarios, three.failing_scenarios);
+  EXPECT_EQ(one.by_property, three.by_property);
+  EXPECT_EQ(one.by_rule, three.by_rule);
+  ASSERT_EQ(one.signatures.size(), three.signatures.size());
+  for (const auto& [sig, rec] : one.signatures) {
+    EXPECT_EQ(rec.count, three.signatures.at(sig).count);
+    EXPECT_EQ(rec.first_run, three.signatures.at(sig).first_run);
+  }
+  const MarginStats& m1 = one.margins.at("fake_proximity");
+  const MarginStats& m3 = three.margins.at("fake_proximity");
+  EXPECT_EQ(m1.bins, m3.bins);
+  EXPECT_EQ(m1.sum_micro, m3.sum_micro);
+  ASSERT_EQ(one.new_cases.size(), 1u);
+  ASSERT_EQ(three.new_cases.size(), 1u);
+  EXPECT_EQ(case_without_date(one.new_cases[0]), case_without_date(three.new_cases[0]));
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
+
+TEST(Campaign, ShardsAreDisjointSlicesThatMakeUpTheCampaign) {
+  std::mutex mutex;
+  std::multiset<std::string> seen;
+  const CheckFactory recording = [&] {
+    return CheckFn([&](const Scenario& s) {
+      std::lock_guard lock(mutex);
+      seen.insert(scenario_to_json(s).dump());
+      return test::fake_check(s);
+    });
+  };
+  auto o = options(90, 2, {});
+  o.corpus_dir.clear();
+  o.determinism_every = 0;
+  run_campaign(o, recording);
+  const std::multiset<std::string> whole = seen;
+  seen.clear();
+  std::uint64_t total = 0;
+  for (int k = 0; k < 4; ++k) {
+    o.shard_index = k;
+    o.shard_count = 4;
+    const auto r = run_campaign(o, recording);
+    EXPECT_EQ(r.scenarios, runs_in_shard(90, k, 4));
+    total += r.scenarios;
+  }
+  EXPECT_EQ(total, 90u);
+  EXPECT_EQ(seen, whole);  // same scenarios, each exactly once
+}
+
+TEST(Campaign, AResumedCampaignDoesNotReAddKnownSignatures) {
+  const auto dir = scratch_dir("resume");
+  const auto first = run_campaign(options(100, 2, dir), fake_factory());
+  ASSERT_EQ(first.new_cases.size(), 1u);
+  auto o = options(100, 2, dir);
+  o.seed = 12;
+  const auto second = run_campaign(o, fake_factory());
+  EXPECT_GT(second.failing_scenarios, 0u);
+  EXPECT_TRUE(second.new_cases.empty());
+  for (const auto& [sig, rec] : second.signatures) EXPECT_TRUE(rec.known_before) << sig.key();
+  EXPECT_EQ(case_files(dir.string()).size(), 1u);
+  fs::remove_all(dir);
+}
+
+TEST(Campaign, EveryNewCaseIsMinimalAndReplays) {
+  const auto dir = scratch_dir("replay");
+  const auto r = run_campaign(options(60, 2, dir), fake_factory());
+  ASSERT_FALSE(r.new_cases.empty());
+  for (const std::string& path : r.new_cases) {
+    const CorpusCase c = load_case(path);
+    EXPECT_EQ(c.scenario.vehicles.size(), 1u);
+    EXPECT_TRUE(c.provenance.shrink_minimal);
+    EXPECT_TRUE(replay_case(c, test::fake_check).reproduces) << path;
+    EXPECT_EQ(fs::path(path).filename(), c.signature.file_stem() + ".json");
+  }
+  fs::remove_all(dir);
+}
+
+TEST(Campaign, AStopRequestEndsTheCampaignAndKeepsWhatItFound) {
+  const auto dir = scratch_dir("stop");
+  std::atomic<bool> stop{false};
+  std::atomic<int> calls{0};
+  const CheckFactory stopping = [&] {
+    return CheckFn([&](const Scenario& s) {
+      if (++calls == 300) stop = true;  // like SIGINT in the middle of the campaign
+      return test::fake_check(s);
+    });
+  };
+  auto o = options(1000000000, 2, dir);
+  o.stop = &stop;
+  const auto r = run_campaign(o, stopping);
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_LT(r.scenarios, 400u);
+  ASSERT_EQ(r.new_cases.size(), 1u);
+  EXPECT_NO_THROW(load_case(r.new_cases[0]));
+  fs::remove_all(dir);
+}
+
+TEST(Campaign, AThrowingCheckBecomesACaseThatReplays) {
+  const auto dir = scratch_dir("throw");
+  const CheckFn throwing = [](const Scenario& s) -> CheckResult {
+    if (s.vehicles.size() >= 2) throw std::runtime_error("two vehicles are too many");
+    return test::fake_check(s);
+  };
+  auto o = options(50, 1, dir);
+  const auto r = run_campaign(o, [&] { return throwing; });
+  const Signature crash{"fake", property::kCheckCompletes, kRuleException, "none"};
+  ASSERT_TRUE(r.signatures.count(crash));
+  const CorpusCase c = load_case(r.signatures.at(crash).case_path);
+  EXPECT_EQ(c.scenario.vehicles.size(), 2u);
+  EXPECT_EQ(c.failure.detail, "two vehicles are too many");
+  EXPECT_TRUE(replay_case(c, throwing).reproduces);
+  fs::remove_all(dir);
+}
+
+TEST(Campaign, ATimeBudgetEndsTheCampaign) {
+  auto o = options(0, 2, {});
+  o.runs.reset();
+  o.time_s = 0.5;
+  o.corpus_dir.clear();
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = run_campaign(o, fake_factory());
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  EXPECT_GT(r.scenarios, 0u);
+  EXPECT_TRUE(r.new_cases.empty());  // no corpus: failures are counted only
+}
+
+TEST(Campaign, ACorruptCorpusIsRefusedBeforeAnythingRuns) {
+  const auto dir = scratch_dir("corrupt");
+  fs::create_directories(dir);
+  { std::ofstream(dir / "bad.json") << "{\"format_version\": 99}"; }
+  std::atomic<int> calls{0};
+  const CheckFactory counting = [&] { return CheckFn([&](const Scenario& s) { ++calls; return test::fake_check(s); }); };
+  EXPECT_THROW(run_campaign(options(10, 1, dir), counting), InputError);
+  EXPECT_EQ(calls.load(), 0);
+  fs::remove_all(dir);
+}
+
+TEST(Campaign, NonsenseOptionsAreRejected) {
+  auto o = options(10, 0, {});
+  EXPECT_THROW(run_campaign(o, fake_factory()), std::invalid_argument);
+  o = options(10, 1, {});
+  o.shard_index = 3;
+  o.shard_count = 3;
+  EXPECT_THROW(run_campaign(o, fake_factory()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mg::fuzz

@@ -76,19 +76,37 @@ std::optional<double> first_event_s(const Trace& t, EventKind k, int vehicle_id)
   return std::nullopt;
 }
 
-std::string yes_no(bool reproduced) { return reproduced ? "**yes**" : "**no**"; }
-
-}  // namespace
-
-PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scenario_path) {
-  PaperExperiment e{s, scenario_path, {}};
+std::vector<PaperRun> run_planners(const Scenario& s) {
+  std::vector<PaperRun> runs;
   for (const std::string& name : kPaperPlanners) {
     std::unique_ptr<Planner> planner = make_planner(name);
     if (!planner) throw std::logic_error("planner '" + name + "' is not registered");
     Trace trace = simulate(s, *planner);
     PaperMetrics metrics = compute_paper_metrics(s, trace);
-    e.runs.push_back({name, std::move(trace), metrics});
+    runs.push_back({name, std::move(trace), metrics});
   }
+  return runs;
+}
+
+std::string yes_no(bool reproduced) { return reproduced ? "**yes**" : "**no**"; }
+
+}  // namespace
+
+PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scenario_path) {
+  PaperExperiment e{s, scenario_path, {}, {}};
+  e.runs = run_planners(s);
+  if (s.vehicles.empty()) return e;
+  for (double dv : {-2.0, 0.0, 2.0})
+    for (double dx : {-12.0, -6.0, 0.0, 6.0, 12.0}) {
+      Scenario variant = s;
+      MainVehicle& o = variant.vehicles[0];
+      o.x_m += dx;
+      o.speed_mps = std::max(0.0, o.speed_mps + dv);
+      if (o.behaviour.desired_speed_mps >= 0.0) o.behaviour.desired_speed_mps = std::max(0.0, o.behaviour.desired_speed_mps + dv);
+      SensitivityCase c{dx, dv, {}};
+      for (const PaperRun& r : run_planners(variant)) c.metrics.push_back(r.metrics);
+      e.sensitivity.push_back(std::move(c));
+    }
   return e;
 }
 
@@ -125,10 +143,20 @@ std::string fig4_paths_svg(const PaperExperiment& e) {
   p.y_label = "Y lateral [m]";
   p.width_px = 1100;
   p.height_px = 380;
-  double x_hi = road.side_lane_end_x_m + 20.0, x_lo = e.scenario.ego.x_m - 10.0;
-  for (const PaperRun& r : e.runs) x_hi = std::max(x_hi, r.trace.steps.back().ego.x_m);
+  // Up to 100 m past the last merge completion (or the end of the run), at least past the ramp.
+  double x_hi = road.side_lane_end_x_m + 50.0, x_lo = e.scenario.ego.x_m - 10.0;
+  for (const PaperRun& r : e.runs) {
+    const auto done = first_event_s(r.trace, EventKind::kMergeComplete, 0);
+    double x_end = r.trace.steps.back().ego.x_m;
+    for (const TraceStep& st : r.trace.steps)
+      if (done && st.time_s >= *done) {
+        x_end = std::min(x_end, st.ego.x_m + 100.0);
+        break;
+      }
+    x_hi = std::max(x_hi, x_end);
+  }
   p.x_range = svg::Range{x_lo, x_hi};
-  p.y_range = svg::Range{-1.6 * w, (road.main_lanes - 0.5) * w + 0.6 * w};
+  p.y_range = svg::Range{-1.6 * w, (road.main_lanes - 0.5) * w + 1.6 * w};
   auto line = [&](std::vector<double> x, std::vector<double> y, const std::string& label, const char* dash) {
     p.series.push_back({label, std::move(x), std::move(y), "#999999", dash, 1.0});
   };
@@ -157,12 +185,16 @@ std::string fig5_motion_svg(const PaperExperiment& e) {
     const char* title;
     const char* y_label;
     double (*value)(const TraceStep&);
+    svg::LegendCorner legend;
   };
   const Panel panels[] = {
-      {"(a) Sideslip angle of the ego", "sideslip beta [rad]", [](const TraceStep& s) { return sideslip_rad(s.ego); }},
-      {"(b) Yaw angle of the ego", "yaw psi [rad]", [](const TraceStep& s) { return s.ego.yaw_rad; }},
-      {"(c) Longitudinal speed of the obstacle vehicle", "speed [m/s]", obstacle_speed},
-      {"(d) Longitudinal speed of the ego vehicle", "speed v_x [m/s]", [](const TraceStep& s) { return s.ego.vx_mps; }},
+      {"(a) Sideslip angle of the ego", "sideslip beta [rad]", [](const TraceStep& s) { return sideslip_rad(s.ego); },
+       svg::LegendCorner::kBottomRight},
+      {"(b) Yaw angle of the ego", "yaw psi [rad]", [](const TraceStep& s) { return s.ego.yaw_rad; },
+       svg::LegendCorner::kTopRight},
+      {"(c) Longitudinal speed of the obstacle vehicle", "speed v_o [m/s]", obstacle_speed, svg::LegendCorner::kBottomRight},
+      {"(d) Longitudinal speed of the ego vehicle", "speed v_x [m/s]", [](const TraceStep& s) { return s.ego.vx_mps; },
+       svg::LegendCorner::kBottomRight},
   };
   std::vector<svg::Plot> plots;
   for (const Panel& panel : panels) {
@@ -170,6 +202,7 @@ std::string fig5_motion_svg(const PaperExperiment& e) {
     p.title = panel.title;
     p.x_label = "time t [s]";
     p.y_label = panel.y_label;
+    p.legend = panel.legend;
     for (const PaperRun& r : e.runs) {
       const Style st = style_of(r.planner);
       p.series.push_back({st.label, series(r.trace, [](const TraceStep& s) { return s.time_s; }),
@@ -301,6 +334,24 @@ std::string paper_report_markdown(const PaperExperiment& e) {
   row("yaw min/max [rad]", [](const PaperMetrics& m) { return fmt(m.yaw_min_rad, 4) + " / " + fmt(m.yaw_max_rad, 4); });
   row("ego speed min/max [m/s]", [](const PaperMetrics& m) { return fmt(m.ego_speed_min_mps, 1) + " / " + fmt(m.ego_speed_max_mps, 1); });
   row("obstacle speed min [m/s]", [](const PaperMetrics& m) { return fmt(m.obstacle_speed_min_mps, 1); });
+  if (!e.sensitivity.empty()) {
+    md << "\n## Sensitivity to the scenario\n\n"
+          "The paper publishes no scenario numbers, so ours is a choice. The same comparison with the obstacle "
+          "vehicle started dx metres further along and dv m/s faster (its desired speed too); T = merge time [s], "
+          "saving and reduction against the baseline in %, n/a = did not merge:\n\n"
+          "| dx [m] | dv [m/s] | T TriPField | T RCPP | T coop | time saving RCPP / coop | path reduction RCPP / coop | "
+          "collision (TF/RCPP/coop) |\n|---|---|---|---|---|---|---|---|\n";
+    for (const SensitivityCase& c : e.sensitivity) {
+      const PaperMetrics &b = c.metrics[0], &r = c.metrics[1], &k = c.metrics[2];
+      md << "| " << fmt(c.dx_m, 0) << " | " << fmt(c.dv_mps, 0) << " | " << fmt(b.merge_time_s) << " | "
+         << fmt(r.merge_time_s) << " | " << fmt(k.merge_time_s) << " | "
+         << fmt(reduction_pct(b.merge_time_s, r.merge_time_s), 1) << " / "
+         << fmt(reduction_pct(b.merge_time_s, k.merge_time_s), 1) << " | "
+         << fmt(reduction_pct(b.path_length_m, r.path_length_m), 1) << " / "
+         << fmt(reduction_pct(b.path_length_m, k.path_length_m), 1) << " | " << (b.collision ? "yes" : "no") << "/"
+         << (r.collision ? "yes" : "no") << "/" << (k.collision ? "yes" : "no") << " |\n";
+    }
+  }
   md << "\nFigures: [fig4_paths.svg](fig4_paths.svg) (X–Y paths, cf. paper Fig. 4) and "
         "[fig5_motion.svg](fig5_motion.svg) (sideslip, yaw, obstacle speed, ego speed, cf. paper Fig. 5). "
         "All numbers: [metrics.json](metrics.json).\n\n## Planner decisions\n\n";

@@ -22,12 +22,23 @@ struct PaperRun {
   PaperMetrics metrics;
 };
 
+// The experiment repeated with the first main-lane vehicle moved by dx_m and its speed (and
+// desired speed) changed by dv_mps, to show how much the comparison depends on our choice of
+// the scenario, which the paper does not publish.
+struct SensitivityCase {
+  double dx_m = 0.0, dv_mps = 0.0;
+  std::vector<PaperMetrics> metrics;  // in kPaperPlanners order
+};
+
 struct PaperExperiment {
   Scenario scenario;
   std::string scenario_path;
   std::vector<PaperRun> runs;  // in kPaperPlanners order
+  std::vector<SensitivityCase> sensitivity;
 };
 
+// Runs the three planners on s and, when s has a main-lane vehicle, the sensitivity grid
+// dx in {-12, -6, 0, 6, 12} m x dv in {-2, 0, 2} m/s.
 PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scenario_path);
 
 // {"planners": {name: metrics}, "merge_time_saving_pct": {"rcpp": x, "rcpp-coop": y},

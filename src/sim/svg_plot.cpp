@@ -34,8 +34,10 @@ std::string num(double v) {
 
 std::string tick_label(double v, double step) {
   char buf[32];
-  const int decimals = step >= 1.0 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
-  std::snprintf(buf, sizeof buf, "%.*f", std::min(decimals, 6), std::abs(v) < step * 1e-9 ? 0.0 : v);
+  int decimals = 0;  // as many as the step needs: 2.5 -> 1, 0.02 -> 2
+  for (double scaled = step; decimals < 6 && std::abs(scaled - std::round(scaled)) > 1e-6 * scaled; scaled *= 10.0)
+    ++decimals;
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < step * 1e-9 ? 0.0 : v);
   return buf;
 }
 
@@ -113,17 +115,27 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
     if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
     out << "/>\n";
   }
-  // Legend, top right inside the axes.
-  int row = 0;
-  for (const Series& s : p.series) {
-    if (s.label.empty()) continue;
-    const double ly = y1 + 12 + 16 * row++;
-    const double lx = x1 - 190;
-    out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 28) << "\" y2=\"" << num(ly)
-        << "\" stroke=\"" << s.colour << "\" stroke-width=\"" << num(s.width_px + 0.4) << "\"";
-    if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
-    out << "/>\n<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">" << escape(s.label)
-        << "</text>\n";
+  // Legend inside the axes, on a white box so that it stays readable over the data.
+  int entries = 0;
+  for (const Series& s : p.series) entries += s.label.empty() ? 0 : 1;
+  if (entries > 0) {
+    constexpr double kBoxW = 200.0, kRowH = 16.0;
+    const double box_h = 8.0 + kRowH * entries;
+    const bool right = p.legend == LegendCorner::kTopRight || p.legend == LegendCorner::kBottomRight;
+    const bool top = p.legend == LegendCorner::kTopRight || p.legend == LegendCorner::kTopLeft;
+    const double bx = right ? x1 - kBoxW - 6 : x0 + 6, by = top ? y1 + 6 : y0 - box_h - 6;
+    out << "<rect x=\"" << num(bx) << "\" y=\"" << num(by) << "\" width=\"" << num(kBoxW) << "\" height=\""
+        << num(box_h) << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#bbb\"/>\n";
+    int row = 0;
+    for (const Series& s : p.series) {
+      if (s.label.empty()) continue;
+      const double ly = by + 12 + kRowH * row++, lx = bx + 6;
+      out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 28) << "\" y2=\"" << num(ly)
+          << "\" stroke=\"" << s.colour << "\" stroke-width=\"" << num(s.width_px + 0.4) << "\"";
+      if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
+      out << "/>\n<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">" << escape(s.label)
+          << "</text>\n";
+    }
   }
   out << "</g>\n";
 }

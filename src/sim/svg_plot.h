@@ -24,6 +24,8 @@ struct Band {
   std::string colour = "#f2e6b3";
 };
 
+enum class LegendCorner { kTopRight, kBottomRight, kTopLeft, kBottomLeft };
+
 struct Range {
   double lo = 0.0, hi = 1.0;
 };
@@ -36,6 +38,7 @@ struct Plot {
   std::vector<Band> bands;
   std::optional<Range> x_range;    // default: data extent
   std::optional<Range> y_range;    // default: data extent with 5 % padding
+  LegendCorner legend = LegendCorner::kTopRight;  // inside the axes, on a white box
   int width_px = 640;
   int height_px = 360;
 };

@@ -53,11 +53,30 @@ CoopContext coop_context(const WorldSnapshot& w) {
 // the side lane's end minus half the ego length (DESIGN §2: never pass the end in the side lane).
 double side_exit_limit_x_m(const Scenario& s) { return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m; }
 
+// Peak lateral acceleration along a sigmoid driven with a speed profile: max of v(x)^2 |y''(x)| over
+// kComfortSamples points within +-kComfortSpan/kappa of P_c, y'' = W kappa^2 s(1-s)(1-2s) for the
+// logistic s (RCPP §II-C; equals the constant-speed bound v^2 W kappa^2/(6 sqrt 3) at fixed v).
+constexpr int kComfortSamples = 40;
+constexpr double kComfortSpan = 4.0;
+double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, double ramp_origin_x_m) {
+  double peak = 0.0;
+  for (int i = 0; i <= kComfortSamples; ++i) {
+    const double u = kComfortSpan * (2.0 * i / kComfortSamples - 1.0);  // kappa (x - P_c)
+    const double x = sig.pc_m + u / sig.kappa_per_m;
+    const double sgm = 1.0 / (1.0 + std::exp(-u));
+    const double ypp = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * sgm * (1.0 - sgm) * std::abs(1.0 - 2.0 * sgm);
+    const double v = ramp.speed_at_distance_mps(std::max(0.0, x - ramp_origin_x_m));
+    peak = std::max(peak, v * v * ypp);
+  }
+  return peak;
+}
+
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
-// start_x_m), completes by complete_by_x_m, leaves the side lane before its end, and respects the
-// comfort bound at peak_speed_mps and the configured [kappa_min, kappa_max].
+// start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak
+// lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
+// bound, and lies in the configured [kappa_min, kappa_max].
 KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
-                           double peak_speed_mps) {
+                           const SpeedRamp& ramp, double ramp_origin_x_m) {
   const PlannerParams& p = s.params.planner;
   const double before_m = pc_m - start_x_m;
   const double after_m = complete_by_x_m - pc_m;
@@ -66,10 +85,14 @@ KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, dou
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
                               half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
-  const double hi = std::min(p.kappa_max_per_m,
-                             kappa_comfort_max_per_m(peak_speed_mps, s.road.lane_width_m, p.lat_accel_comfort_mps2));
-  if (lo > hi) return std::nullopt;
-  return std::make_pair(lo, hi);
+  if (lo > p.kappa_max_per_m) return std::nullopt;
+  const auto comfort_margin = [&](double kappa) {
+    const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
+    return p.lat_accel_comfort_mps2 - peak_lat_accel_along_mps2(sig, ramp, ramp_origin_x_m);
+  };
+  const auto hi = highest_satisfying(comfort_margin, lo, p.kappa_max_per_m, 1e-5);
+  if (!hi) return std::nullopt;
+  return std::make_pair(lo, *hi);
 }
 
 // Potential field cost of a candidate path (docs/planner.md): the mean of RCPP eq. (3)-(5) over
@@ -158,7 +181,8 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     const double v_traffic = gap_traffic_speed_mps(gap, v_e);
     const auto kappa_range = [&](double pc) {
       const double v = v_of_pc(pc);
-      return kappa_range_for(s, pc, ctx.ego_x_m, ctx.ego_x_m + ctx.ramp_to(v).distance_at_m(rho_s), std::max(v_e, v));
+      return kappa_range_for(s, pc, ctx.ego_x_m, ctx.ego_x_m + ctx.ramp_to(v).distance_at_m(rho_s), ctx.ramp_to(v),
+                             ctx.ego_x_m);
     };
     const auto cost = [&](double pc, double kappa) {
       const double v = v_of_pc(pc);
@@ -249,10 +273,10 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   if (pc < pc_min || pc > pc_max) return std::nullopt;  // P_c bounds cross: abort (RCPP §II-C)
   const double start_x = c.ego_x_m + coop_ego_travel_m(c, k);
   const double complete_by_x = pc + v_after * 0.5 * c.merge_duration_s;
-  const auto kappa_range = [&](double pc_m) {
-    return kappa_range_for(s, pc_m, start_x, complete_by_x, std::max(c.ego_speed_mps, v_after));
-  };
   const SpeedRamp ramp{c.ego_speed_mps, v_after, c.ego_limits.accel_max_mps2, c.ego_limits.brake_min_mps2};
+  const auto kappa_range = [&](double pc_m) {
+    return kappa_range_for(s, pc_m, start_x, complete_by_x, ramp, c.ego_x_m);
+  };
   const auto partner_x = [&](const ObservedVehicle& v, double t) {
     if (v.id != o.id) return constant_speed_x(v, t);
     const SpeedRamp r{o.speed_mps, vo.vo_star_mps, std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9,
@@ -321,6 +345,7 @@ double standstill_merge_length_m(const Scenario& s) {
 
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, std::string* why) {
   for (const double factor : kMergeDurationFactors) {
+    if (factor > 1.0 && ego_speed_mps(w) >= kStandstillMergeSpeedMps) break;  // slow merges only
     std::string this_why;
     if (auto plan = plan_definition1_rho(w, factor * w.scenario->params.planner.merge_duration_s, &this_why))
       return plan;
@@ -410,8 +435,10 @@ PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
   PlanOutput out;
   out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM, kPathStepM);
   double target = merge_->target_speed_mps;
-  if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m))
-    target = std::min(target, rss_follow_speed_mps(w, *leader));
+  // Past P_c the ego is in the main lane: it also keeps its RSS distance to the vehicle ahead.
+  if (w.ego.x_m >= merge_->sigmoid.pc_m)
+    if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m))
+      target = std::min(target, rss_follow_speed_mps(w, *leader));
   out.target_speed_mps = target;
   out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
   out.decision = merge_->decision;

@@ -15,8 +15,9 @@
 
 namespace mg {
 
-// Merge durations tried, as multiples of rho_m: rho_m itself first; longer ones only admit slow
-// merges (from standstill) whose comfortable sigmoid does not fit in rho_m (docs/planner.md).
+// Merge durations tried, as multiples of rho_m: rho_m itself first; longer ones only while the ego
+// is slower than kStandstillMergeSpeedMps (merging from standstill after Def. 1.3), whose
+// comfortable sigmoid does not fit in rho_m (docs/planner.md).
 inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
 // A committed merge may be aborted (P_c bounds crossed) only while the ego has covered less than
 // this fraction of the lateral offset; later it completes, protected by the RSS override.

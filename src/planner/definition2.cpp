@@ -45,6 +45,12 @@ double ineq3_margin_m(const CoopContext& c, const MainLaneVehicle& responder, do
   return coop_pc_m(c, CoopCase::kEgoAhead) - d_lon_star_m(c, responder, vo_star_mps) - responder_x_m;
 }
 
+double ineq3_start_margin_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps) {
+  const double responder_x_m = responder.x_m + 0.5 * (responder.speed_mps + vo_star_mps) * c.comm_threshold_s;
+  return c.ego_x_m + coop_ego_travel_m(c, CoopCase::kEgoAhead) - d_lon_star_m(c, responder, vo_star_mps) -
+         responder_x_m;
+}
+
 // RCPP ineq. (4); Def. 2.2 B.
 double ineq4_margin_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps) {
   const double responder_side_m = responder.x_m + 0.5 * (vo_star_mps + responder.speed_mps) * c.comm_threshold_s -
@@ -67,7 +73,9 @@ VoStar solve_vo_star(const CoopContext& c, const MainLaneVehicle& responder, Coo
   out.pc_m = coop_pc_m(c, k);
   std::optional<double> vo;
   if (k == CoopCase::kEgoAhead) {
-    vo = highest_satisfying([&](double v) { return ineq3_margin_m(c, responder, v); }, domain.lo_mps, domain.hi_mps);
+    vo = highest_satisfying(
+        [&](double v) { return std::min(ineq3_margin_m(c, responder, v), ineq3_start_margin_m(c, responder, v)); },
+        domain.lo_mps, domain.hi_mps);
     if (vo) out.d_lon_star_m = d_lon_star_m(c, responder, *vo);
   } else {
     vo = lowest_satisfying([&](double v) { return ineq4_margin_m(c, responder, v); }, domain.lo_mps, domain.hi_mps);

@@ -39,6 +39,12 @@ double d_lon_star_m(const CoopContext& c, const MainLaneVehicle& responder, doub
 //   P_c - D*_lon - [X_o + (v_o + v_o*)/2 rho_c + v_o* rho_m/2]. Non-increasing in v_o*.
 double ineq3_margin_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps);
 
+// Conservative addition to ineq. (3) (docs/planner.md): the ego's lateral motion starts at
+// T_dec + rho_c, so the same RSS distance must already hold then:
+//   X + ego travel during rho_c - D*_lon - [X_o + (v_o + v_o*)/2 rho_c]. Non-increasing in v_o*.
+// solve_vo_star requires both this and ineq. (3), so every v_o* it returns satisfies ineq. (3).
+double ineq3_start_margin_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps);
+
 // RCPP ineq. (4); Def. 2.2 B. Margin (m, >= 0 holds):
 //   [X_o + (v_o* + v_o)/2 rho_c - D_lon] - [X + ego travel during rho_c], D_lon with the ego as
 //   the rear vehicle at its post-exchange speed and the responder in front at v_o*.

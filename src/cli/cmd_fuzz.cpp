@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <map>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -13,8 +14,10 @@
 #include "cli/command.h"
 #include "fuzz/campaign.h"
 #include "fuzz/campaign_report.h"
+#include "fuzz/corpus_case.h"
 #include "planner/planner.h"
 #include "rules/check.h"
+#include "rules/report_json.h"
 
 namespace mg::cli {
 namespace {
@@ -73,6 +76,19 @@ void parse_shard(const std::string& text, fuzz::CampaignOptions& o) {
   o.shard_count = n;
 }
 
+// A liability report (rules/report_*.h) per new corpus case, in DIR/cases/<case name>/;
+// returns case path -> report.html relative to DIR.
+std::map<std::string, std::string> write_liability_reports(const std::string& dir, const fuzz::CampaignResult& r) {
+  std::map<std::string, std::string> links;
+  for (const std::string& path : r.new_cases) {
+    const fuzz::CorpusCase c = fuzz::load_case(path);
+    const std::string rel = "cases/" + c.signature.file_stem();
+    write_check_reports(dir + "/" + rel, c.scenario, check_scenario(c.scenario, c.signature.planner));
+    links[path] = rel + "/report.html";
+  }
+  return links;
+}
+
 void print_human(const fuzz::CampaignResult& r) {
   std::cout << r.scenarios << " scenarios in " << r.seconds << " s (" << r.scenarios_per_second() << "/s)"
             << (r.interrupted ? ", interrupted" : "") << ": " << r.failing_scenarios << " failing, "
@@ -120,7 +136,7 @@ int run_fuzz(const std::vector<std::string>& args) {
   o.on_progress = progress_printer(::isatty(STDERR_FILENO) != 0);
   const fuzz::CampaignResult result = fuzz::run_campaign(o, make_check);
   if (::isatty(STDERR_FILENO)) std::cerr << "\n";
-  if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, {});
+  if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, write_liability_reports(report_dir, result));
   if (json) std::cout << fuzz::campaign_summary_json(o, result).dump(2) << "\n";
   else print_human(result);
   return result.failing_scenarios > 0 ? kExitViolation : kExitOk;

@@ -1,5 +1,6 @@
 #include "rules/definition1_monitor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -67,8 +68,12 @@ MonitorOutput monitor_gap_inequality(const MonitorContext& ctx, GapSide side) {
     const TraceStep& st = ctx.trace.steps[step];
     const double ve_star = std::isfinite(d.ve_star_mps) ? d.ve_star_mps : speed_of(st.ego);
     const VehicleState& o = state_of(st, static_cast<std::size_t>(k));
-    const double m = side == GapSide::kFollower ? def1_1_margin_m(s, st.ego, k, o, ve_star, e.merge_duration_s)
-                                                : def1_2_margin_m(s, st.ego, k, o, ve_star, e.merge_duration_s);
+    // Ineq. (2) must hold over the whole interval [T_dec, T_dec + rho] ("c_e is behind c_o^i"):
+    // checked at its midpoint and its end, so a "leader" still behind the ego does not qualify.
+    const double m = side == GapSide::kFollower
+                         ? def1_1_margin_m(s, st.ego, k, o, ve_star, e.merge_duration_s)
+                         : std::min(def1_2_margin_m(s, st.ego, k, o, ve_star, e.merge_duration_s),
+                                    def1_2_margin_m(s, st.ego, k, o, ve_star, e.merge_duration_s / 2.0));
     if (acc.record(step, d.time_s, m, kEgoId, 0.0, m)) {
       std::ostringstream os;
       os << "ego decided a Def. 1 merge at t = " << d.time_s << " s with v_e* = " << ve_star << " m/s although "

@@ -28,9 +28,11 @@ std::vector<CoopExchange> coop_exchanges(const Trace& t) {
 
 namespace {
 
-double merge_complete_time(const Trace& t) {
+// The ego's first merge midpoint after time_s: from then on the ego is in the lane and the
+// RSS rules, not Definition 2, govern the pair.
+double merge_midpoint_after(const Trace& t, double time_s) {
   for (const TraceEvent& e : t.events) {
-    if (e.kind == EventKind::kMergeComplete && e.vehicle_id == kEgoId) return e.time_s;
+    if (e.kind == EventKind::kMergeMidpoint && e.vehicle_id == kEgoId && e.time_s >= time_s) return e.time_s;
   }
   return std::numeric_limits<double>::infinity();
 }
@@ -43,7 +45,6 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
   const bool ahead = which == CoopCase::kEgoAhead;
   MarginAccumulator acc(ahead ? "def2_1b_responder" : "def2_2b_responder", steps.size());
   const double rho_c = s.params.planner.comm_threshold_s;
-  const double end_cap = merge_complete_time(ctx.trace);
   const double tol = ctx.params.speed_tolerance_mps;
   for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
     if (x.request->coop_case != which || x.accept_time_s < 0.0 || steps.empty()) continue;
@@ -56,7 +57,8 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
     const std::size_t first = step_at(ctx.trace, x.accept_time_s);
     const double v0 = speed_of(state_of(steps[first], k));
     const double deadline = x.request_time_s + rho_c + s.params.rss.response_time_s;
-    const double end = std::min(end_cap, x.request_time_s + rho_c + s.params.planner.merge_duration_s);
+    const double end = std::min(merge_midpoint_after(ctx.trace, x.accept_time_s),
+                                x.request_time_s + rho_c + s.params.planner.merge_duration_s);
     bool reached = false;
     for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end; ++i) {
       const double t = steps[i].time_s;

@@ -100,13 +100,13 @@ void assign_liability(CheckResult& r) {
   }
   r.collision = collision != nullptr;
   if (collision) {
-    // The obligation broken first, at or before the collision (the last safe moment + T).
+    // The obligation broken last at or before the collision: the danger that led to it.
     const RuleResult* cause = nullptr;
     for (const auto& rule : r.rules) {
       if (rule.holds || rule.liable_id == kNobody ||
           *rule.first_violation_time_s > *collision->first_violation_time_s + 1e-9)
         continue;
-      if (!cause || *rule.first_violation_time_s < *cause->first_violation_time_s) cause = &rule;
+      if (!cause || *rule.first_violation_time_s > *cause->first_violation_time_s) cause = &rule;
     }
     r.collision_liable_id = cause ? cause->liable_id : kNobody;
     if (!cause) first = nullptr;

@@ -29,8 +29,8 @@ double acceptance_time(const Trace& t, int partner_id, double time_s);
 
 // Fills r.liable_id, r.liability_detail and r.collision_liable_id from the rule results
 // (whose liable parties the monitors already set): the earliest broken obligation wins; a
-// collision takes the liable party of the collision rule, and with nobody liable the
-// finding is stated and the check fails.
+// collision is blamed on the latest obligation broken at or before it (the danger that led to
+// it), and with nobody liable the finding is stated and the check fails.
 void assign_liability(CheckResult& r);
 
 }  // namespace mg

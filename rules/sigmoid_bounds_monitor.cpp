@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/rss.h"
+#include "rules/definition2_monitor.h"
 
 namespace mg {
 namespace {
@@ -37,6 +38,20 @@ int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t l
       return party_of(ctx.scenario, follower);
     if (leader > 0 && state_of(st, leader).accel_mps2 < -(limits_of(ctx.scenario, leader).brake_max_mps2 + tol))
       return party_of(ctx.scenario, leader);
+  }
+  return kNobody;
+}
+
+// The responder k if it accepted a Def. 2 request before time_s and is, at time_s, still
+// farther than the yield tolerance from the v_o* it accepted (Def. 2.1B / 2.2B), else kNobody.
+int reneging_responder(const MonitorContext& ctx, std::size_t k, double time_s) {
+  const int id = party_of(ctx.scenario, k);
+  const double v = speed_of(state_of(ctx.trace.steps[step_at(ctx.trace, time_s)], k));
+  for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
+    if (x.request->to_id != id || x.accept_time_s < 0.0 || x.accept_time_s > time_s) continue;
+    const double v_star = x.request->target_speed_mps;
+    const double tol = ctx.params.yield_speed_tolerance_mps;
+    if (x.request->coop_case == CoopCase::kEgoAhead ? v > v_star + tol : v < v_star - tol) return id;
   }
   return kNobody;
 }
@@ -101,7 +116,8 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     if (!std::isfinite(m)) continue;
     int liable = kEgoId;
     if (m < 0.0) {
-      const int breaker = limit_breaker(ctx, follower, leader, decision_time_before(s, ctx.trace, e.time_s), e.time_s);
+      int breaker = limit_breaker(ctx, follower, leader, decision_time_before(s, ctx.trace, e.time_s), e.time_s);
+      if (breaker == kNobody && worst > 0) breaker = reneging_responder(ctx, worst, e.time_s);
       if (breaker != kNobody) liable = breaker;
     }
     if (acc.record(i, e.time_s, m, liable, required, actual)) {
@@ -109,7 +125,7 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       os << "at the merge midpoint (t = " << e.time_s << " s, X = " << st.ego.x_m << " m) the ego was " << -m
          << " m inside the safe distance of "
          << party_name(party_of(s, worst));
-      if (liable != kEgoId) os << ", after " << party_name(liable) << " broke its declared limit";
+      if (liable != kEgoId) os << ", after " << party_name(liable) << " broke its declared limit or its accepted v_o*";
       acc.set_detail(os.str());
     }
   }

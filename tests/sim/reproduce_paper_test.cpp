@@ -1,0 +1,81 @@
+// `mergeguard reproduce-paper` end to end (issue #4): the files appear and the metrics are
+// internally consistent — computed by the run, never written down here.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(ReproducePaper, WritesConsistentMetricsFiguresAndReport) {
+  const char* cli = std::getenv("MG_CLI");
+  if (cli == nullptr) GTEST_SKIP() << "MG_CLI not set (run through ctest)";
+  const fs::path out = fs::temp_directory_path() / ("mg_paper_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const std::string cmd = std::string(cli) + " reproduce-paper --out " + out.string() + " --scenario " +
+                          MG_SOURCE_DIR "/corpus/scenarios/paper_merge.json > " + (out.string() + ".log") + " 2>&1";
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 0) << read(out.string() + ".log");
+
+  const nlohmann::json m = nlohmann::json::parse(read(out / "metrics.json"));
+  for (const char* planner : {"tripfield", "rcpp", "rcpp-coop"}) {
+    const auto& p = m.at("planners").at(planner);
+    EXPECT_TRUE(p.at("merged").get<bool>()) << planner;
+    EXPECT_FALSE(p.at("collision").get<bool>()) << planner;
+    EXPECT_LE(p.at("sideslip_min_rad").get<double>(), p.at("sideslip_max_rad").get<double>());
+    EXPECT_LE(p.at("ego_speed_min_mps").get<double>(), p.at("ego_speed_max_mps").get<double>());
+    EXPECT_GE(p.at("obstacle_speed_min_mps").get<double>(), 0.0);
+    EXPECT_GE(p.at("path_length_m").get<double>(), 0.0);
+  }
+  const auto& tf = m["planners"]["tripfield"];
+  for (const char* rcpp : {"rcpp", "rcpp-coop"}) {
+    const auto& p = m["planners"][rcpp];
+    EXPECT_LE(p["merge_time_s"].get<double>(), tf["merge_time_s"].get<double>()) << rcpp;
+    EXPECT_LE(p["path_length_m"].get<double>(), tf["path_length_m"].get<double>()) << rcpp;
+    EXPECT_EQ(p["lateral_reversals"].get<int>(), 0) << rcpp << " oscillates";
+    const double saving = m.at("merge_time_saving_pct").at(rcpp).get<double>();
+    const double expected = 100.0 * (tf["merge_time_s"].get<double>() - p["merge_time_s"].get<double>()) /
+                            tf["merge_time_s"].get<double>();
+    EXPECT_NEAR(saving, expected, 1e-9);
+    EXPECT_GE(m.at("path_length_reduction_pct").at(rcpp).get<double>(), 0.0);
+  }
+  for (const char* svg : {"fig4_paths.svg", "fig5_motion.svg"}) {
+    const std::string text = read(out / svg);
+    EXPECT_NE(text.find("<svg"), std::string::npos) << svg;
+    EXPECT_NE(text.find("RCPP cooperative"), std::string::npos) << svg << " has a legend";
+  }
+  const std::string report = read(out / "report.md");
+  EXPECT_NE(report.find("72.3 %"), std::string::npos) << "the paper's figure is in the table";
+  EXPECT_NE(report.find("Merge time"), std::string::npos);
+  fs::remove_all(out);
+  fs::remove(out.string() + ".log");
+}
+
+TEST(ReproducePaper, MissingScenarioIsBadInput) {
+  const char* cli = std::getenv("MG_CLI");
+  if (cli == nullptr) GTEST_SKIP() << "MG_CLI not set (run through ctest)";
+  const std::string cmd = std::string(cli) + " reproduce-paper --scenario /nonexistent.json --out " +
+                          (fs::temp_directory_path() / "mg_paper_none").string() + " > /dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+}
+
+}  // namespace

@@ -88,8 +88,6 @@ std::vector<PaperRun> run_planners(const Scenario& s) {
   return runs;
 }
 
-std::string yes_no(bool reproduced) { return reproduced ? "**yes**" : "**no**"; }
-
 }  // namespace
 
 PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scenario_path) {
@@ -270,52 +268,57 @@ std::string paper_report_markdown(const PaperExperiment& e) {
         "rectangles overlap at some step. The paper does not define its merge time and path length; these are "
         "our readings.\n\n"
      << "## Paper vs. ours\n\n"
-     << "| What | Paper | Ours | Reproduced |\n|---|---|---|---|\n"
-     << "| Merge-time saving of RCPP vs. TriPField | 72.3 % | non-coop " << fmt(save_nc, 1) << " %, coop "
-     << fmt(save_co, 1) << " % | "
-     << (save_nc && save_co && *save_nc > 0 && *save_co > 0
-             ? (within(save_nc, 72.3, 10.0) || within(save_co, 72.3, 10.0) ? "**yes**" : "direction yes, size differs")
-             : "**no**")
-     << " |\n"
-     << "| Path-length reduction of RCPP vs. TriPField | 53.4 % | non-coop " << fmt(len_nc, 1) << " %, coop "
-     << fmt(len_co, 1) << " % | "
-     << (len_nc && len_co && *len_nc > 0 && *len_co > 0
-             ? (within(len_nc, 53.4, 10.0) || within(len_co, 53.4, 10.0) ? "**yes**" : "direction yes, size differs")
-             : "**no**")
-     << " |\n"
-     << "| RCPP trajectories do not oscillate | no oscillation | lateral reversals: non-coop " << nc.lateral_reversals
-     << ", coop " << co.lateral_reversals << " | " << yes_no(nc.lateral_reversals == 0 && co.lateral_reversals == 0)
-     << " |\n"
-     << "| TriPField weaves before merging | weaving | lateral reversals " << tf.lateral_reversals << " | "
-     << yes_no(tf.lateral_reversals > 0) << " |\n"
-     << "| TriPField merge point | X ≈ 226 m | X = " << fmt(tf.merge_x_m, 1) << " m (centre crosses the lane marking) | "
-     << yes_no(within(tf.merge_x_m, 226.0, 25.0)) << " |\n"
-     << "| TriPField sideslip | oscillates within ±0.02 rad (7.6–9.7 s) | " << fmt(tf.sideslip_min_rad, 4) << " … "
-     << fmt(tf.sideslip_max_rad, 4) << " rad | "
-     << yes_no(tf.sideslip_max_rad <= 0.02 && tf.sideslip_min_rad >= -0.02 && tf.lateral_reversals > 0) << " |\n"
-     << "| TriPField: obstacle speed minimum | below 10 m/s | " << fmt(tf.obstacle_speed_min_mps, 1) << " m/s | "
-     << yes_no(tf.obstacle_speed_min_mps < 10.0) << " |\n"
-     << "| TriPField: ego speed minimum | below 9 m/s | " << fmt(tf.ego_speed_min_mps, 1) << " m/s | "
-     << yes_no(tf.ego_speed_min_mps < 9.0) << " |\n"
-     << "| Non-coop RCPP sideslip | −0.012 … 0.016 rad | " << fmt(nc.sideslip_min_rad, 4) << " … "
-     << fmt(nc.sideslip_max_rad, 4) << " rad | "
-     << yes_no(nc.sideslip_min_rad >= -0.02 && nc.sideslip_max_rad <= 0.02) << " (same order) |\n"
-     << "| Non-coop RCPP ego speed | briefly 30 m/s, then 20 m/s | " << fmt(nc.ego_speed_min_mps, 1) << " … "
-     << fmt(nc.ego_speed_max_mps, 1) << " m/s | " << yes_no(nc.ego_speed_max_mps > 27.0) << " |\n"
-     << "| Non-coop RCPP: obstacle speed minimum | about 16 m/s, gradual | " << fmt(nc.obstacle_speed_min_mps, 1)
-     << " m/s (first braking " << fmt(nc_brake_s, 1) << " s) | " << yes_no(within(nc.obstacle_speed_min_mps, 16.0, 2.0))
-     << " |\n"
-     << "| Coop RCPP sideslip peak | 0.024 rad at 7.1 s | " << fmt(co_peak, 4) << " rad at " << fmt(co_peak_t, 1)
-     << " s | " << yes_no(std::abs(co_peak) <= 0.03 && std::abs(co_peak) > std::abs(nc.sideslip_max_rad)) << " (peak above non-coop's) |\n"
-     << "| Coop RCPP ego speed | steady | " << fmt(co.ego_speed_min_mps, 1) << " … " << fmt(co.ego_speed_max_mps, 1)
-     << " m/s | " << yes_no(co.ego_speed_max_mps - co.ego_speed_min_mps < 2.0) << " |\n"
-     << "| Coop RCPP: obstacle slows early, after the message | early deceleration | request delivered at "
-     << fmt(co_request_s, 2) << " s, obstacle brakes from " << fmt(co_brake_s, 2) << " s, minimum "
-     << fmt(co.obstacle_speed_min_mps, 1) << " m/s | "
-     << yes_no(co_request_s && co_brake_s && *co_brake_s >= *co_request_s && (!nc_brake_s || *co_brake_s < *nc_brake_s))
-     << " |\n\n"
-     << "\"Reproduced\" is judged mechanically from the numbers above: percentages within 10 points, the merge point "
-        "within 25 m, speeds within 2 m/s of the paper's; qualitative rows by the stated criterion. Absolute "
+     << "| What | Paper | Ours | Reproduced | Criterion |\n|---|---|---|---|---|\n";
+  auto verdict = [&](const std::string& what, const std::string& paper, const std::string& ours, bool yes,
+                     const std::string& criterion) {
+    md << "| " << what << " | " << paper << " | " << ours << " | " << (yes ? "**yes**" : "**no**") << " | " << criterion
+       << " |\n";
+  };
+  auto pct_pair = [](const std::optional<double>& a, const std::optional<double>& b) {
+    return "non-coop " + fmt(a, 1) + " %, coop " + fmt(b, 1) + " %";
+  };
+  verdict("Merge-time saving of RCPP vs. TriPField", "72.3 %", pct_pair(save_nc, save_co),
+          within(save_nc, 72.3, 10.0) || within(save_co, 72.3, 10.0), "a variant within 10 points");
+  verdict("Path-length reduction of RCPP vs. TriPField", "53.4 %", pct_pair(len_nc, len_co),
+          within(len_nc, 53.4, 10.0) || within(len_co, 53.4, 10.0), "a variant within 10 points");
+  verdict("RCPP is faster and shorter than TriPField", "yes", pct_pair(save_nc, save_co) + " / " + pct_pair(len_nc, len_co),
+          save_nc > 0.0 && save_co > 0.0 && len_nc > 0.0 && len_co > 0.0, "all four savings > 0");
+  verdict("RCPP trajectories do not oscillate", "no oscillation",
+          "lateral reversals: non-coop " + std::to_string(nc.lateral_reversals) + ", coop " +
+              std::to_string(co.lateral_reversals),
+          nc.lateral_reversals == 0 && co.lateral_reversals == 0, "0 reversals each");
+  verdict("TriPField weaves before merging", "weaving", "lateral reversals " + std::to_string(tf.lateral_reversals),
+          tf.lateral_reversals > 0, "at least 1 reversal");
+  verdict("TriPField merge point", "X ≈ 226 m", "X = " + fmt(tf.merge_x_m, 1) + " m", within(tf.merge_x_m, 226.0, 25.0),
+          "within 25 m (centre crossing the lane marking)");
+  verdict("TriPField sideslip", "oscillates within ±0.02 rad (7.6–9.7 s)",
+          fmt(tf.sideslip_min_rad, 4) + " … " + fmt(tf.sideslip_max_rad, 4) + " rad",
+          tf.sideslip_max_rad <= 0.02 && tf.sideslip_min_rad >= -0.02 && tf.lateral_reversals > 0,
+          "within ±0.02 rad and weaving");
+  verdict("TriPField: obstacle speed minimum", "below 10 m/s", fmt(tf.obstacle_speed_min_mps, 1) + " m/s",
+          tf.obstacle_speed_min_mps < 10.0, "below 10 m/s");
+  verdict("TriPField: ego speed minimum", "below 9 m/s", fmt(tf.ego_speed_min_mps, 1) + " m/s", tf.ego_speed_min_mps < 9.0,
+          "below 9 m/s");
+  verdict("Non-coop RCPP sideslip", "−0.012 … 0.016 rad", fmt(nc.sideslip_min_rad, 4) + " … " + fmt(nc.sideslip_max_rad, 4) + " rad",
+          nc.sideslip_min_rad >= -0.02 && nc.sideslip_max_rad <= 0.02, "within ±0.02 rad");
+  verdict("Non-coop RCPP ego speed", "briefly 30 m/s, then 20 m/s",
+          fmt(nc.ego_speed_min_mps, 1) + " … " + fmt(nc.ego_speed_max_mps, 1) + " m/s", nc.ego_speed_max_mps > 27.0,
+          "peak above 27 m/s");
+  verdict("Non-coop RCPP: obstacle slows gradually", "to about 16 m/s",
+          "minimum " + fmt(nc.obstacle_speed_min_mps, 1) + " m/s, first braking at " + fmt(nc_brake_s, 1) + " s",
+          nc_brake_s.has_value() && within(nc.obstacle_speed_min_mps, 16.0, 2.0), "brakes, minimum within 2 m/s of 16");
+  verdict("Coop RCPP sideslip peak", "0.024 rad at 7.1 s", fmt(co_peak, 4) + " rad at " + fmt(co_peak_t, 1) + " s",
+          std::abs(co_peak) <= 0.03 && std::abs(co_peak) > std::max(std::abs(nc.sideslip_min_rad), std::abs(nc.sideslip_max_rad)),
+          "larger than non-coop's peak, at most 0.03 rad");
+  verdict("Coop RCPP ego speed", "steady", fmt(co.ego_speed_min_mps, 1) + " … " + fmt(co.ego_speed_max_mps, 1) + " m/s",
+          co.ego_speed_max_mps - co.ego_speed_min_mps < 2.0, "range below 2 m/s");
+  verdict("Coop RCPP: obstacle slows early, after the message", "early deceleration",
+          "request delivered at " + fmt(co_request_s, 2) + " s, obstacle brakes from " + fmt(co_brake_s, 2) +
+              " s, minimum " + fmt(co.obstacle_speed_min_mps, 1) + " m/s",
+          co_request_s && co_brake_s && *co_brake_s >= *co_request_s && (!nc_brake_s || *co_brake_s < *nc_brake_s),
+          "brakes after the request, earlier than in the non-coop run");
+  md << "\n"
+     << "\"Reproduced\" is judged mechanically by the criterion in the last column. Absolute "
         "values depend on the scenario, which the paper does not publish, and on the baseline, of which no code "
         "exists (see docs/planner.md).\n\n"
      << "## Our measurements\n\n"

@@ -1,0 +1,124 @@
+#include "rules/definition2_monitor.h"
+
+#include <gtest/gtest.h>
+
+#include "trace_builder.h"
+
+namespace mg {
+namespace {
+
+using test::base_scenario;
+using test::constant_accel_trace;
+using test::message_event;
+using test::vehicle;
+
+// The ego (X = 0, 20 m/s) and vehicle 1 (X = -25 m, 20 m/s); rho_c = 1 s, T = 0.5 s.
+Scenario coop_scenario() {
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -25.0, 20.0)};
+  return s;
+}
+
+// Request at t = 0 (Def. 2.1, v_o* = 16 m/s), acceptance sent at t = 0.1 s.
+Trace with_exchange(Trace t, CoopCase c, double target, double d_star = 30.0, double pc = 50.0) {
+  t.events.push_back(message_event(0.0, MessageType::kRequest, 0, 1, c, pc, d_star, target));
+  t.events.push_back(message_event(0.1, MessageType::kAccept, 1, 0, c, pc, d_star, target));
+  return t;
+}
+
+TEST(Def2Monitor, RequestMarginIsTheSmallerOfPcAheadAndDstarOverContact) {
+  // P_c 50 m ahead of the ego at X = 0; D*_lon = 30 m against contact (4.8 + 4.8)/2 = 4.8 m:
+  // margin = min(50, 25.2) = 25.2 m. With D*_lon = 3 m: 3 - 4.8 = -1.8 m, the ego liable.
+  const Scenario s = coop_scenario();
+  const MonitorOutput ok = test::run(monitor_def2_1a_request, s, with_exchange(constant_accel_trace(s, 1.0), CoopCase::kEgoAhead, 16.0));
+  EXPECT_NEAR(ok.result.min_margin, 25.2, 1e-9);
+  const MonitorOutput bad =
+      test::run(monitor_def2_1a_request, s, with_exchange(constant_accel_trace(s, 1.0), CoopCase::kEgoAhead, 16.0, 3.0));
+  ASSERT_FALSE(bad.result.holds);
+  EXPECT_EQ(bad.result.liable_id, kEgoId);
+  EXPECT_NEAR(bad.result.min_margin, -1.8, 1e-9);
+}
+
+TEST(Def2Monitor, ResponderThatAcceptsAndDoesNotYieldIsLiable) {
+  // Vehicle 1 keeps 20 m/s. From t_r + rho_c + T = 1.5 s it must be at most v_o* + 0.5 =
+  // 16.5 m/s: margin 16.5 - 20 = -3.5 m/s at t = 1.5 s.
+  const Scenario s = coop_scenario();
+  const MonitorOutput out =
+      test::run(monitor_def2_1b_responder, s, with_exchange(constant_accel_trace(s, 3.0), CoopCase::kEgoAhead, 16.0));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 1.5, 1e-9);
+  EXPECT_NEAR(out.result.min_margin, -3.5, 1e-9);
+}
+
+TEST(Def2Monitor, ResponderBrakingAtBminToTargetHolds) {
+  // Vehicle 1 brakes at b_min = 4 from t = 0.1 s: v = 20 - 4 (t - 0.1) equals the rate floor, so
+  // the margin is the 0.2 m/s tolerance until it reaches v_o* + 0.2 (t = 1.05 s); it then stays
+  // at 16 m/s: yield margin 16.5 - 16 = 0.5 m/s.
+  const Scenario s = coop_scenario();
+  Trace t = constant_accel_trace(s, 3.0);
+  for (auto& st : t.steps) {
+    const double v = std::max(16.0, 20.0 - 4.0 * std::max(0.0, st.time_s - 0.1));
+    st.others[0].vx_mps = v;
+  }
+  const MonitorOutput out = test::run(monitor_def2_1b_responder, s, with_exchange(t, CoopCase::kEgoAhead, 16.0));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 0.2, 1e-9);
+}
+
+TEST(Def2Monitor, EgoBrakingHarderThanBminAfterA22RequestIsLiable) {
+  // The ego brakes at 5 > b_min 4 m/s2: at t = rho_c = 1 s, v = 15, floor = 16:
+  // margin 15 - 16 + 0.2 = -0.8 m/s. At 4 m/s2 the margin stays at the 0.2 m/s tolerance.
+  const Scenario s = coop_scenario();
+  const MonitorOutput bad =
+      test::run(monitor_def2_2a_ego_brake, s, with_exchange(constant_accel_trace(s, 2.0, {-5.0, 0.0}), CoopCase::kEgoBehind, 22.0));
+  ASSERT_FALSE(bad.result.holds);
+  EXPECT_EQ(bad.result.liable_id, kEgoId);
+  EXPECT_NEAR(bad.result.min_margin, -0.8, 1e-9);
+  const MonitorOutput ok =
+      test::run(monitor_def2_2a_ego_brake, s, with_exchange(constant_accel_trace(s, 2.0, {-4.0, 0.0}), CoopCase::kEgoBehind, 22.0));
+  EXPECT_TRUE(ok.result.holds);
+  EXPECT_NEAR(ok.result.min_margin, 0.2, 1e-9);
+}
+
+TEST(Def2Monitor, ResponderThatDoesNotSpeedUpForA22RequestIsLiable) {
+  // v_o* = 24 m/s; vehicle 1 stays at 20: from 1.5 s the margin is 20 - (24 - 0.5) = -3.5 m/s.
+  const Scenario s = coop_scenario();
+  const MonitorOutput out =
+      test::run(monitor_def2_2b_responder, s, with_exchange(constant_accel_trace(s, 3.0), CoopCase::kEgoBehind, 24.0));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_NEAR(out.result.min_margin, -3.5, 1e-9);
+}
+
+Trace with_coop_merge(Trace t, double merge_time_s) {
+  Decision d;
+  d.time_s = merge_time_s;
+  d.mode = DecisionMode::kDef2Merge;
+  d.coop_partner_id = 1;
+  t.decisions.push_back(d);
+  return t;
+}
+
+TEST(Def2Monitor, CooperativeMergeNeedsAnAcceptanceWithinRhoC) {
+  const Scenario s = coop_scenario();
+  // Request at 0, acceptance sent at 0.1 s and delivered at 0.3 s: margin 0 + 1 - 0.3 = 0.7 s.
+  Trace ok = with_coop_merge(constant_accel_trace(s, 1.0), 0.5);
+  ok.events.push_back(message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 50, 30, 16));
+  TraceEvent delivered = message_event(0.3, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 50, 30, 16);
+  delivered.kind = EventKind::kMessageDelivered;
+  ok.events.push_back(delivered);
+  const MonitorOutput held = test::run(monitor_def2_3_fallback, s, ok);
+  EXPECT_TRUE(held.result.holds);
+  EXPECT_NEAR(held.result.min_margin, 0.7, 1e-9);
+  // No acceptance at all: margin -rho_c = -1 s, the ego liable.
+  Trace bad = with_coop_merge(constant_accel_trace(s, 1.0), 0.5);
+  bad.events.push_back(message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 50, 30, 16));
+  const MonitorOutput broke = test::run(monitor_def2_3_fallback, s, bad);
+  ASSERT_FALSE(broke.result.holds);
+  EXPECT_EQ(broke.result.liable_id, kEgoId);
+  EXPECT_NEAR(broke.result.min_margin, -1.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace mg

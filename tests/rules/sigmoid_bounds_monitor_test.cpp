@@ -1,0 +1,64 @@
+#include "rules/sigmoid_bounds_monitor.h"
+
+#include <gtest/gtest.h>
+
+#include "trace_builder.h"
+
+namespace mg {
+namespace {
+
+using test::base_scenario;
+using test::constant_accel_trace;
+using test::vehicle;
+
+// Merge midpoint at t = 1 s. All at 20 m/s, so D_lon = 45.175 m both ways (see the RSS test).
+Trace with_midpoint(Trace t) {
+  t.events.push_back({1.0, EventKind::kMergeMidpoint, 0, "", std::nullopt});
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, MidpointBetweenFollowerAndLeaderWithSafeDistancesHolds) {
+  // Follower 50 m behind: 50 - 45.175 = 4.825 m; leader 60 m ahead: 14.825 m. Margin 4.825 m.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -50.0, 20.0), vehicle(2, 60.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, with_midpoint(constant_accel_trace(s, 2.0)));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 4.825, 1e-9);
+}
+
+TEST(SigmoidBoundsMonitor, MidpointInsideTheFollowersSafeDistanceBlamesTheEgo) {
+  // Follower 40 m behind: 40 - 45.175 = -5.175 m; it kept its limits, so the ego is liable.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -40.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, with_midpoint(constant_accel_trace(s, 2.0)));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -5.175, 1e-9);
+}
+
+TEST(SigmoidBoundsMonitor, FollowerThatOveracceleratedBeforeTheMidpointIsLiable) {
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -45.0, 20.0)};
+  const MonitorOutput out =
+      test::run(monitor_sigmoid_pc_bounds, s, with_midpoint(constant_accel_trace(s, 2.0, {0.0, 3.0})));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+}
+
+TEST(SigmoidBoundsMonitor, DecisionPcOutsideItsBoundsIsAViolation) {
+  Scenario s = base_scenario();
+  Trace t = constant_accel_trace(s, 1.0);
+  Decision d;
+  d.mode = DecisionMode::kDef1Merge;
+  d.gap = Gap{-1, -1};
+  d.pc_min_m = 30.0;
+  d.pc_max_m = 60.0;
+  d.pc_m = 65.0;  // 5 m beyond pc_max
+  t.decisions.push_back(d);
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, -5.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace mg

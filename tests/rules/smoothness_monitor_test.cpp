@@ -1,0 +1,57 @@
+#include "rules/smoothness_monitor.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "trace_builder.h"
+
+namespace mg {
+namespace {
+
+using test::base_scenario;
+using test::constant_accel_trace;
+
+Trace with_lateral_speed(Trace t, double (*vy)(double)) {
+  for (auto& st : t.steps) st.ego.vy_mps = vy(st.time_s);
+  return t;
+}
+
+TEST(SmoothnessMonitor, OneLateralHumpHasNoSignChange) {
+  // vy = 0.5 sin(pi t / 4) for 4 s, then 0: positive only. Margin 2 - 0 = 2.
+  const Scenario s = base_scenario();
+  const MonitorOutput out = test::run(
+      monitor_smoothness_oscillation, s,
+      with_lateral_speed(constant_accel_trace(s, 6.0), [](double t) { return t < 4.0 ? 0.5 * std::sin(std::numbers::pi * t / 4.0) : 0.0; }));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 2.0, 1e-12);
+}
+
+TEST(SmoothnessMonitor, WeavingPathViolates) {
+  // vy = 0.5 sin(pi t) over 6 s changes sign at t = 1, 2, 3, 4, 5 (|vy| > 0.1 between them):
+  // 5 changes, no merge event: allowed 2. Margin 2 - 5 = -3.
+  const Scenario s = base_scenario();
+  const MonitorOutput out = test::run(
+      monitor_smoothness_oscillation, s,
+      with_lateral_speed(constant_accel_trace(s, 6.0), [](double t) { return 0.5 * std::sin(std::numbers::pi * t); }));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -3.0, 1e-12);
+}
+
+TEST(SmoothnessMonitor, SideslipMarginIsBoundMinusAbsoluteSideslip) {
+  // vx = 20, vy = 0.5: beta = atan(0.025) = 0.024995; margin 0.05 - 0.024995 = 0.025005 rad.
+  // vy = 2: beta = atan(0.1) = 0.099669; margin -0.049669 rad.
+  const Scenario s = base_scenario();
+  const MonitorOutput ok =
+      test::run(monitor_sideslip, s, with_lateral_speed(constant_accel_trace(s, 0.5), [](double) { return 0.5; }));
+  EXPECT_NEAR(ok.result.min_margin, 0.05 - std::atan(0.025), 1e-12);
+  const MonitorOutput bad =
+      test::run(monitor_sideslip, s, with_lateral_speed(constant_accel_trace(s, 0.5), [](double) { return 2.0; }));
+  ASSERT_FALSE(bad.result.holds);
+  EXPECT_NEAR(bad.result.min_margin, 0.05 - std::atan(0.1), 1e-12);
+}
+
+}  // namespace
+}  // namespace mg

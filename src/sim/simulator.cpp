@@ -137,10 +137,15 @@ class Run {
                                [](const PathPoint& a, const PathPoint& b) { return a.x_m == b.x_m && a.y_m == b.y_m; }),
                    out.path.end());
     if (out.path.size() < 2) out.path = plan_.path;  // no new path: keep following the last one
-    for (std::size_t i = 1; i < out.path.size(); ++i)
-      if (!(out.path[i].x_m > out.path[i - 1].x_m))
-        throw std::logic_error("planner '" + planner_.name() + "' returned a path with non-increasing X at t = " +
-                               std::to_string(t) + " s");
+    auto contract_broken = [&](const std::string& what) {
+      return std::logic_error("planner '" + planner_.name() + "' returned " + what + " at t = " + std::to_string(t) + " s");
+    };
+    for (std::size_t i = 0; i < out.path.size(); ++i) {
+      if (!std::isfinite(out.path[i].x_m) || !std::isfinite(out.path[i].y_m)) throw contract_broken("a non-finite path point");
+      if (i > 0 && !(out.path[i].x_m > out.path[i - 1].x_m)) throw contract_broken("a path with non-increasing X");
+    }
+    if (!std::isfinite(out.target_speed_mps) || !std::isfinite(out.accel_limit_mps2))
+      throw contract_broken("a non-finite speed command");
     const bool first = trace_.decisions.empty();
     if (first || out.decision.mode != plan_.decision.mode)
       trace_.events.push_back({t, EventKind::kDecision, 0, to_string(out.decision.mode) + ": " + out.decision.reason,

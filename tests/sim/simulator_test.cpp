@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include "test_planners.h"
 
@@ -38,6 +39,29 @@ TEST(Simulator, SameScenarioTwiceGivesTheSameDigest) {
   EXPECT_EQ(t1.digest, t2.digest);
   EXPECT_EQ(t1.digest, compute_digest(t1));
   EXPECT_EQ(trace_to_json(t1), trace_to_json(t2));
+}
+
+RC_GTEST_PROP(Simulator, AnyScenarioRunTwiceGivesTheSameDigest, ()) {
+  Scenario s = busy_scenario();
+  s.params.sim.horizon_s = 5.0;
+  s.ego.v2v.loss_prob = *rc::gen::inRange(0, 11) / 10.0;
+  for (MainVehicle& v : s.vehicles) {
+    v.behaviour.seed = *rc::gen::arbitrary<std::uint32_t>();
+    v.speed_mps = *rc::gen::inRange(0, 35);
+    v.v2v.loss_prob = *rc::gen::inRange(0, 11) / 10.0;
+  }
+  test::RequestingPlanner p1(-3.5, 20.0, 2, 15.0, CoopCase::kEgoAhead), p2(-3.5, 20.0, 2, 15.0, CoopCase::kEgoAhead);
+  RC_ASSERT(simulate(s, p1).digest == simulate(s, p2).digest);
+}
+
+class NanPlanner : public test::LaneKeepPlanner {
+ public:
+  NanPlanner() : LaneKeepPlanner(-3.5, NAN, 2.0) {}
+};
+
+TEST(Simulator, PlannerBreakingTheOutputContractIsReported) {
+  NanPlanner planner;
+  EXPECT_THROW(simulate(test::empty_scenario(), planner), std::logic_error);
 }
 
 TEST(Simulator, DigestChangesWhenTheSeedChanges) {

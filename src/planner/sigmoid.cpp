@@ -12,7 +12,7 @@ const double kSixRootThree = 6.0 * std::sqrt(3.0);
 std::vector<double> even_grid(double lo, double hi, int n) {
   if (n <= 1 || hi <= lo) return {0.5 * (lo + hi)};
   std::vector<double> v;
-  for (int i = 0; i < n; ++i) v.push_back(lo + (hi - lo) * i / (n - 1));
+  for (int i = 0; i < n; ++i) v.push_back(i == n - 1 ? hi : lo + (hi - lo) * i / (n - 1));  // ends exact
   return v;
 }
 

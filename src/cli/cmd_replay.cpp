@@ -1,6 +1,8 @@
 // mergeguard replay [CASE.json | DIR]... [--json]: re-run corpus cases from their JSON alone and
 // compare verdict, violations and failed properties (DESIGN §9, §10). Exit 1 naming every case
 // that does not reproduce; 2 when a case cannot be read (future format_version included).
+// --update records the replayed verdict in the cases that do not reproduce (after a planner fix
+// the minimal case stays in the corpus as a regression test that now holds; docs/fuzzing.md).
 #include <iostream>
 #include <string>
 #include <vector>
@@ -21,8 +23,10 @@ int run_replay(const std::vector<std::string>& args) {
   CLI::App app("Replay corpus cases and compare their recorded verdicts", "mergeguard replay");
   std::vector<std::string> paths;
   bool json = false;
+  bool update = false;
   app.add_option("cases", paths, "case files or directories of cases (default corpus/cases)");
   app.add_flag("--json", json, "print one JSON document");
+  app.add_flag("--update", update, "rewrite the recorded verdict of cases that do not reproduce");
   if (!parse_args(app, args)) return kExitOk;
   if (paths.empty()) paths.push_back("corpus/cases");
 
@@ -38,28 +42,38 @@ int run_replay(const std::vector<std::string>& args) {
 
   nlohmann::json report = nlohmann::json::array();
   int failed = 0;
+  int updated_count = 0;
   for (const auto& [file, c] : cases) {
     const std::string planner = c.signature.planner;
     const fuzz::ReplayResult r =
         fuzz::replay_case(c, [&planner](const Scenario& s) { return check_scenario(s, planner); });
-    if (!r.reproduces) ++failed;
+    if (!r.reproduces && update) {
+      fuzz::CorpusCase updated = c;
+      updated.verdict = r.actual;
+      fuzz::write_case(updated, file);
+      ++updated_count;
+    } else if (!r.reproduces) {
+      ++failed;
+    }
     if (json) {
-      report.push_back({{"case", file}, {"signature", c.signature.key()}, {"reproduces", r.reproduces},
+      report.push_back({{"case", file}, {"signature", c.signature.key()}, {"reproduces", r.reproduces}, {"updated", !r.reproduces && update},
                         {"differences", r.differences}});
     } else {
-      std::cout << (r.reproduces ? "reproduces      " : "DOES NOT REPRODUCE ") << file << "\n";
+      std::cout << (r.reproduces ? "reproduces         " : update ? "updated            " : "DOES NOT REPRODUCE ")
+                << file << "\n";
       for (const std::string& d : r.differences) std::cout << "    " << d << "\n";
     }
   }
   if (json) {
-    std::cout << nlohmann::json{{"cases", cases.size()}, {"not_reproduced", failed}, {"results", report}}.dump(2) << "\n";
+    std::cout << nlohmann::json{{"cases", cases.size()}, {"not_reproduced", failed}, {"updated", updated_count}, {"results", report}}.dump(2) << "\n";
   } else {
-    std::cout << cases.size() - static_cast<std::size_t>(failed) << " of " << cases.size() << " cases reproduce\n";
+    std::cout << cases.size() - static_cast<std::size_t>(failed + updated_count) << " of " << cases.size()
+              << " cases reproduce" << (update ? ", " + std::to_string(updated_count) + " updated" : "") << "\n";
   }
   return failed > 0 ? kExitViolation : kExitOk;
 }
 
-const CommandRegistration kRegistration("replay", "replay [CASE.json | DIR]... [--json]", run_replay);
+const CommandRegistration kRegistration("replay", "replay [CASE.json | DIR]... [--json] [--update]", run_replay);
 
 }  // namespace
 }  // namespace mg::cli

@@ -1,0 +1,127 @@
+// The four situations of RCPP Fig. 2 (corpus/scenarios/fig2_*.json): the decision at the initial
+// state, computed by hand. Common data: T = 0.5 s, rho_m = 4 s, cars 4.8 m long (half-lengths sum
+// 4.8 m), limits a_acc = 2, b_min = 4, b_max = 8 m/s2, side lane end 350 m, speed limit 33.34 m/s.
+// D_lon(v_r, v_f) = 4.8 + [0.5 v_r + 0.25 + (v_r + 1)^2/8 - v_f^2/16]_+ (RCPP eq. 1).
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/scenario.h"
+#include "planner/planner.h"
+
+namespace mg {
+namespace {
+
+Scenario load(const std::string& name) {
+  return load_scenario(std::string(MG_SOURCE_DIR) + "/corpus/scenarios/" + name + ".json");
+}
+
+PlanOutput plan_initial(const Scenario& s, const std::string& planner) {
+  auto p = make_planner(planner);
+  return p->plan(initial_snapshot(s));
+}
+
+void expect_choice_within_bounds(const Decision& d) {
+  EXPECT_GE(d.ve_star_mps, d.ve_min_mps);
+  EXPECT_LE(d.ve_star_mps, d.ve_max_mps);
+  EXPECT_GE(d.pc_m, d.pc_min_m);
+  EXPECT_LE(d.pc_m, d.pc_max_m);
+  EXPECT_GT(d.kappa_per_m, 0.0);
+}
+
+TEST(Fig2, Situation1EgoAheadMergesAheadOfTheFollower) {
+  // Ego X = 100, v_e = 22; vehicle 1 X_o = 30, v_o = 20 (the follower of the gap ahead of it).
+  // Ineq. (1.1): follower at rho/2 = 2 s: 30 + 40 + 2*16/8 = 74 m at 24 m/s; D_lon(24, u) = 95.175 - u^2/16.
+  // For v_e* < 22 the ego brakes at b_min = 4 and then holds v_e*: X(2 s) = 100 + 2 v + (22 - v)^2/8,
+  // u = v. 100 + 2v + (22-v)^2/8 - 95.175 + v^2/16 >= 74 <=> 3v^2 - 56v - 138.8 >= 0
+  // -> v_e* >= (56 + sqrt(56^2 + 12*138.8))/6 = 20.882 m/s. No leader: upper end = speed limit.
+  // P_c lower bound = X(2 s) at 20.882 = 100 + 41.765 + 0.156 = 141.92 m; upper: accelerating at 2 to the
+  // limit gives 100 + 44 + 4 = 148 m.
+  const PlanOutput out = plan_initial(load("fig2_s1_ahead_noncoop"), "rcpp");
+  const Decision& d = out.decision;
+  EXPECT_EQ(d.mode, DecisionMode::kDef1Merge);
+  ASSERT_TRUE(d.gap);
+  EXPECT_EQ(d.gap->follower_id, 1);
+  EXPECT_EQ(d.gap->leader_id, -1);
+  EXPECT_NEAR(d.ve_min_mps, (56 + std::sqrt(56.0 * 56 + 12 * 138.8)) / 6, 1e-4);
+  EXPECT_DOUBLE_EQ(d.ve_max_mps, 33.34);
+  EXPECT_NEAR(d.pc_min_m, 141.921, 1e-3);
+  EXPECT_NEAR(d.pc_max_m, 148.0, 1e-6);
+  expect_choice_within_bounds(d);
+  EXPECT_FALSE(out.proper_response);
+  EXPECT_TRUE(out.outbox.empty());
+}
+
+TEST(Fig2, Situation2EgoBehindMergesBehindTheLeader) {
+  // Ego X = 30, v_e = 20; vehicle 1 X_o = 60, v_o = 22 (the leader of the gap behind it).
+  // Ineq. (1.2) at rho = 4 s, v_e* <= 20 (brake at 4, then hold): X(4) = 30 + 4v + (20 - v)^2/8,
+  // leader 60 + 88 = 148, D_lon(v, 22) = 4.8 + 0.5v + 0.25 + (v+1)^2/8 - 30.25.
+  // 148 - D - X(4) >= 0 <=> v^2 - v - 372.3 <= 0 -> v_e* <= (1 + sqrt(1 + 1489.2))/2 = 19.802 m/s.
+  // No follower: lower end 0. P_c lower bound: X(2 s) at v_e* = 0 is 30 + 40 - 8 = 62 m.
+  const PlanOutput out = plan_initial(load("fig2_s2_behind_noncoop"), "rcpp");
+  const Decision& d = out.decision;
+  EXPECT_EQ(d.mode, DecisionMode::kDef1Merge);
+  ASSERT_TRUE(d.gap);
+  EXPECT_EQ(d.gap->follower_id, -1);
+  EXPECT_EQ(d.gap->leader_id, 1);
+  EXPECT_DOUBLE_EQ(d.ve_min_mps, 0.0);
+  EXPECT_NEAR(d.ve_max_mps, (1 + std::sqrt(1 + 4 * 372.3)) / 2, 1e-4);
+  EXPECT_NEAR(d.pc_min_m, 62.0, 1e-6);
+  expect_choice_within_bounds(d);
+}
+
+TEST(Fig2, Situation3EgoAheadWithoutV2vHaltsAndWithV2vAsksToSlowDown) {
+  // Ego X = 50, v_e = 20; vehicle 1 X_o = 25, v_o = 20; rho_c = 1.5 s.
+  // Def. 1, gap ahead of vehicle 1: at 2 s the follower is at 25 + 40 + 4 = 69; the ego can at most
+  // reach 50 + 44 = 94 at 24 m/s, D_lon(24, 24) = 59.175 -> 94 - 59.175 = 34.8 < 69: infeasible.
+  // Gap behind vehicle 1: braking puts the ego at >= 82 m at 2 s while the leader's bound is
+  // 65 - D_lon(12, 20) < 82: the P_c bounds cross. So "rcpp" halts (Def. 1.3).
+  const Scenario s = load("fig2_s3_ahead_coop");
+  EXPECT_EQ(plan_initial(s, "rcpp").decision.mode, DecisionMode::kDef1Halt);
+  // Def. 2.1: P_c = 50 + 20 (1.5 + 2) = 120 m. The binding condition is the start of the lateral
+  // motion (docs/planner.md): 80 - D*(v) >= 25 + 0.75 (20 + v), D*(v) = 0.5v + (v+1)^2/8 - 19.95
+  // <=> v^2 + 12v - 478.6 <= 0 -> v_o* = 16.683 m/s >= 20 - 4*1.5 = 14 (brake limit).
+  const PlanOutput out = plan_initial(s, "rcpp-coop");
+  const Decision& d = out.decision;
+  EXPECT_EQ(d.mode, DecisionMode::kDef2Request);
+  EXPECT_EQ(d.coop_partner_id, 1);
+  EXPECT_NEAR(d.vo_star_mps, (-12 + std::sqrt(144 + 4 * 478.6)) / 2, 1e-4);
+  EXPECT_DOUBLE_EQ(d.pc_m, 120.0);
+  const double v = d.vo_star_mps;
+  EXPECT_NEAR(d.d_lon_star_m, 4.8 + 0.5 * v + 0.25 + (v + 1) * (v + 1) / 8 - 25, 1e-9);
+  ASSERT_EQ(out.outbox.size(), 1u);
+  const V2vMessage& m = out.outbox[0];
+  EXPECT_EQ(m.type, MessageType::kRequest);
+  EXPECT_EQ(m.to_id, 1);
+  EXPECT_EQ(m.coop_case, CoopCase::kEgoAhead);
+  EXPECT_DOUBLE_EQ(m.pc_m, 120.0);
+  EXPECT_DOUBLE_EQ(m.target_speed_mps, d.vo_star_mps);
+  EXPECT_DOUBLE_EQ(m.d_lon_star_m, d.d_lon_star_m);
+  EXPECT_DOUBLE_EQ(out.target_speed_mps, 20.0);  // the ego keeps its speed (Def. 2.1)
+}
+
+TEST(Fig2, Situation4EgoBehindWithoutV2vHaltsAndWithV2vAsksToSpeedUp) {
+  // Ego X = 50, v_e = 20; vehicle 1 X_o = 54, v_o = 20; rho_c = 1.5 s.
+  // Def. 1, gap ahead of vehicle 1: the follower is at 54 + 40 + 4 = 98 > 94 (ego's best) at 2 s:
+  // infeasible before any D_lon. Gap behind: the ego would have to drop ~45 m back within rho_m
+  // while a comfortable sigmoid (1.5 m/s2) at ~20 m/s needs ~30 m on each side of P_c: no sigmoid.
+  const Scenario s = load("fig2_s4_behind_coop");
+  EXPECT_EQ(plan_initial(s, "rcpp").decision.mode, DecisionMode::kDef1Halt);
+  // Def. 2.2: the ego brakes at 4 for 1.5 s: travel 25.5 m, speed 14. D_lon(14, v) = 40.175 - v^2/16.
+  // Ineq. (4): 54 + 0.75 (20 + v) - D >= 75.5 <=> v^2 + 12v - 746.8 >= 0 -> v_o* = 21.979 m/s,
+  // within 20 + 2*1.5 = 23 (accel limit). P_c = 50 + 25.5 + 14*2 = 103.5 m.
+  const PlanOutput out = plan_initial(s, "rcpp-coop");
+  const Decision& d = out.decision;
+  EXPECT_EQ(d.mode, DecisionMode::kDef2Request);
+  EXPECT_EQ(d.coop_partner_id, 1);
+  EXPECT_NEAR(d.vo_star_mps, (-12 + std::sqrt(144 + 4 * 746.8)) / 2, 1e-4);
+  EXPECT_DOUBLE_EQ(d.pc_m, 103.5);
+  ASSERT_EQ(out.outbox.size(), 1u);
+  EXPECT_EQ(out.outbox[0].coop_case, CoopCase::kEgoBehind);
+  EXPECT_DOUBLE_EQ(out.target_speed_mps, 14.0);           // Def. 2.2 A: brake at b_min
+  EXPECT_DOUBLE_EQ(out.accel_limit_mps2, 4.0);
+}
+
+}  // namespace
+}  // namespace mg

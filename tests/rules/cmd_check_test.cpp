@@ -1,0 +1,47 @@
+// `mergeguard check` end to end through the built binary (env MG_CLI).
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(const std::string& args) {
+  const char* cli = std::getenv("MG_CLI");
+  if (!cli) return -1;
+  const int status = std::system((std::string(cli) + " check " + args + " >/dev/null 2>&1").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string scenario(const std::string& name) { return std::string(MG_SOURCE_DIR) + "/corpus/scenarios/" + name + ".json"; }
+
+TEST(CmdCheck, ExitsZeroWhenEveryRuleHolds) {
+  if (!std::getenv("MG_CLI")) GTEST_SKIP() << "MG_CLI not set (run through ctest)";
+  EXPECT_EQ(run(scenario("fig2_s1_ahead_noncoop")), 0);
+}
+
+TEST(CmdCheck, ExitsOneAndWritesTheLiabilityReportOnAViolation) {
+  if (!std::getenv("MG_CLI")) GTEST_SKIP() << "MG_CLI not set (run through ctest)";
+  const fs::path dir = fs::temp_directory_path() / ("mg_cmd_check_" + std::to_string(::getpid()));
+  EXPECT_EQ(run(scenario("leader_overbrakes") + " --report " + dir.string()), 1);
+  std::ifstream in(dir / "report.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j.at("verdict"), "violated");
+  EXPECT_EQ(j.at("liable"), "vehicle 1");
+  EXPECT_TRUE(fs::exists(dir / "report.html"));
+  EXPECT_TRUE(fs::exists(dir / "report.md"));
+  fs::remove_all(dir);
+}
+
+TEST(CmdCheck, BadInputExitsTwo) {
+  if (!std::getenv("MG_CLI")) GTEST_SKIP() << "MG_CLI not set (run through ctest)";
+  EXPECT_EQ(run("/nonexistent/scenario.json"), 2);
+  EXPECT_EQ(run(scenario("fig2_s1_ahead_noncoop") + " --planner no_such_planner"), 2);
+}
+
+}  // namespace

@@ -53,6 +53,19 @@ CoopContext coop_context(const WorldSnapshot& w) {
 // the side lane's end minus half the ego length (DESIGN §2: never pass the end in the side lane).
 double side_exit_limit_x_m(const Scenario& s) { return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m; }
 
+// Trackability of the path at any speed: its peak curvature c = W kappa^2/(6 sqrt 3) stays within
+// half the ego's steering ability (tan(steer_max)/(2 wheelbase)) and keeps the kinematic sideslip
+// atan(l_r c) below kPathSideslipMaxRad (docs/planner.md).
+constexpr double kPathSideslipMaxRad = 0.04;
+double kappa_cap_per_m(const Scenario& s) {
+  const EgoDynamics& dyn = s.ego.dynamics;
+  const double wheelbase_m = dyn.cg_to_front_m + dyn.cg_to_rear_m;
+  const double curvature_max = std::min(std::tan(dyn.steer_max_rad) / (2.0 * wheelbase_m),
+                                        std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
+  return std::min(s.params.planner.kappa_max_per_m,
+                  std::sqrt(6.0 * std::sqrt(3.0) * curvature_max / s.road.lane_width_m));
+}
+
 // Peak lateral acceleration along a sigmoid driven with a speed profile: max of v(x)^2 |y''(x)| over
 // kComfortSamples points within +-kComfortSpan/kappa of P_c, y'' = W kappa^2 s(1-s)(1-2s) for the
 // logistic s (RCPP §II-C; equals the constant-speed bound v^2 W kappa^2/(6 sqrt 3) at fixed v).
@@ -85,14 +98,75 @@ KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, dou
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
                               half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
-  if (lo > p.kappa_max_per_m) return std::nullopt;
+  const double kappa_cap = kappa_cap_per_m(s);
+  if (lo > kappa_cap) return std::nullopt;
   const auto comfort_margin = [&](double kappa) {
     const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
     return p.lat_accel_comfort_mps2 - peak_lat_accel_along_mps2(sig, ramp, ramp_origin_x_m);
   };
-  const auto hi = highest_satisfying(comfort_margin, lo, p.kappa_max_per_m, 1e-5);
+  const auto hi = highest_satisfying(comfort_margin, lo, kappa_cap, 1e-5);
   if (!hi) return std::nullopt;
   return std::make_pair(lo, *hi);
+}
+
+// A main-lane vehicle's predicted motion during a merge candidate.
+struct Track {
+  std::function<double(double)> x_at;  // position at t after the decision
+  std::function<double(double)> v_at;  // speed at t
+  double length_m = 0.0;
+  Limits limits;
+};
+
+// Prediction of a gap vehicle as Definition 1 assumes it: the follower accelerates at its
+// a_accel^max until rho/2 and then holds its speed (Def. 1.1); the leader holds its speed (1.2).
+Track follower_track(const MainLaneVehicle& f, double rho_s) {
+  const double a = f.limits.accel_max_mps2, half = 0.5 * rho_s;
+  return Track{[=](double t) {
+                 const double tau = std::min(t, half);
+                 return f.x_m + f.speed_mps * tau + 0.5 * a * tau * tau + (f.speed_mps + a * tau) * (t - tau);
+               },
+               [=](double t) { return f.speed_mps + a * std::min(t, half); }, f.length_m, f.limits};
+}
+Track leader_track(const MainLaneVehicle& l) {
+  return Track{[=](double t) { return l.x_m + l.speed_mps * t; }, [=](double) { return l.speed_mps; }, l.length_m,
+               l.limits};
+}
+
+// Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
+// rho, docs/planner.md): at every one of kOccupancySamples instants of [0, horizon_s] at which the
+// ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
+// lateral speed on the path) plus kOccupancyLateralMarginM, it must also be at least D_lon
+// (RCPP eq. 1) ahead of the follower and behind the leader: the merge never creates an RSS-dangerous
+// situation with a gap vehicle, whatever the instant.
+constexpr int kOccupancySamples = 40;
+constexpr double kOccupancyLateralMarginM = 0.3;  // absorbs path-tracking error
+bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, const SpeedRamp& ego, double horizon_s,
+                     const std::optional<Track>& follower, const std::optional<Track>& leader) {
+  const double t_lag = s.params.rss.response_time_s;
+  const Limits& el = s.ego.limits;
+  const double le = s.ego.size.length_m;
+  for (int k = 0; k <= kOccupancySamples; ++k) {
+    const double t = horizon_s * k / kOccupancySamples;
+    const double x = ego_x_m + ego.distance_at_m(t);
+    const double v = ego.speed_at_mps(t);
+    const double sgm = (sig.y_at_m(x) - sig.offset_m) / sig.width_m;
+    const double lat_speed = v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);
+    const double d_lat = rss_lateral_m({0.0, lat_speed, s.ego.size.width_m, s.ego.size.width_m, t_lag,
+                                        el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
+    if (-sig.y_at_m(x) >= d_lat + kOccupancyLateralMarginM) continue;  // laterally safe (lane centre Y = 0)
+    if (follower) {
+      const double d = rss_longitudinal_m({follower->v_at(t), v, follower->length_m, le, t_lag,
+                                           follower->limits.accel_max_mps2, follower->limits.brake_min_mps2,
+                                           el.brake_max_mps2});
+      if (x - d < follower->x_at(t)) return false;
+    }
+    if (leader) {
+      const double d = rss_longitudinal_m({v, leader->v_at(t), le, leader->length_m, t_lag, el.accel_max_mps2,
+                                           el.brake_min_mps2, leader->limits.brake_max_mps2});
+      if (x + d > leader->x_at(t)) return false;
+    }
+  }
+  return true;
 }
 
 // Potential field cost of a candidate path (docs/planner.md): the mean of RCPP eq. (3)-(5) over
@@ -188,6 +262,10 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       const double v = v_of_pc(pc);
       const SpeedRamp ramp = ctx.ramp_to(v);
       const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
+      std::optional<Track> ft, lt;
+      if (gap.follower) ft = follower_track(*gap.follower, rho_s);
+      if (gap.leader) lt = leader_track(*gap.leader);
+      if (!occupancy_clear(s, ctx.ego_x_m, sig, ramp, rho_s, ft, lt)) return std::numeric_limits<double>::infinity();
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic);
       return def1_cost + field_cost(w, sig, rho_s, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); },
@@ -277,16 +355,29 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   const auto kappa_range = [&](double pc_m) {
     return kappa_range_for(s, pc_m, start_x, complete_by_x, ramp, c.ego_x_m);
   };
-  const auto partner_x = [&](const ObservedVehicle& v, double t) {
-    if (v.id != o.id) return constant_speed_x(v, t);
-    const SpeedRamp r{o.speed_mps, vo.vo_star_mps, std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9,
-                      std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9};
-    return o.x_m + r.distance_at_m(t);
-  };
+
   const double base = p.cost_time_weight * t_c +
                       p.cost_speed_change_weight * (std::abs(vo.vo_star_mps - o.speed_mps) + std::abs(v_after - c.ego_speed_mps));
+  // The responder follows its cooperative profile; the gap's other vehicle as in Definition 1.
+  const double rate = std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9;
+  const SpeedRamp responder_ramp{o.speed_mps, vo.vo_star_mps, rate, rate};
+  const Track responder{[=](double t) { return o.x_m + responder_ramp.distance_at_m(t); },
+                        [=](double t) { return responder_ramp.speed_at_mps(t); }, o.length_m, o.limits};
+  std::optional<Track> ft, lt;
+  if (k == CoopCase::kEgoAhead) {
+    ft = responder;
+    if (const auto l = neighbour(lane, i, +1)) lt = leader_track(*l);
+  } else {
+    lt = responder;
+    if (const auto f = neighbour(lane, i, -1)) ft = follower_track(*f, 2.0 * t_c);
+  }
+  const auto partner_x = [&](const ObservedVehicle& v, double t) {
+    return v.id == o.id ? o.x_m + responder_ramp.distance_at_m(t) : constant_speed_x(v, t);
+  };
   const auto cost = [&](double pc_m, double kappa) {
     const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
+    if (!occupancy_clear(s, c.ego_x_m, sig, ramp, c.comm_threshold_s + c.merge_duration_s, ft, lt))
+      return std::numeric_limits<double>::infinity();
     return base + field_cost(w, sig, 2.0 * t_c, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); }, partner_x);
   };
   const auto choice = choose_sigmoid(pc, pc, 1, kappa_range, p.kappa_candidates, cost);
@@ -336,9 +427,10 @@ double side_lane_exit_fraction(double ego_width_m, double lane_width_m) {
 
 double standstill_merge_length_m(const Scenario& s) {
   const PlannerParams& p = s.params.planner;
-  const double kappa = std::clamp(
-      kappa_comfort_max_per_m(kStandstillMergeSpeedMps, s.road.lane_width_m, p.lat_accel_comfort_mps2),
-      p.kappa_min_per_m, p.kappa_max_per_m);
+  const double kappa = std::max(
+      p.kappa_min_per_m,
+      std::min(kappa_comfort_max_per_m(kStandstillMergeSpeedMps, s.road.lane_width_m, p.lat_accel_comfort_mps2),
+               kappa_cap_per_m(s)));
   return (half_span_times_kappa() + ln_ratio(side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m))) /
          kappa;
 }

@@ -37,22 +37,26 @@ double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_acce
   return std::sqrt(kSixRootThree * lat_accel_mps2 / width_m) / speed_mps;
 }
 
-std::vector<PathPoint> sample_sigmoid(const Sigmoid& s, double x_from_m, double x_to_m, double step_m) {
+namespace {
+// x_from, x_from + step, ... while clearly below x_to, then x_to: strictly increasing.
+std::vector<double> path_xs(double x_from_m, double x_to_m, double step_m) {
   assert(step_m > 0.0 && x_to_m > x_from_m);
+  std::vector<double> xs;
+  for (int i = 0; x_from_m + i * step_m < x_to_m - 1e-3 * step_m; ++i) xs.push_back(x_from_m + i * step_m);
+  xs.push_back(x_to_m);
+  return xs;
+}
+}  // namespace
+
+std::vector<PathPoint> sample_sigmoid(const Sigmoid& s, double x_from_m, double x_to_m, double step_m) {
   std::vector<PathPoint> path;
-  const int n = static_cast<int>(std::ceil((x_to_m - x_from_m) / step_m));
-  for (int i = 0; i <= n; ++i) {
-    const double x = std::min(x_from_m + i * step_m, x_to_m);
-    path.push_back({x, s.y_at_m(x)});
-  }
+  for (const double x : path_xs(x_from_m, x_to_m, step_m)) path.push_back({x, s.y_at_m(x)});
   return path;
 }
 
 std::vector<PathPoint> sample_straight(double y_m, double x_from_m, double x_to_m, double step_m) {
-  assert(step_m > 0.0 && x_to_m > x_from_m);
   std::vector<PathPoint> path;
-  const int n = static_cast<int>(std::ceil((x_to_m - x_from_m) / step_m));
-  for (int i = 0; i <= n; ++i) path.push_back({std::min(x_from_m + i * step_m, x_to_m), y_m});
+  for (const double x : path_xs(x_from_m, x_to_m, step_m)) path.push_back({x, y_m});
   return path;
 }
 
@@ -65,6 +69,7 @@ std::optional<SigmoidChoice> choose_sigmoid(double pc_min_m, double pc_max_m, in
     if (!range || range->first > range->second) continue;
     for (const double kappa : even_grid(range->first, range->second, n_kappa)) {
       const double c = cost(pc, kappa);
+      if (!std::isfinite(c)) continue;  // inadmissible candidate
       if (!best || c < best->cost) best = SigmoidChoice{pc, kappa, c};
     }
   }

@@ -45,7 +45,8 @@ struct SigmoidChoice {
 
 // Grid search: n_pc values of P_c evenly over [pc_min, pc_max] (the midpoint when n_pc == 1 or
 // the bounds coincide), for each the admissible kappa range from kappa_range(pc) (nullopt: none),
-// n_kappa values evenly over it, each scored by cost(pc, kappa). Returns the cheapest (first on
+// n_kappa values evenly over it, each scored by cost(pc, kappa) (a non-finite cost marks an
+// inadmissible candidate). Returns the cheapest (first on
 // ties, so the result is deterministic), nullopt when no candidate is admissible.
 using KappaRange = std::optional<std::pair<double, double>>;
 std::optional<SigmoidChoice> choose_sigmoid(double pc_min_m, double pc_max_m, int n_pc,

@@ -1,0 +1,271 @@
+// The shared harness every planner of planner_names() passes through (issue #3): the same
+// scenarios, a small closed-loop kinematic rollout (point-mass ego on the returned path,
+// constant-speed traffic, an ideal V2V channel with cooperative responders that accept), and the
+// same sanity thresholds. RCPP planners additionally must respect the side lane's end and their
+// own bounds. Also: planner determinism, and planner-level properties on random scenarios.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "core/scenario.h"
+#include "planner/definition1.h"
+#include "planner/planner.h"
+
+namespace mg {
+namespace {
+
+Scenario load(const std::string& name) {
+  return load_scenario(std::string(MG_SOURCE_DIR) + "/corpus/scenarios/" + name + ".json");
+}
+
+const std::vector<std::string> kScenarios = {"fig2_s1_ahead_noncoop", "fig2_s2_behind_noncoop", "fig2_s3_ahead_coop",
+                                             "fig2_s4_behind_coop",   "no_feasible_gap_halt",   "paper_merge"};
+
+struct Rollout {
+  std::vector<PlanOutput> outputs;
+  std::vector<VehicleState> egos;   // ego state each output was planned for
+  bool left_road = false;           // the ego passed the side lane's end while still in the side lane
+  bool merged = false;              // ego centre within 0.2 m of the main lane centre at the end
+};
+
+double path_y(const std::vector<PathPoint>& path, double x) {
+  if (x <= path.front().x_m) return path.front().y_m;
+  for (std::size_t i = 1; i < path.size(); ++i)
+    if (x <= path[i].x_m) {
+      const double f = (x - path[i - 1].x_m) / (path[i].x_m - path[i - 1].x_m);
+      return path[i - 1].y_m + f * (path[i].y_m - path[i - 1].y_m);
+    }
+  return path.back().y_m;
+}
+
+Rollout roll_out(const Scenario& s, const std::string& planner_name, double horizon_s) {
+  auto planner = make_planner(planner_name);
+  WorldSnapshot w = initial_snapshot(s);
+  const double dt = s.params.sim.planner_cycle_s;
+  std::vector<double> responder_target(w.others.size(), -1.0);
+  std::vector<std::pair<double, V2vMessage>> in_flight;
+  Rollout r;
+  double v = s.ego.speed_mps;
+  for (int k = 0; k * dt < horizon_s; ++k) {
+    w.time_s = k * dt;
+    w.inbox.clear();
+    for (auto it = in_flight.begin(); it != in_flight.end();) {
+      if (it->first <= w.time_s) {
+        w.inbox.push_back(it->second);
+        it = in_flight.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    PlanOutput out = planner->plan(w);
+    r.egos.push_back(w.ego);
+    for (const V2vMessage& m : out.outbox) {  // cooperative responders accept after 2 latencies
+      const int idx = s.index_of(m.to_id);
+      if (idx < 0 || !s.vehicles[idx].v2v.capable || s.vehicles[idx].behaviour.type != BehaviourType::kCooperative)
+        continue;
+      V2vMessage reply{MessageType::kAccept, m.to_id, 0, w.time_s + s.vehicles[idx].v2v.latency_s};
+      in_flight.emplace_back(w.time_s + 2 * s.vehicles[idx].v2v.latency_s, reply);
+      for (std::size_t i = 0; i < w.others.size(); ++i)
+        if (w.others[i].id == m.to_id) responder_target[i] = m.target_speed_mps;
+    }
+    // Ego: speed toward the target within the limits; position along the path.
+    const Limits& lim = s.ego.limits;
+    double a = std::clamp((out.target_speed_mps - v) / dt, -out.accel_limit_mps2, out.accel_limit_mps2);
+    if (out.proper_response) a = std::min(a, -lim.brake_min_mps2);
+    a = std::clamp(a, -lim.brake_max_mps2, lim.accel_max_mps2);
+    v = std::max(0.0, v + a * dt);
+    const double x_new = w.ego.x_m + v * dt;
+    const double y_new = path_y(out.path, x_new);
+    w.ego.yaw_rad = v > 0 ? std::atan2(y_new - w.ego.y_m, v * dt) : 0.0;
+    w.ego.vx_mps = v * dt > 0 ? std::hypot(v * dt, y_new - w.ego.y_m) / dt : 0.0;
+    w.ego.x_m = x_new;
+    w.ego.y_m = y_new;
+    w.ego.accel_mps2 = a;
+    if (w.ego.y_m < -0.5 * s.road.lane_width_m && w.ego.x_m > s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m)
+      r.left_road = true;
+    for (std::size_t i = 0; i < w.others.size(); ++i) {  // traffic: constant speed, responders track v_o*
+      ObservedVehicle& o = w.others[i];
+      if (responder_target[i] >= 0) {
+        const double dv = std::clamp(responder_target[i] - o.state.vx_mps, -o.limits.brake_min_mps2 * dt,
+                                     o.limits.accel_max_mps2 * dt);
+        o.state.vx_mps += dv;
+      }
+      o.state.x_m += o.state.vx_mps * dt;
+    }
+    r.outputs.push_back(std::move(out));
+  }
+  r.merged = std::abs(w.ego.y_m) < 0.2;
+  return r;
+}
+
+void expect_sane(const Scenario& s, const Rollout& r, const std::string& where) {
+  for (std::size_t k = 0; k < r.outputs.size(); ++k) {
+    const PlanOutput& out = r.outputs[k];
+    const VehicleState& ego = r.egos[k];
+    SCOPED_TRACE(where + " cycle " + std::to_string(k));
+    ASSERT_GE(out.path.size(), 2u);
+    for (std::size_t i = 0; i < out.path.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(out.path[i].x_m) && std::isfinite(out.path[i].y_m));
+      if (i > 0) ASSERT_GT(out.path[i].x_m, out.path[i - 1].x_m);  // path monotone in X
+    }
+    EXPECT_LE(out.path.front().x_m, ego.x_m);                 // covers the current position
+    EXPECT_GE(out.path.back().x_m, ego.x_m + 100.0);          // and enough ahead
+    ASSERT_TRUE(std::isfinite(out.target_speed_mps));
+    EXPECT_GE(out.target_speed_mps, 0.0);
+    EXPECT_LE(out.target_speed_mps, s.road.speed_limit_mps + 1e-9);
+    EXPECT_TRUE(std::isfinite(out.accel_limit_mps2));
+    EXPECT_GT(out.accel_limit_mps2, 0.0);
+    EXPECT_FALSE(out.decision.reason.empty());
+    const Decision& d = out.decision;
+    if (!std::isnan(d.pc_m)) {
+      EXPECT_GE(d.pc_m, d.pc_min_m);
+      EXPECT_LE(d.pc_m, d.pc_max_m);
+    }
+    if (!std::isnan(d.ve_min_mps)) {
+      EXPECT_GE(d.ve_star_mps, d.ve_min_mps);
+      EXPECT_LE(d.ve_star_mps, d.ve_max_mps);
+    }
+  }
+}
+
+std::string digest(const Rollout& r) {
+  std::string out;
+  for (const PlanOutput& o : r.outputs) {
+    out += decision_to_json(o.decision).dump();
+    for (const PathPoint& p : o.path) out += std::to_string(p.x_m) + "," + std::to_string(p.y_m) + ";";
+    out += std::to_string(o.target_speed_mps) + std::to_string(o.outbox.size());
+  }
+  return out;
+}
+
+TEST(PlannerHarness, EveryPlannerIsRegisteredAndNamed) {
+  for (const std::string& name : planner_names()) {
+    auto p = make_planner(name);
+    ASSERT_NE(p, nullptr) << name;
+    EXPECT_EQ(p->name(), name);
+  }
+  EXPECT_EQ(make_planner("no-such-planner"), nullptr);
+}
+
+TEST(PlannerHarness, EveryPlannerIsSaneOnEveryScenario) {
+  for (const std::string& scenario : kScenarios) {
+    const Scenario s = load(scenario);
+    for (const std::string& name : planner_names()) {
+      const Rollout r = roll_out(s, name, 25.0);
+      expect_sane(s, r, scenario + " / " + name);
+    }
+  }
+}
+
+TEST(PlannerHarness, EveryPlannerIsDeterministic) {
+  for (const std::string scenario : {"fig2_s3_ahead_coop", "no_feasible_gap_halt"}) {
+    const Scenario s = load(scenario);
+    for (const std::string& name : planner_names())
+      EXPECT_EQ(digest(roll_out(s, name, 15.0)), digest(roll_out(s, name, 15.0))) << scenario << " / " << name;
+  }
+}
+
+TEST(PlannerHarness, RcppPlannersMergeInTheFig2SituationsAndNeverLeaveTheRoad) {
+  // Non-cooperative situations merge with both RCPP planners; cooperative ones merge with
+  // rcpp-coop (the responder accepts); every RCPP run stays on the road.
+  const std::vector<std::pair<std::string, std::string>> merges = {
+      {"fig2_s1_ahead_noncoop", "rcpp"}, {"fig2_s2_behind_noncoop", "rcpp"}, {"fig2_s1_ahead_noncoop", "rcpp-coop"},
+      {"fig2_s3_ahead_coop", "rcpp-coop"}, {"fig2_s4_behind_coop", "rcpp-coop"}};
+  for (const auto& [scenario, planner] : merges) {
+    const Rollout r = roll_out(load(scenario), planner, 25.0);
+    EXPECT_TRUE(r.merged) << scenario << " / " << planner;
+    EXPECT_FALSE(r.left_road) << scenario << " / " << planner;
+  }
+  for (const std::string& scenario : kScenarios)
+    for (const std::string planner : {"rcpp", "rcpp-coop"})
+      EXPECT_FALSE(roll_out(load(scenario), planner, 25.0).left_road) << scenario << " / " << planner;
+}
+
+TEST(PlannerHarness, Definition13HaltsThenMergesFromStandstill) {
+  // no_feasible_gap_halt: the ego must halt before x = 150 and merge behind the platoon.
+  const Scenario s = load("no_feasible_gap_halt");
+  const Rollout r = roll_out(s, "rcpp", s.params.sim.horizon_s);
+  bool halted = false;
+  for (std::size_t k = 0; k < r.egos.size(); ++k)
+    halted = halted || (r.outputs[k].decision.mode == DecisionMode::kDef1Halt && r.egos[k].vx_mps < 0.05);
+  EXPECT_TRUE(halted);
+  EXPECT_TRUE(r.merged);
+  EXPECT_FALSE(r.left_road);
+}
+
+TEST(PlannerHarness, SilentResponderFallsBackToDefinition1) {
+  // Def. 2.3: the same Fig. 2 situation 3 with a non-responsive vehicle: the request times out
+  // after rho_c and the ego falls back to Definition 1 (halt), never merging without an answer.
+  Scenario s = load("fig2_s3_ahead_coop");
+  s.vehicles[0].behaviour.type = BehaviourType::kNonResponsive;
+  const Rollout r = roll_out(s, "rcpp-coop", 3.0);
+  ASSERT_EQ(r.outputs[0].decision.mode, DecisionMode::kDef2Request);
+  bool fell_back = false;
+  for (const PlanOutput& o : r.outputs) {
+    EXPECT_NE(o.decision.mode, DecisionMode::kDef2Merge);
+    fell_back = fell_back || (o.decision.mode == DecisionMode::kDef1Halt &&
+                              o.decision.reason.find("Def. 2.3") != std::string::npos);
+  }
+  EXPECT_TRUE(fell_back);
+}
+
+// ---- planner-level properties on random scenarios ----
+Scenario gen_scenario() {
+  Scenario s;
+  s.road.side_lane_start_x_m = 0;
+  s.road.side_lane_end_x_m = *rc::gen::inRange(150, 500);
+  s.ego.x_m = *rc::gen::inRange(0, 100);
+  s.ego.y_m = -s.road.lane_width_m;
+  s.ego.speed_mps = *rc::gen::inRange(0, 300) / 10.0;
+  s.ego.v2v.capable = *rc::gen::arbitrary<bool>();
+  const int n = *rc::gen::inRange(0, 4);
+  for (int i = 0; i < n; ++i) {
+    MainVehicle v;
+    v.id = i + 1;
+    v.x_m = s.ego.x_m + *rc::gen::inRange(-100, 100) + 12.0 * i;
+    v.speed_mps = *rc::gen::inRange(0, 300) / 10.0;
+    v.v2v.capable = *rc::gen::arbitrary<bool>();
+    s.vehicles.push_back(v);
+  }
+  return s;
+}
+
+RC_GTEST_PROP(PlannerProperties, ChosenMergeSpeedSatisfiesDefinition1ForItsGap, ()) {
+  const Scenario s = gen_scenario();
+  const WorldSnapshot w = initial_snapshot(s);
+  const PlanOutput out = make_planner(*rc::gen::element<std::string>("rcpp", "rcpp-coop"))->plan(w);
+  const Decision& d = out.decision;
+  RC_PRE(d.mode == DecisionMode::kDef1Merge);
+  RC_ASSERT(d.gap.has_value());
+  const Def1Context c{s.ego.x_m, s.ego.speed_mps, s.ego.size.length_m, s.ego.limits,
+                      s.params.rss.response_time_s, d.merge_duration_s, s.road.speed_limit_mps};
+  for (const MainVehicle& v : s.vehicles) {
+    const MainLaneVehicle o{v.id, v.x_m, v.speed_mps, v.size.length_m, v.limits};
+    if (v.id == d.gap->follower_id) RC_ASSERT(def1_1_margin_m(c, o, d.ve_star_mps) >= -1e-9);
+    if (v.id == d.gap->leader_id) RC_ASSERT(def1_2_margin_m(c, o, d.ve_star_mps) >= -1e-9);
+  }
+  RC_ASSERT(d.pc_min_m <= d.pc_m && d.pc_m <= d.pc_max_m);
+  RC_ASSERT(d.ve_min_mps <= d.ve_star_mps && d.ve_star_mps <= d.ve_max_mps);
+  RC_ASSERT(d.pc_m < s.road.side_lane_end_x_m);
+}
+
+RC_GTEST_PROP(PlannerProperties, SamePlannerSameSnapshotSameOutput, ()) {
+  const Scenario s = gen_scenario();
+  const WorldSnapshot w = initial_snapshot(s);
+  for (const std::string& name : planner_names()) {
+    const PlanOutput a = make_planner(name)->plan(w);
+    const PlanOutput b = make_planner(name)->plan(w);
+    RC_ASSERT(decision_to_json(a.decision) == decision_to_json(b.decision));
+    RC_ASSERT(a.target_speed_mps == b.target_speed_mps);
+    RC_ASSERT(a.path.size() == b.path.size());
+    for (std::size_t i = 0; i < a.path.size(); ++i)
+      RC_ASSERT(a.path[i].x_m == b.path[i].x_m && a.path[i].y_m == b.path[i].y_m);
+  }
+}
+
+}  // namespace
+}  // namespace mg

@@ -52,7 +52,8 @@ const std::vector<MonitorEntry>& rule_monitors() {
 
 std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const RightOfWay& row,
                                      std::vector<std::vector<double>>* margins) {
-  const MonitorContext ctx{s, t, row, catalog_params()};
+  const PairTable pairs(s, t);
+  const MonitorContext ctx{s, t, row, catalog_params(), pairs};
   std::vector<RuleResult> results;
   results.reserve(rule_monitors().size());
   for (const MonitorEntry& m : rule_monitors()) {

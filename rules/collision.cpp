@@ -12,29 +12,6 @@
 namespace mg {
 namespace {
 
-struct Rect {
-  double x_lo, x_hi, y_lo, y_hi;
-};
-
-Rect footprint_aabb(const BoxPose& p) {
-  const double c = std::abs(std::cos(p.yaw_rad));
-  const double s = std::abs(std::sin(p.yaw_rad));
-  const double hx = 0.5 * (p.length_m * c + p.width_m * s);
-  const double hy = 0.5 * (p.length_m * s + p.width_m * c);
-  return {p.x_m - hx, p.x_m + hx, p.y_m - hy, p.y_m + hy};
-}
-
-Rect unite(const Rect& a, const Rect& b) {
-  return {std::min(a.x_lo, b.x_lo), std::max(a.x_hi, b.x_hi), std::min(a.y_lo, b.y_lo),
-          std::max(a.y_hi, b.y_hi)};
-}
-
-double clearance(const Rect& a, const Rect& b) {
-  const double sx = std::max(a.x_lo - b.x_hi, b.x_lo - a.x_hi);
-  const double sy = std::max(a.y_lo - b.y_hi, b.y_lo - a.y_hi);
-  return std::max(sx, sy);
-}
-
 fcl::Transform3d transform_of(const BoxPose& p) {
   fcl::Transform3d tf = fcl::Transform3d::Identity();
   tf.linear() = fcl::AngleAxisd(p.yaw_rad, fcl::Vector3d::UnitZ()).toRotationMatrix();
@@ -46,14 +23,32 @@ fcl::Boxd box_of(const BoxPose& p) { return fcl::Boxd(p.length_m, p.width_m, p.h
 
 }  // namespace
 
+Footprint footprint_of(const BoxPose& p) {
+  double hx = 0.5 * p.length_m, hy = 0.5 * p.width_m;
+  if (p.yaw_rad != 0.0) {
+    const double c = std::abs(std::cos(p.yaw_rad));
+    const double s = std::abs(std::sin(p.yaw_rad));
+    hx = 0.5 * (p.length_m * c + p.width_m * s);
+    hy = 0.5 * (p.length_m * s + p.width_m * c);
+  }
+  return {p.x_m - hx, p.x_m + hx, p.y_m - hy, p.y_m + hy};
+}
+
+Footprint unite(const Footprint& a, const Footprint& b) {
+  return {std::min(a.x_lo, b.x_lo), std::max(a.x_hi, b.x_hi), std::min(a.y_lo, b.y_lo), std::max(a.y_hi, b.y_hi)};
+}
+
+double clearance_m(const Footprint& a, const Footprint& b) {
+  return std::max(std::max(a.x_lo - b.x_hi, b.x_lo - a.x_hi), std::max(a.y_lo - b.y_hi, b.y_lo - a.y_hi));
+}
+
 double aabb_clearance_m(const BoxPose& a, const BoxPose& b) {
-  return clearance(footprint_aabb(a), footprint_aabb(b));
+  return clearance_m(footprint_of(a), footprint_of(b));
 }
 
 double swept_aabb_clearance_m(const BoxPose& a0, const BoxPose& a1, const BoxPose& b0,
                               const BoxPose& b1) {
-  return clearance(unite(footprint_aabb(a0), footprint_aabb(a1)),
-                   unite(footprint_aabb(b0), footprint_aabb(b1)));
+  return clearance_m(unite(footprint_of(a0), footprint_of(a1)), unite(footprint_of(b0), footprint_of(b1)));
 }
 
 ContactResult fcl_box_contact(const BoxPose& a, const BoxPose& b) {
@@ -100,12 +95,17 @@ std::optional<double> fcl_box_contact_continuous(const BoxPose& a0, const BoxPos
 }
 
 PairCheck check_box_pair(const BoxPose& a0, const BoxPose& a1, const BoxPose& b0, const BoxPose& b1) {
-  PairCheck out;
-  const double now = aabb_clearance_m(a1, b1);
   if (swept_aabb_clearance_m(a0, a1, b0, b1) > 0.0) {  // pre-filter: cannot touch
-    out.margin_m = now;
+    PairCheck out;
+    out.margin_m = aabb_clearance_m(a1, b1);
     return out;
   }
+  return check_box_pair_fcl(a0, a1, b0, b1, aabb_clearance_m(a1, b1));
+}
+
+PairCheck check_box_pair_fcl(const BoxPose& a0, const BoxPose& a1, const BoxPose& b0, const BoxPose& b1,
+                             double now) {
+  PairCheck out;
   const ContactResult at_step = fcl_box_contact(a1, b1);
   if (at_step.collide) {
     out.collide = true;

@@ -18,6 +18,15 @@ struct BoxPose {
   double height_m = 0.0;
 };
 
+// Axis-aligned bounding rectangle of a box's footprint (no trigonometry when yaw == 0).
+struct Footprint {
+  double x_lo = 0.0, x_hi = 0.0, y_lo = 0.0, y_hi = 0.0;
+};
+Footprint footprint_of(const BoxPose& p);
+Footprint unite(const Footprint& a, const Footprint& b);
+// > 0 apart (the larger of the X and Y separations), <= 0 when the rectangles overlap.
+double clearance_m(const Footprint& a, const Footprint& b);
+
 // Signed clearance between the axis-aligned bounding rectangles of two footprints: > 0 apart
 // (the larger of the X and Y separations), <= 0 when the rectangles overlap. A lower bound of
 // the true clearance's sign: boxes can only touch when this is <= 0.
@@ -50,5 +59,9 @@ struct PairCheck {
 };
 // Pre-filtered pair check for the motion from step i-1 (a0, b0) to step i (a1, b1).
 PairCheck check_box_pair(const BoxPose& a0, const BoxPose& a1, const BoxPose& b0, const BoxPose& b1);
+// The FCL part of check_box_pair, for a pair whose swept rectangles overlap; `aabb_now` is
+// clearance_m of the rectangles at step i.
+PairCheck check_box_pair_fcl(const BoxPose& a0, const BoxPose& a1, const BoxPose& b0, const BoxPose& b1,
+                             double aabb_now);
 
 }  // namespace mg

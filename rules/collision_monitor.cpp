@@ -1,6 +1,8 @@
 #include "rules/collision_monitor.h"
 
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace mg {
 
@@ -15,22 +17,34 @@ MonitorOutput monitor_collision(const MonitorContext& ctx) {
   const auto& steps = ctx.trace.steps;
   const std::size_t n = s.vehicles.size() + 1;
   MarginAccumulator acc("collision", steps.size());
+  std::vector<BoxPose> pose_prev(n), pose_now(n);
+  std::vector<Footprint> fp_now(n), swept(n);
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const TraceStep& prev = steps[k == 0 ? 0 : k - 1];
+    for (std::size_t v = 0; v < n; ++v) {
+      pose_now[v] = box_pose_of(s, steps[k], v);
+      const Footprint fp = footprint_of(pose_now[v]);
+      swept[v] = k == 0 ? fp : unite(fp_now[v], fp);  // fp_now still holds step k-1 here
+      fp_now[v] = fp;
+      if (k == 0) pose_prev[v] = pose_now[v];
+    }
     for (std::size_t i = 0; i < n; ++i) {
-      const BoxPose a0 = box_pose_of(s, prev, i);
-      const BoxPose a1 = box_pose_of(s, steps[k], i);
       for (std::size_t j = i + 1; j < n; ++j) {
-        const PairCheck c = check_box_pair(a0, a1, box_pose_of(s, prev, j), box_pose_of(s, steps[k], j));
+        PairCheck c;
+        if (clearance_m(swept[i], swept[j]) > 0.0) {  // pre-filter: FCL only for pairs that could touch
+          c.margin_m = clearance_m(fp_now[i], fp_now[j]);
+        } else {
+          c = check_box_pair_fcl(pose_prev[i], pose_now[i], pose_prev[j], pose_now[j], clearance_m(fp_now[i], fp_now[j]));
+        }
         if (acc.record(k, steps[k].time_s, c.margin_m, kNobody, 0.0, c.margin_m)) {
           std::ostringstream os;
           os << party_name(party_of(s, i)) << " and " << party_name(party_of(s, j)) << " collided at t = "
-             << steps[k].time_s << " s (x = " << a1.x_m << " m"
+             << steps[k].time_s << " s (x = " << pose_now[i].x_m << " m"
              << (c.by_continuous ? ", found by the continuous check between steps" : "") << ")";
           acc.set_detail(os.str());
         }
       }
     }
+    std::swap(pose_prev, pose_now);
   }
   return acc.finish();
 }

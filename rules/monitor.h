@@ -12,6 +12,7 @@
 #include "core/scenario.h"
 #include "rules/check.h"
 #include "rules/liability.h"
+#include "rules/pair_geometry.h"
 #include "rules/rule_catalog.h"
 #include "sim/trace.h"
 
@@ -22,6 +23,7 @@ struct MonitorContext {
   const Trace& trace;
   const RightOfWay& row;
   const CatalogParams& params;
+  const PairTable& pairs;  // RSS geometry of every pair at every step
 };
 
 struct MonitorOutput {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "rules/definition1_monitor.h"
@@ -9,7 +10,7 @@
 namespace mg {
 namespace {
 
-constexpr int kSpeedSamples = 16;
+constexpr int kBisections = 24;
 
 // Distance covered in tau seconds while changing speed from v to v_star at the given rates.
 double distance_m(double v, double v_star, double accel, double brake, double tau) {
@@ -34,25 +35,41 @@ bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho, dou
   const double lo = std::max(0.0, v - lim.brake_min_mps2 * rho / 2.0);
   const double hi = std::min(s.road.speed_limit_mps, v + lim.accel_max_mps2 * rho / 2.0);
   const double end_x = s.road.side_lane_end_x_m - s.params.planner.halt_margin_m - s.ego.size.length_m / 2.0;
-  for (int n = 0; n < kSpeedSamples; ++n) {
-    const double v_star = lo + (hi - lo) * n / (kSpeedSamples - 1);
-    const double half = distance_m(v, v_star, lim.accel_max_mps2, lim.brake_min_mps2, rho / 2.0);
-    const double full = distance_m(v, v_star, lim.accel_max_mps2, lim.brake_min_mps2, rho);
-    if (ego.x_m + half > end_x) continue;
-    // The predicted ego positions replace X + v_e* rho/2 and X + v_e* rho in ineq. (1), (2).
-    VehicleState at_half = ego, at_full = ego;
-    at_half.x_m = ego.x_m + half - v_star * rho / 2.0;
-    at_full.x_m = ego.x_m + full - v_star * rho;
-    for (std::size_t g = 0; g <= lane.size(); ++g) {
-      const bool follower_ok = g == 0 || def1_1_margin_m(s, at_half, lane[g - 1], state_of(step, lane[g - 1]),
-                                                          v_star, rho) >= margin;
-      // Ineq. (2) must hold over [T_dec, T_dec + rho] (RCPP Def. 1.2): checked at rho/2 and rho.
-      const bool leader_ok =
-          g == lane.size() ||
-          (def1_2_margin_m(s, at_full, lane[g], state_of(step, lane[g]), v_star, rho) >= margin &&
-           def1_2_margin_m(s, at_half, lane[g], state_of(step, lane[g]), v_star, rho / 2.0) >= margin);
-      if (follower_ok && leader_ok) return true;
+  // The predicted ego (X shifted so that X + v_e* tau is where it really is after tau).
+  auto ego_at = [&](double v_star, double tau) {
+    VehicleState e = ego;
+    e.x_m = ego.x_m + distance_m(v, v_star, lim.accel_max_mps2, lim.brake_min_mps2, tau) - v_star * tau;
+    return e;
+  };
+  constexpr double kOpen = std::numeric_limits<double>::infinity();
+  for (std::size_t g = 0; g <= lane.size(); ++g) {
+    // Ineq. (1) toward the follower: non-decreasing in v_e* (the ego gets farther ahead and
+    // D_lon with the ego in front shrinks).
+    auto follower_margin = [&](double v_star) {
+      return g == 0 ? kOpen
+                    : def1_1_margin_m(s, ego_at(v_star, rho / 2.0), lane[g - 1], state_of(step, lane[g - 1]), v_star, rho);
+    };
+    // Ineq. (2) toward the leader at rho/2 and rho, and the midpoint before the side lane end:
+    // non-increasing in v_e*.
+    auto leader_margin = [&](double v_star) {
+      const VehicleState half = ego_at(v_star, rho / 2.0);
+      double m = end_x - (half.x_m + v_star * rho / 2.0);
+      if (g < lane.size()) {
+        const VehicleState& o = state_of(step, lane[g]);
+        m = std::min({m, def1_2_margin_m(s, ego_at(v_star, rho), lane[g], o, v_star, rho),
+                      def1_2_margin_m(s, half, lane[g], o, v_star, rho / 2.0)});
+      }
+      return m;
+    };
+    if (follower_margin(hi) < margin || leader_margin(lo) < margin) continue;
+    // Smallest v_e* that satisfies ineq. (1) (bisection on a monotone margin), then ineq. (2).
+    double a = lo, b = hi;
+    if (follower_margin(lo) >= margin) b = lo;
+    for (int it = 0; it < kBisections && b > a; ++it) {
+      const double mid = 0.5 * (a + b);
+      (follower_margin(mid) >= margin ? b : a) = mid;
     }
+    if (leader_margin(b) >= margin) return true;
   }
   return false;
 }
@@ -63,14 +80,22 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
   MarginAccumulator acc("progress", steps.size());
   const double grace = ctx.params.progress_grace_s;
   double run_start = -1.0;
+  double last_eval = -1.0;
+  bool feasible = false;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const TraceStep& st = steps[i];
     const bool halting = st.ego_mode == DecisionMode::kDef1Halt || speed_of(st.ego) < ctx.params.halted_speed_mps;
     if (!halting || st.ego.y_m >= -s.road.lane_width_m / 2.0) {
       run_start = -1.0;
+      last_eval = -1.0;
       continue;
     }
-    if (!def1_gap_feasible(s, st, s.params.planner.merge_duration_s, ctx.params.progress_gap_margin_m)) {
+    // Feasibility is re-evaluated once per planner cycle (the planner cannot react faster).
+    if (last_eval < 0.0 || st.time_s - last_eval >= s.params.sim.planner_cycle_s - 1e-9) {
+      feasible = def1_gap_feasible(s, st, s.params.planner.merge_duration_s, ctx.params.progress_gap_margin_m);
+      last_eval = st.time_s;
+    }
+    if (!feasible) {
       run_start = -1.0;
       acc.record(i, st.time_s, grace, kEgoId, grace, 0.0);
       continue;

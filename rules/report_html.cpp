@@ -7,7 +7,8 @@
 
 #include "rules/collision_monitor.h"
 #include "rules/report_markdown.h"
-#include "rules/rss_distance_monitor.h"
+#include "rules/monitor.h"
+#include "rules/pair_geometry.h"
 #include "rules/rule_catalog.h"
 #include "sim/svg_plot.h"
 

@@ -5,7 +5,6 @@
 #include <limits>
 #include <sstream>
 
-#include "core/rss.h"
 
 namespace mg {
 namespace {
@@ -35,33 +34,6 @@ std::string describe(const Scenario& s, std::size_t k) { return party_name(party
 
 }  // namespace
 
-PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j) {
-  const VehicleState& a = state_of(step, i);
-  const VehicleState& b = state_of(step, j);
-  PairGeometry g;
-  g.rear = a.x_m <= b.x_m ? i : j;
-  g.front = g.rear == i ? j : i;
-  g.left = a.y_m >= b.y_m ? i : j;
-  g.right = g.left == i ? j : i;
-  const VehicleState& r = state_of(step, g.rear);
-  const VehicleState& f = state_of(step, g.front);
-  const double T = s.params.rss.response_time_s;
-  g.gap_m = f.x_m - r.x_m;
-  g.d_lon_m = rss_longitudinal_m({std::max(speed_of(r), 0.0), std::max(speed_of(f), 0.0),
-                                  size_of(s, g.rear).length_m, size_of(s, g.front).length_m, T,
-                                  limits_of(s, g.rear).accel_max_mps2, limits_of(s, g.rear).brake_min_mps2,
-                                  limits_of(s, g.front).brake_max_mps2});
-  const VehicleState& l = state_of(step, g.left);
-  const VehicleState& rt = state_of(step, g.right);
-  // Lateral limits: the ego's when it is in the pair (the only vehicle that moves laterally).
-  const Limits& lat = limits_of(s, i == 0 || j == 0 ? 0 : g.left);
-  g.dy_m = l.y_m - rt.y_m;
-  g.d_lat_m = rss_lateral_m({l.road_vy_mps(), rt.road_vy_mps(), size_of(s, g.left).width_m,
-                             size_of(s, g.right).width_m, T, lat.lat_accel_max_mps2,
-                             lat.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
-  return g;
-}
-
 MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
   const Scenario& s = ctx.scenario;
   const auto& steps = ctx.trace.steps;
@@ -78,7 +50,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
       if (state_of(st, v).accel_mps2 < -(limits_of(s, v).brake_max_mps2 + tol)) last_overbrake[v] = st.time_s;
     }
     for_each_pair(n, [&](std::size_t p, std::size_t i, std::size_t j) {
-      const PairGeometry g = pair_geometry(s, st, i, j);
+      const PairGeometry& g = ctx.pairs.at(k, p);
       Episode& e = episodes[p];
       const bool was_lon_only = prev_lon_only[p] != 0;
       prev_lon_only[p] = g.lon_unsafe() && !g.lat_unsafe();
@@ -128,7 +100,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const TraceStep& st = steps[k];
     for (std::size_t j = 1; j < n; ++j) {
-      const PairGeometry g = pair_geometry(s, st, 0, j);
+      const PairGeometry& g = ctx.pairs.at(k, PairTable::index(n, 0, j));
       Episode& e = episodes[j - 1];
       if (!g.lon_unsafe() || !g.lat_unsafe()) {
         e.active = false;

@@ -1,0 +1,68 @@
+#include "rules/pair_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/rss.h"
+#include "rules/check.h"
+#include "rules/monitor.h"
+
+namespace mg {
+namespace {
+
+struct Kinematics {
+  double x_m, y_m, vx_mps, vy_mps;  // road frame
+};
+
+Kinematics kinematics_of(const VehicleState& v) {
+  if (v.yaw_rad == 0.0) return {v.x_m, v.y_m, v.vx_mps, v.vy_mps};  // main-lane vehicles: no trig
+  return {v.x_m, v.y_m, v.road_vx_mps(), v.road_vy_mps()};
+}
+
+// Kinematics ki, kj of vehicles i and j (0 = ego).
+PairGeometry geometry_of(const Scenario& s, const Kinematics& ki, const Kinematics& kj, std::size_t i, std::size_t j) {
+  PairGeometry g;
+  const bool i_rear = ki.x_m <= kj.x_m;
+  const bool i_left = ki.y_m >= kj.y_m;
+  g.rear = i_rear ? i : j;
+  g.front = i_rear ? j : i;
+  g.left = i_left ? i : j;
+  g.right = i_left ? j : i;
+  const Kinematics& r = i_rear ? ki : kj;
+  const Kinematics& f = i_rear ? kj : ki;
+  const Kinematics& l = i_left ? ki : kj;
+  const Kinematics& rt = i_left ? kj : ki;
+  const double T = s.params.rss.response_time_s;
+  g.gap_m = f.x_m - r.x_m;
+  g.d_lon_m = rss_longitudinal_m({std::max(r.vx_mps, 0.0), std::max(f.vx_mps, 0.0), size_of(s, g.rear).length_m,
+                                  size_of(s, g.front).length_m, T, limits_of(s, g.rear).accel_max_mps2,
+                                  limits_of(s, g.rear).brake_min_mps2, limits_of(s, g.front).brake_max_mps2});
+  // Lateral limits: the ego's when it is in the pair (the only vehicle that moves laterally).
+  const Limits& lat = limits_of(s, i == 0 || j == 0 ? 0 : g.left);
+  g.dy_m = l.y_m - rt.y_m;
+  g.d_lat_m = rss_lateral_m({l.vy_mps, rt.vy_mps, size_of(s, g.left).width_m, size_of(s, g.right).width_m, T,
+                             lat.lat_accel_max_mps2, lat.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
+  return g;
+}
+
+}  // namespace
+
+PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j) {
+  return geometry_of(s, kinematics_of(state_of(step, i)), kinematics_of(state_of(step, j)), i, j);
+}
+
+PairTable::PairTable(const Scenario& s, const Trace& t) {
+  const std::size_t n = s.vehicles.size() + 1;
+  pairs_ = n * (n - 1) / 2;
+  geometry_.resize(t.steps.size() * pairs_);
+  std::vector<Kinematics> k(n);
+  for (std::size_t step = 0; step < t.steps.size(); ++step) {
+    for (std::size_t v = 0; v < n; ++v) k[v] = kinematics_of(state_of(t.steps[step], v));
+    std::size_t p = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) geometry_[step * pairs_ + p++] = geometry_of(s, k[i], k[j], i, j);
+    }
+  }
+}
+
+}  // namespace mg

@@ -21,8 +21,6 @@ using Clock = std::chrono::steady_clock;
 constexpr double kShrinkGraceS = 10.0;
 
 struct WorkerStats {
-  std::uint64_t property_failures = 0;
-  std::map<std::string, std::uint64_t> by_property, by_rule, by_party;
   std::map<std::string, MarginStats> margins;
 };
 
@@ -82,10 +80,6 @@ class Campaign {
     std::map<Signature, PropertyFailure> distinct;  // first failure per signature in this scenario
     for (const PropertyFailure& f : outcome.failures) distinct.try_emplace(signature_of(outcome.planner, f), f);
     for (const auto& [signature, failure] : distinct) {
-      ++stats.property_failures;
-      ++stats.by_property[signature.property];
-      ++stats.by_rule[signature.rule];
-      ++stats.by_party[signature.party];
       if (claim_for_shrinking(signature, failure, i)) shrink_into_corpus(check, signature, failure, i, generated);
     }
     if (!distinct.empty()) ++failing_;
@@ -171,33 +165,48 @@ class Campaign {
 
   void report_progress_until_done() {
     auto next_report = Clock::now();
+    const auto period = [](double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); };
+    auto next_checkpoint = Clock::now() + period(opt_.checkpoint_period_s);
     while (active_.load() > 0) {
       if (opt_.on_progress && Clock::now() >= next_report) {
         opt_.on_progress(progress());
-        next_report += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(opt_.progress_period_s));
+        next_report += period(opt_.progress_period_s);
+      }
+      if (opt_.on_checkpoint && Clock::now() >= next_checkpoint) {
+        opt_.on_checkpoint(snapshot());
+        next_checkpoint += period(opt_.checkpoint_period_s);
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     if (opt_.on_progress) opt_.on_progress(progress());
   }
 
-  CampaignResult collect(const std::vector<WorkerStats>& stats) {
+  // Everything but the margins (those are per worker until the end).
+  CampaignResult snapshot() {
     CampaignResult r;
     r.scenarios = scenarios_.load();
     r.failing_scenarios = failing_.load();
     r.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
     r.interrupted = externally_stopped();
-    r.signatures = signatures_;
-    for (const WorkerStats& s : stats) {
-      r.property_failures += s.property_failures;
-      for (const auto& [k, n] : s.by_property) r.by_property[k] += n;
-      for (const auto& [k, n] : s.by_rule) r.by_rule[k] += n;
-      for (const auto& [k, n] : s.by_party) r.by_party[k] += n;
-      for (const auto& [rule, m] : s.margins) r.margins[rule].merge(m);
+    {
+      std::lock_guard lock(mutex_);
+      r.signatures = signatures_;
     }
-    for (const auto& [signature, rec] : r.signatures)
+    for (const auto& [signature, rec] : r.signatures) {
+      r.property_failures += rec.count;
+      r.by_property[signature.property] += rec.count;
+      r.by_rule[signature.rule] += rec.count;
+      r.by_party[signature.party] += rec.count;
       if (!rec.case_path.empty()) r.new_cases.push_back(rec.case_path);
+    }
     std::sort(r.new_cases.begin(), r.new_cases.end());
+    return r;
+  }
+
+  CampaignResult collect(const std::vector<WorkerStats>& stats) {
+    CampaignResult r = snapshot();
+    for (const WorkerStats& s : stats)
+      for (const auto& [rule, m] : s.margins) r.margins[rule].merge(m);
     return r;
   }
 

@@ -37,23 +37,6 @@ struct CampaignProgress {
   std::optional<double> remaining_s;   // estimate with --runs (after the first runs), exact with --time
 };
 
-struct CampaignOptions {
-  std::uint64_t seed = 1;
-  std::optional<std::uint64_t> runs;   // total run indices of the whole campaign (all shards)
-  std::optional<double> time_s;        // wall-clock budget for generating new runs
-  int jobs = 1;
-  int shard_index = 0;                 // K of --shard K/N
-  int shard_count = 1;                 // N
-  std::string planner;                 // recorded when the check throws (else the result's planner)
-  std::string corpus_dir;              // cases are written here; empty: failures are counted only
-  GenConfig gen;
-  int determinism_every = 8;           // run i is checked twice when i % determinism_every == 0
-  ShrinkBudget shrink;                 // `stop` is replaced by the campaign's own
-  const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT) to stop after the runs in flight
-  std::function<void(const CampaignProgress&)> on_progress;  // called about every progress_period_s
-  double progress_period_s = 1.0;
-};
-
 // Margin histogram bin edges (in each rule's unit); bins are (-inf,e0), [e0,e1), ..., [e_last,inf).
 inline constexpr std::array<double, 7> kMarginBinEdges = {-10.0, -1.0, -0.1, 0.0, 0.1, 1.0, 10.0};
 
@@ -93,6 +76,27 @@ struct CampaignResult {
   std::map<std::string, MarginStats> margins;  // per rule, over every checked scenario
   std::vector<std::string> new_cases;          // paths, sorted
   double scenarios_per_second() const { return seconds > 0.0 ? static_cast<double>(scenarios) / seconds : 0.0; }
+};
+
+struct CampaignOptions {
+  std::uint64_t seed = 1;
+  std::optional<std::uint64_t> runs;   // total run indices of the whole campaign (all shards)
+  std::optional<double> time_s;        // wall-clock budget for generating new runs
+  int jobs = 1;
+  int shard_index = 0;                 // K of --shard K/N
+  int shard_count = 1;                 // N
+  std::string planner;                 // recorded when the check throws (else the result's planner)
+  std::string corpus_dir;              // cases are written here; empty: failures are counted only
+  GenConfig gen;
+  int determinism_every = 8;           // run i is checked twice when i % determinism_every == 0
+  ShrinkBudget shrink;                 // `stop` is replaced by the campaign's own
+  const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT) to stop after the runs in flight
+  std::function<void(const CampaignProgress&)> on_progress;  // called about every progress_period_s
+  double progress_period_s = 1.0;
+  // Called about every checkpoint_period_s with the result so far (without margins), e.g. to
+  // rewrite the report so that a killed campaign still leaves a recent one.
+  std::function<void(const CampaignResult&)> on_checkpoint;
+  double checkpoint_period_s = 60.0;
 };
 
 // Validates the options (InputError on nonsense such as jobs < 1 or K >= N) and runs.

@@ -134,6 +134,8 @@ int run_fuzz(const std::vector<std::string>& args) {
   SigintGuard guard;
   o.stop = &g_stop;
   o.on_progress = progress_printer(::isatty(STDERR_FILENO) != 0);
+  if (!report_dir.empty())  // a killed campaign still leaves a report at most a minute old
+    o.on_checkpoint = [&o, &report_dir](const fuzz::CampaignResult& r) { fuzz::write_campaign_report(report_dir, o, r, {}); };
   const fuzz::CampaignResult result = fuzz::run_campaign(o, make_check);
   if (::isatty(STDERR_FILENO)) std::cerr << "\n";
   if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, write_liability_reports(report_dir, result));

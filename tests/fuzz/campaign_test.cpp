@@ -4,6 +4,7 @@
 #include <fstream>
 #include <mutex>
 #include <set>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -184,6 +185,29 @@ TEST(Campaign, ACorruptCorpusIsRefusedBeforeAnythingRuns) {
   EXPECT_THROW(run_campaign(options(10, 1, dir), counting), InputError);
   EXPECT_EQ(calls.load(), 0);
   fs::remove_all(dir);
+}
+
+TEST(Campaign, CheckpointsReportTheResultSoFar) {
+  const CheckFactory slow = [] {
+    return CheckFn([](const Scenario& s) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      return test::fake_check(s);
+    });
+  };
+  auto o = options(200, 2, {});
+  o.corpus_dir.clear();
+  o.checkpoint_period_s = 0.05;
+  std::vector<CampaignResult> checkpoints;
+  o.on_checkpoint = [&](const CampaignResult& r) { checkpoints.push_back(r); };
+  const CampaignResult final_result = run_campaign(o, slow);
+  ASSERT_FALSE(checkpoints.empty());
+  for (const CampaignResult& c : checkpoints) {
+    EXPECT_LE(c.scenarios, final_result.scenarios);
+    std::uint64_t sum = 0;
+    for (const auto& [property, n] : c.by_property) sum += n;
+    EXPECT_EQ(sum, c.property_failures);
+  }
+  EXPECT_EQ(final_result.property_failures, final_result.by_rule.at("fake_proximity"));
 }
 
 TEST(Campaign, NonsenseOptionsAreRejected) {

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
+#include "core/input_error.h"
 #include "fuzz/campaign.h"
 #include "fuzz/campaign_report.h"
 #include "fuzz/corpus_case.h"
@@ -99,7 +100,7 @@ void print_human(const fuzz::CampaignResult& r) {
               << "\n";
 }
 
-int run_fuzz(const std::vector<std::string>& args) {
+int run_fuzz_checked(const std::vector<std::string>& args) {
   CLI::App app("Property-based fuzzing campaign", "mergeguard fuzz");
   fuzz::CampaignOptions o;
   o.planner = "rcpp";
@@ -142,6 +143,18 @@ int run_fuzz(const std::vector<std::string>& args) {
   if (json) std::cout << fuzz::campaign_summary_json(o, result).dump(2) << "\n";
   else print_human(result);
   return result.failing_scenarios > 0 ? kExitViolation : kExitOk;
+}
+
+// I/O failures (an unwritable corpus or report directory, a full disk) end the campaign with a
+// one-line error and exit 2 instead of an uncaught exception; cases already written stay.
+int run_fuzz(const std::vector<std::string>& args) {
+  try {
+    return run_fuzz_checked(args);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {  // std::filesystem::filesystem_error included
+    throw UsageError(e.what());
+  }
 }
 
 const CommandRegistration kRegistration(

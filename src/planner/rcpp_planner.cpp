@@ -139,7 +139,7 @@ Track leader_track(const MainLaneVehicle& l) {
 // (RCPP eq. 1) ahead of the follower and behind the leader: the merge never creates an RSS-dangerous
 // situation with a gap vehicle, whatever the instant.
 constexpr int kOccupancySamples = 40;
-constexpr double kOccupancyLateralMarginM = 0.3;  // absorbs path-tracking error
+constexpr double kOccupancyLateralMarginM = 0.75;  // absorbs path-tracking error
 bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, const SpeedRamp& ego, double horizon_s,
                      const std::optional<Track>& follower, const std::optional<Track>& leader) {
   const double t_lag = s.params.rss.response_time_s;
@@ -410,6 +410,15 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   return plan;
 }
 
+// An abort returns to the side lane, which is only sound while the ego can still stop (braking at
+// b_min) before the side lane's end (Def. 1.3); otherwise the merge completes under the RSS override.
+bool can_still_halt(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const double v = ego_speed_mps(w);
+  const double room_m = s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - w.ego.x_m;
+  return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
+}
+
 std::vector<PathPoint> side_lane_path(const WorldSnapshot& w) {
   return sample_straight(w.scenario->road.side_lane_y_m(), w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM,
                          kPathStepM);
@@ -436,14 +445,22 @@ double standstill_merge_length_m(const Scenario& s) {
 }
 
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, std::string* why) {
+  const double rho_base_s = std::max(w.scenario->params.planner.merge_duration_s,
+                                     kShortestMergeFactor * shortest_comfortable_merge_s(*w.scenario));
   for (const double factor : kMergeDurationFactors) {
     if (factor > 1.0 && ego_speed_mps(w) >= kStandstillMergeSpeedMps) break;  // slow merges only
     std::string this_why;
-    if (auto plan = plan_definition1_rho(w, factor * w.scenario->params.planner.merge_duration_s, &this_why))
-      return plan;
+    if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why)) return plan;
     if (why && factor == kMergeDurationFactors[0]) *why = this_why;
   }
   return std::nullopt;
+}
+
+double shortest_comfortable_merge_s(const Scenario& s) {
+  // At constant speed v the sigmoid spans 2 ln(49)/kappa <= v rho, and the comfort bound gives
+  // kappa <= sqrt(6 sqrt3 a_c / W)/v: rho >= 2 ln(49) / sqrt(6 sqrt3 a_c / W), whatever v.
+  return 2.0 * half_span_times_kappa() /
+         std::sqrt(6.0 * std::sqrt(3.0) * s.params.planner.lat_accel_comfort_mps2 / s.road.lane_width_m);
 }
 
 std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<int, double>& retry_after_s) {
@@ -480,7 +497,7 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
       merged_ = true;
       merge_.reset();
     } else if (merge_->decision.mode == DecisionMode::kDef1Merge && progress < kAbortLateralFraction &&
-               committed_bounds_crossed(w)) {
+               can_still_halt(w) && committed_bounds_crossed(w)) {
       note = "merge aborted (P_c bounds crossed at the predicted positions); ";
       merge_.reset();
     }

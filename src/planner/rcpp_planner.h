@@ -19,6 +19,10 @@ namespace mg {
 // is slower than kStandstillMergeSpeedMps (merging from standstill after Def. 1.3), whose
 // comfortable sigmoid does not fit in rho_m (docs/planner.md).
 inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
+// No comfortable sigmoid at constant speed fits in less than shortest_comfortable_merge_s; a
+// configured rho_m below it is raised to kShortestMergeFactor times that duration.
+inline constexpr double kShortestMergeFactor = 1.05;
+double shortest_comfortable_merge_s(const Scenario& s);
 // A committed merge may be aborted (P_c bounds crossed) only while the ego has covered less than
 // this fraction of the lateral offset; later it completes, protected by the RSS override.
 inline constexpr double kAbortLateralFraction = 0.25;
@@ -72,7 +76,7 @@ class RcppPlanner : public Planner {
   PlanOutput keep_main_lane(const WorldSnapshot& w);
   PlanOutput decide_in_side_lane(const WorldSnapshot& w);
   PlanOutput start_merge(const WorldSnapshot& w, const Sigmoid& s, double speed_mps, Decision d);
-  bool committed_bounds_crossed(const WorldSnapshot& w) const;
+  bool committed_bounds_crossed(const WorldSnapshot& w) const;  // P_c bounds at predicted positions
   void apply_override(const WorldSnapshot& w, PlanOutput& out) const;
 
   bool cooperative_;

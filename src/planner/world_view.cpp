@@ -33,7 +33,7 @@ std::optional<MainLaneVehicle> leader_ahead_of(const std::vector<MainLaneVehicle
 
 double rss_follow_speed_mps(const WorldSnapshot& w, const MainLaneVehicle& leader) {
   const Scenario& s = *w.scenario;
-  const double gap_m = leader.x_m - w.ego.x_m;
+  const double gap_m = leader.x_m - w.ego.x_m - kFollowBufferM;
   const auto margin = [&](double v) {
     return gap_m - rss_longitudinal_m({v, leader.speed_mps, s.ego.size.length_m, leader.length_m,
                                        s.params.rss.response_time_s, s.ego.limits.accel_max_mps2,

@@ -20,7 +20,9 @@ std::vector<MainLaneVehicle> target_lane_vehicles(const WorldSnapshot& w);
 std::optional<MainLaneVehicle> leader_ahead_of(const std::vector<MainLaneVehicle>& lane, double x_m);
 
 // The highest ego speed in [0, speed_limit] whose RSS distance (RCPP eq. 1, ego as the rear
-// vehicle) to `leader` fits in the current centre distance; 0 when even standing still does not.
+// vehicle) plus kFollowBufferM fits in the current centre distance; 0 when even standing still
+// does not. The buffer keeps a bumper gap at standstill despite speed-tracking error.
+inline constexpr double kFollowBufferM = 2.0;
 double rss_follow_speed_mps(const WorldSnapshot& w, const MainLaneVehicle& leader);
 
 }  // namespace mg

@@ -40,6 +40,10 @@ MonitorOutput monitor_collision(const MonitorContext& ctx) {
           os << party_name(party_of(s, i)) << " and " << party_name(party_of(s, j)) << " collided at t = "
              << steps[k].time_s << " s (x = " << pose_now[i].x_m << " m"
              << (c.by_continuous ? ", found by the continuous check between steps" : "") << ")";
+          const PairGeometry& start = ctx.pairs.at(0, PairTable::index(n, i, j));
+          if (start.lon_unsafe() && start.lat_unsafe())
+            os << "; the pair was already in a dangerous situation at t = 0 (the scenario starts unsafe, so no "
+                  "obligation could be broken before it)";
           acc.set_detail(os.str());
         }
       }

@@ -28,7 +28,7 @@ MonitorOutput monitor_on_road(const MonitorContext& ctx) {
   const auto& steps = ctx.trace.steps;
   MarginAccumulator acc("on_road", steps.size());
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    const double m = on_road_margin_m(ctx.scenario, steps[i].ego);
+    const double m = on_road_margin_m(ctx.scenario, steps[i].ego) + ctx.params.road_edge_tolerance_m;
     if (acc.record(i, steps[i].time_s, m, kEgoId, 0.0, m)) {
       std::ostringstream os;
       os << "ego left the road at t = " << steps[i].time_s << " s (x = " << steps[i].ego.x_m

@@ -39,6 +39,7 @@ const CatalogParams& catalog_params() {
     c.speed_tolerance_mps = p.at("speed_tolerance_mps").get<double>();
     c.yield_speed_tolerance_mps = p.at("yield_speed_tolerance_mps").get<double>();
     c.halted_speed_mps = p.at("halted_speed_mps").get<double>();
+    c.road_edge_tolerance_m = p.at("road_edge_tolerance_m").get<double>();
     c.lat_speed_hysteresis_mps = p.at("lat_speed_hysteresis_mps").get<double>();
     c.max_lat_speed_sign_changes_per_merge = p.at("max_lat_speed_sign_changes_per_merge").get<int>();
     c.sideslip_max_rad = p.at("sideslip_max_rad").get<double>();

@@ -24,6 +24,7 @@ struct CatalogParams {
   double speed_tolerance_mps = 0.0;
   double yield_speed_tolerance_mps = 0.0;
   double halted_speed_mps = 0.0;
+  double road_edge_tolerance_m = 0.0;
   double lat_speed_hysteresis_mps = 0.0;
   int max_lat_speed_sign_changes_per_merge = 0;
   double sideslip_max_rad = 0.0;

@@ -59,6 +59,7 @@ TEST(Liability, CollisionWithNobodyLiableIsReportedAndFails) {
   EXPECT_EQ(r.collision_liable_id, kNobody);
   EXPECT_EQ(r.liable_id, kNobody);
   EXPECT_NE(r.liability_detail.find("collision with nobody liable"), std::string::npos);
+  EXPECT_NE(r.liability_detail.find("already in a dangerous situation at t = 0"), std::string::npos);
 }
 
 TEST(Liability, CollisionIsBlamedOnTheRearThatDidNotBrake) {

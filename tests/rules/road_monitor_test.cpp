@@ -12,21 +12,21 @@ using test::constant_accel_trace;
 
 TEST(RoadMonitor, EgoOnTheSideLaneCentreIsOnTheRoad) {
   // y = -3.5, width 1.9: lowest corner -4.45 against the edge -5.25: 0.8 m; top corner -2.55
-  // against the left edge 1.75: 4.3 m. Margin 0.8 m.
+  // against the left edge 1.75: 4.3 m. Margin 0.8 m + 0.05 m edge tolerance = 0.85 m.
   const Scenario s = base_scenario();
   const MonitorOutput out = test::run(monitor_on_road, s, constant_accel_trace(s, 0.5));
   EXPECT_TRUE(out.result.holds);
-  EXPECT_NEAR(out.result.min_margin, 0.8, 1e-9);
+  EXPECT_NEAR(out.result.min_margin, 0.85, 1e-9);
 }
 
 TEST(RoadMonitor, EgoOverTheRightEdgeIsOffRoad) {
-  // y = -5.0: lowest corner -5.95, 0.7 m beyond the edge.
+  // y = -5.0: lowest corner -5.95, 0.7 m beyond the edge: margin -0.7 + 0.05 = -0.65 m.
   Scenario s = base_scenario();
   s.ego.y_m = -5.0;
   const MonitorOutput out = test::run(monitor_on_road, s, constant_accel_trace(s, 0.5));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
-  EXPECT_NEAR(out.result.min_margin, -0.7, 1e-9);
+  EXPECT_NEAR(out.result.min_margin, -0.65, 1e-9);
 }
 
 TEST(RoadMonitor, PassingTheSideLaneEndWhileInItIsAViolation) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include "core/rss.h"
 
@@ -39,27 +40,48 @@ SpeedRamp Def1Context::ramp_to(double ve_star_mps) const {
   return SpeedRamp{ego_speed_mps, ve_star_mps, ego_limits.accel_max_mps2, ego_limits.brake_min_mps2};
 }
 
-// RCPP ineq. (1.1); Def. 1.1 (DESIGN §4, with the bounded-rate fix).
+namespace {
+
+// Ineq. (1.1) at rho/2 with the ego at position x_m and speed v_m.
+double ineq11_at(const Def1Context& c, const MainLaneVehicle& follower, double x_m, double v_mps) {
+  const double half_s = 0.5 * c.merge_duration_s;
+  const double a_f = follower.limits.accel_max_mps2;
+  const double follower_x_m = follower.x_m + follower.speed_mps * half_s + a_f * c.merge_duration_s * c.merge_duration_s / 8.0;
+  const double d_lon_m = rss_longitudinal_m({follower.speed_mps + a_f * half_s, v_mps, follower.length_m, c.ego_length_m,
+                                             c.response_time_s, a_f, follower.limits.brake_min_mps2,
+                                             c.ego_limits.brake_max_mps2});
+  return (x_m - d_lon_m) - follower_x_m;
+}
+
+// Ineq. (1.2) at time t_s with the ego at position x_m and speed v_m.
+double ineq12_at(const Def1Context& c, const MainLaneVehicle& leader, double t_s, double x_m, double v_mps) {
+  const double d_lon_m = rss_longitudinal_m({v_mps, leader.speed_mps, c.ego_length_m, leader.length_m,
+                                             c.response_time_s, c.ego_limits.accel_max_mps2,
+                                             c.ego_limits.brake_min_mps2, leader.limits.brake_max_mps2});
+  return (leader.x_m + leader.speed_mps * t_s - d_lon_m) - x_m;
+}
+
+}  // namespace
+
+// RCPP ineq. (1.1); Def. 1.1 (DESIGN §4): the paper's literal form (ego at v_e* from T_dec) and the
+// bounded-rate fix (the ego ramps to v_e*) must both hold.
 double def1_1_margin_m(const Def1Context& c, const MainLaneVehicle& follower, double ve_star_mps) {
   const double half_s = 0.5 * c.merge_duration_s;
   const SpeedRamp ramp = c.ramp_to(ve_star_mps);
-  const double follower_speed_mps = follower.speed_mps + follower.limits.accel_max_mps2 * half_s;
-  const double follower_x_m = follower.x_m + follower.speed_mps * half_s +
-                              follower.limits.accel_max_mps2 * c.merge_duration_s * c.merge_duration_s / 8.0;
-  const double d_lon_m = rss_longitudinal_m({follower_speed_mps, ramp.speed_at_mps(half_s), follower.length_m,
-                                             c.ego_length_m, c.response_time_s, follower.limits.accel_max_mps2,
-                                             follower.limits.brake_min_mps2, c.ego_limits.brake_max_mps2});
-  return (c.ego_x_m + ramp.distance_at_m(half_s) - d_lon_m) - follower_x_m;
+  return std::min(ineq11_at(c, follower, c.ego_x_m + ve_star_mps * half_s, ve_star_mps),
+                  ineq11_at(c, follower, c.ego_x_m + ramp.distance_at_m(half_s), ramp.speed_at_mps(half_s)));
 }
 
-// RCPP ineq. (1.2); Def. 1.2 (DESIGN §4, with the bounded-rate fix).
+// RCPP ineq. (1.2); Def. 1.2 (DESIGN §4): over the interval [T_dec, T_dec + rho], checked at rho/2
+// and rho, in the paper's literal form and with the bounded-rate fix.
 double def1_2_margin_m(const Def1Context& c, const MainLaneVehicle& leader, double ve_star_mps) {
-  const double rho_s = c.merge_duration_s;
   const SpeedRamp ramp = c.ramp_to(ve_star_mps);
-  const double d_lon_m = rss_longitudinal_m({ramp.speed_at_mps(rho_s), leader.speed_mps, c.ego_length_m,
-                                             leader.length_m, c.response_time_s, c.ego_limits.accel_max_mps2,
-                                             c.ego_limits.brake_min_mps2, leader.limits.brake_max_mps2});
-  return (leader.x_m + leader.speed_mps * rho_s - d_lon_m) - (c.ego_x_m + ramp.distance_at_m(rho_s));
+  double margin = std::numeric_limits<double>::infinity();
+  for (const double t : {0.5 * c.merge_duration_s, c.merge_duration_s}) {
+    margin = std::min(margin, ineq12_at(c, leader, t, c.ego_x_m + ve_star_mps * t, ve_star_mps));
+    margin = std::min(margin, ineq12_at(c, leader, t, c.ego_x_m + ramp.distance_at_m(t), ramp.speed_at_mps(t)));
+  }
+  return margin;
 }
 
 std::vector<LaneGap> enumerate_gaps(std::vector<MainLaneVehicle> lane_vehicles) {

@@ -51,13 +51,15 @@ struct Def1Context {
 
 // RCPP ineq. (1.1); Def. 1.1. Margin (m, >= 0 holds) of the ego ahead of `follower` at
 // T_dec + rho_m/2: follower after accelerating at its a_accel^max for rho_m/2, RSS D_lon with the
-// follower as the rear vehicle (at that speed) and the ego as the front one (at the speed the
+// follower as the rear vehicle (at that speed) and the ego as the front one. The minimum of the
+// paper's literal form (ego at v_e* from T_dec) and the bounded-rate form (position and speed the
 // ramp reaches). Non-decreasing in ve_star_mps.
 double def1_1_margin_m(const Def1Context& c, const MainLaneVehicle& follower, double ve_star_mps);
 
-// RCPP ineq. (1.2); Def. 1.2. Margin (m, >= 0 holds) of the ego behind `leader` at
-// T_dec + rho_m: leader at constant speed, RSS D_lon with the ego as the rear vehicle (at the
-// speed the ramp reaches). Non-increasing in ve_star_mps.
+// RCPP ineq. (1.2); Def. 1.2. Margin (m, >= 0 holds) of the ego behind `leader` over
+// [T_dec, T_dec + rho_m], evaluated at rho_m/2 and rho_m: leader at constant speed, RSS D_lon with
+// the ego as the rear vehicle; minimum of the literal and the bounded-rate forms.
+// Non-increasing in ve_star_mps.
 double def1_2_margin_m(const Def1Context& c, const MainLaneVehicle& leader, double ve_star_mps);
 
 // A gap of the merge lane: vehicles sorted by x define (follower, leader) pairs, plus the open

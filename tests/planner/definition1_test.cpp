@@ -27,20 +27,33 @@ double ref_pos(double v0, double v, double t, double a, double b) {
 double ref_speed(double v0, double v, double t, double a, double b) {
   return v > v0 ? std::min(v, v0 + a * t) : std::max(v, v0 - b * t);
 }
-double ref_margin_11(const Def1Context& c, const MainLaneVehicle& f, double ve) {
+// Ineq. (1.1) with the ego at (x, u) at rho/2; literal (ego at ve from T_dec) and ramped forms.
+double ref_11(const Def1Context& c, const MainLaneVehicle& f, double x, double u) {
   const double rho = c.merge_duration_s, a_f = f.limits.accel_max_mps2;
   const double lhs = f.x_m + f.speed_mps * rho / 2 + a_f * rho * rho / 8;
-  const double a = c.ego_limits.accel_max_mps2, b = c.ego_limits.brake_min_mps2;
-  const double d = ref_d_lon(f.speed_mps + a_f * rho / 2, ref_speed(c.ego_speed_mps, ve, rho / 2, a, b), f.length_m,
-                             c.ego_length_m, c.response_time_s, a_f, f.limits.brake_min_mps2, c.ego_limits.brake_max_mps2);
-  return c.ego_x_m + ref_pos(c.ego_speed_mps, ve, rho / 2, a, b) - d - lhs;
+  const double d = ref_d_lon(f.speed_mps + a_f * rho / 2, u, f.length_m, c.ego_length_m, c.response_time_s, a_f,
+                             f.limits.brake_min_mps2, c.ego_limits.brake_max_mps2);
+  return x - d - lhs;
+}
+double ref_margin_11(const Def1Context& c, const MainLaneVehicle& f, double ve) {
+  const double h = c.merge_duration_s / 2, a = c.ego_limits.accel_max_mps2, b = c.ego_limits.brake_min_mps2;
+  return std::min(ref_11(c, f, c.ego_x_m + ve * h, ve),
+                  ref_11(c, f, c.ego_x_m + ref_pos(c.ego_speed_mps, ve, h, a, b), ref_speed(c.ego_speed_mps, ve, h, a, b)));
+}
+// Ineq. (1.2) at time t with the ego at (x, u).
+double ref_12(const Def1Context& c, const MainLaneVehicle& l, double t, double x, double u) {
+  const double d = ref_d_lon(u, l.speed_mps, c.ego_length_m, l.length_m, c.response_time_s,
+                             c.ego_limits.accel_max_mps2, c.ego_limits.brake_min_mps2, l.limits.brake_max_mps2);
+  return l.x_m + l.speed_mps * t - d - x;
 }
 double ref_margin_12(const Def1Context& c, const MainLaneVehicle& l, double ve) {
-  const double rho = c.merge_duration_s;
   const double a = c.ego_limits.accel_max_mps2, b = c.ego_limits.brake_min_mps2;
-  const double d = ref_d_lon(ref_speed(c.ego_speed_mps, ve, rho, a, b), l.speed_mps, c.ego_length_m, l.length_m,
-                             c.response_time_s, a, b, l.limits.brake_max_mps2);
-  return l.x_m + l.speed_mps * rho - d - (c.ego_x_m + ref_pos(c.ego_speed_mps, ve, rho, a, b));
+  double m = 1e300;
+  for (const double t : {c.merge_duration_s / 2, c.merge_duration_s}) {
+    m = std::min(m, ref_12(c, l, t, c.ego_x_m + ve * t, ve));
+    m = std::min(m, ref_12(c, l, t, c.ego_x_m + ref_pos(c.ego_speed_mps, ve, t, a, b), ref_speed(c.ego_speed_mps, ve, t, a, b)));
+  }
+  return m;
 }
 bool ref_feasible(const Def1Context& c, const LaneGap& g, double ve) {
   return (!g.follower || ref_margin_11(c, *g.follower, ve) >= 0) && (!g.leader || ref_margin_12(c, *g.leader, ve) >= 0);

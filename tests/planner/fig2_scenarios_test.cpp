@@ -33,20 +33,22 @@ void expect_choice_within_bounds(const Decision& d) {
 TEST(Fig2, Situation1EgoAheadMergesAheadOfTheFollower) {
   // Ego X = 100, v_e = 22; vehicle 1 X_o = 30, v_o = 20 (the follower of the gap ahead of it).
   // Ineq. (1.1): follower at rho/2 = 2 s: 30 + 40 + 2*16/8 = 74 m at 24 m/s; D_lon(24, u) = 95.175 - u^2/16.
-  // For v_e* < 22 the ego brakes at b_min = 4 and then holds v_e*: X(2 s) = 100 + 2 v + (22 - v)^2/8,
-  // u = v. 100 + 2v + (22-v)^2/8 - 95.175 + v^2/16 >= 74 <=> 3v^2 - 56v - 138.8 >= 0
-  // -> v_e* >= (56 + sqrt(56^2 + 12*138.8))/6 = 20.882 m/s. No leader: upper end = speed limit.
-  // P_c lower bound = X(2 s) at 20.882 = 100 + 41.765 + 0.156 = 141.92 m; upper: accelerating at 2 to the
-  // limit gives 100 + 44 + 4 = 148 m.
+  // Literal form (ego at v from T_dec): 100 + 2v - 95.175 + v^2/16 >= 74 <=> v^2 + 32v - 1106.8 >= 0
+  // -> v >= (-32 + sqrt(32^2 + 4*1106.8))/2 = 20.916 m/s.
+  // Bounded-rate form (brake at 4 to v < 22, then hold): X(2 s) = 100 + 2v + (22-v)^2/8, u = v:
+  // 3v^2 - 56v - 138.8 >= 0 -> v >= 20.882. Both must hold: v_e* >= 20.916. No leader: upper = limit.
+  // P_c lower bound = X(2 s) at 20.916 = 100 + 41.832 + (1.084)^2/8 = 141.979 m; upper: accelerating at
+  // 2 to the limit gives 100 + 44 + 4 = 148 m.
   const PlanOutput out = plan_initial(load("fig2_s1_ahead_noncoop"), "rcpp");
   const Decision& d = out.decision;
   EXPECT_EQ(d.mode, DecisionMode::kDef1Merge);
   ASSERT_TRUE(d.gap);
   EXPECT_EQ(d.gap->follower_id, 1);
   EXPECT_EQ(d.gap->leader_id, -1);
-  EXPECT_NEAR(d.ve_min_mps, (56 + std::sqrt(56.0 * 56 + 12 * 138.8)) / 6, 1e-4);
+  EXPECT_NEAR(d.ve_min_mps, (-32 + std::sqrt(32.0 * 32 + 4 * 1106.8)) / 2, 1e-4);
   EXPECT_DOUBLE_EQ(d.ve_max_mps, 33.34);
-  EXPECT_NEAR(d.pc_min_m, 141.921, 1e-3);
+  const double lo = d.ve_min_mps;
+  EXPECT_NEAR(d.pc_min_m, 100 + 2 * lo + (22 - lo) * (22 - lo) / 8, 1e-6);
   EXPECT_NEAR(d.pc_max_m, 148.0, 1e-6);
   expect_choice_within_bounds(d);
   EXPECT_FALSE(out.proper_response);
@@ -55,9 +57,11 @@ TEST(Fig2, Situation1EgoAheadMergesAheadOfTheFollower) {
 
 TEST(Fig2, Situation2EgoBehindMergesBehindTheLeader) {
   // Ego X = 30, v_e = 20; vehicle 1 X_o = 60, v_o = 22 (the leader of the gap behind it).
-  // Ineq. (1.2) at rho = 4 s, v_e* <= 20 (brake at 4, then hold): X(4) = 30 + 4v + (20 - v)^2/8,
-  // leader 60 + 88 = 148, D_lon(v, 22) = 4.8 + 0.5v + 0.25 + (v+1)^2/8 - 30.25.
-  // 148 - D - X(4) >= 0 <=> v^2 - v - 372.3 <= 0 -> v_e* <= (1 + sqrt(1 + 1489.2))/2 = 19.802 m/s.
+  // Ineq. (1.2) over [0, rho], checked at rho/2 = 2 s and rho = 4 s; D_lon(v, 22) = 0.5v + (v+1)^2/8 - 25.2.
+  // Bounded-rate form, v <= 20 (brake at 4, then hold): X(t) = 30 + t v + (20 - v)^2/8.
+  //   at 4 s: leader 148: v^2 - v - 372.3 <= 0 -> v <= 19.802; literal (30 + 4v): v <= 19.802 too;
+  //   at 2 s: leader 104: 99.2 - 2.5v - [(v+1)^2 + (20-v)^2]/8 >= 0 <=> v^2 - 9v - 196.3 <= 0
+  //   -> v <= (9 + sqrt(81 + 785.2))/2 = 19.216 (literal at 2 s: v <= 19.226). Binding: 19.216.
   // No follower: lower end 0. P_c lower bound: X(2 s) at v_e* = 0 is 30 + 40 - 8 = 62 m.
   const PlanOutput out = plan_initial(load("fig2_s2_behind_noncoop"), "rcpp");
   const Decision& d = out.decision;
@@ -66,7 +70,7 @@ TEST(Fig2, Situation2EgoBehindMergesBehindTheLeader) {
   EXPECT_EQ(d.gap->follower_id, -1);
   EXPECT_EQ(d.gap->leader_id, 1);
   EXPECT_DOUBLE_EQ(d.ve_min_mps, 0.0);
-  EXPECT_NEAR(d.ve_max_mps, (1 + std::sqrt(1 + 4 * 372.3)) / 2, 1e-4);
+  EXPECT_NEAR(d.ve_max_mps, (9 + std::sqrt(81 + 4 * 196.3)) / 2, 1e-4);
   EXPECT_NEAR(d.pc_min_m, 62.0, 1e-6);
   expect_choice_within_bounds(d);
 }

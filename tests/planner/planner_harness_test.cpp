@@ -110,7 +110,9 @@ void expect_sane(const Scenario& s, const Rollout& r, const std::string& where) 
     ASSERT_GE(out.path.size(), 2u);
     for (std::size_t i = 0; i < out.path.size(); ++i) {
       ASSERT_TRUE(std::isfinite(out.path[i].x_m) && std::isfinite(out.path[i].y_m));
-      if (i > 0) ASSERT_GT(out.path[i].x_m, out.path[i - 1].x_m);  // path monotone in X
+      if (i > 0) {
+        ASSERT_GT(out.path[i].x_m, out.path[i - 1].x_m);  // path monotone in X
+      }
     }
     EXPECT_LE(out.path.front().x_m, ego.x_m);                 // covers the current position
     EXPECT_GE(out.path.back().x_m, ego.x_m + 100.0);          // and enough ahead

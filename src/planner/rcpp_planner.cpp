@@ -56,7 +56,7 @@ double side_exit_limit_x_m(const Scenario& s) { return s.road.side_lane_end_x_m 
 // Trackability of the path at any speed: its peak curvature c = W kappa^2/(6 sqrt 3) stays within
 // half the ego's steering ability (tan(steer_max)/(2 wheelbase)) and keeps the kinematic sideslip
 // atan(l_r c) below kPathSideslipMaxRad (docs/planner.md).
-constexpr double kPathSideslipMaxRad = 0.04;
+constexpr double kPathSideslipMaxRad = 0.025;
 double kappa_cap_per_m(const Scenario& s) {
   const EgoDynamics& dyn = s.ego.dynamics;
   const double wheelbase_m = dyn.cg_to_front_m + dyn.cg_to_rear_m;

@@ -36,12 +36,17 @@ void ego_never_liable(const CheckResult& result, std::vector<PropertyFailure>& o
 }
 
 // With compliant others the ego must avoid collisions and every unsafe RSS state must be answered
-// by a proper response (the rss_* monitors hold exactly then).
+// by a proper response (the rss_* monitors hold exactly then). A violation blamed on a main-lane
+// vehicle means that vehicle did not comply (it did not brake at least b_min once unsafe, RSS),
+// so only the ego's and nobody's count here.
 void compliant_safe(const Scenario& s, const CheckResult& result, std::vector<PropertyFailure>& out) {
   if (!all_compliant(s)) return;
-  if (result.collision) out.push_back(collision_failure(property::kCompliantSafe, result));
+  auto others_comply = [](int liable_id) { return liable_id == kEgoId || liable_id == kNobody; };
+  if (result.collision && others_comply(result.collision_liable_id))
+    out.push_back(collision_failure(property::kCompliantSafe, result));
   for (const RuleResult& r : result.rules)
-    if (!r.holds && r.rule_id.rfind("rss_", 0) == 0) out.push_back(from_rule(property::kCompliantSafe, r));
+    if (!r.holds && r.rule_id.rfind("rss_", 0) == 0 && others_comply(r.liable_id))
+      out.push_back(from_rule(property::kCompliantSafe, r));
 }
 
 void collision_liable(const CheckResult& result, std::vector<PropertyFailure>& out) {

@@ -20,7 +20,8 @@ inline constexpr RealRange kSideLaneLength{100.0, 400.0, 300.0, 10.0};// m, exte
 inline constexpr RealRange kSpeedLimit{20.0, 36.1, 33.3, 0.1};        // m/s (72-130 km/h)
 // Ego.
 inline constexpr RealRange kEgoOffset{0.0, 100.0, 0.0, 1.0};          // m after the side lane start
-inline constexpr RealRange kEgoLateralOffset{-0.5, 0.5, 0.0, 0.05};   // m from the side lane centre
+inline constexpr RealRange kEgoLateralOffset{-0.5, 0.5, 0.0, 0.05};   // m from the side lane centre, see below
+inline constexpr double kEgoEdgeClearanceM = 0.3;  // the offset is capped so the ego starts this far inside its lane
 inline constexpr RealRange kEgoSpeed{0.0, 36.0, 20.0, 0.1};           // m/s, capped at the speed limit
 inline constexpr RealRange kEgoLength{3.8, 5.5, 4.8, 0.1};            // m
 inline constexpr RealRange kEgoWidth{1.6, 2.1, 1.9, 0.05};            // m

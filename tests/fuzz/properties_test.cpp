@@ -48,8 +48,13 @@ TEST(Properties, VehicleLiableDoesNotFailEgoNeverLiable) {
 }
 
 TEST(Properties, UnansweredRssDangerWithCompliantOthersFails) {
-  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("rss_longitudinal", 1)}), std::nullopt);
+  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("rss_longitudinal", kEgoId)}), std::nullopt);
   EXPECT_TRUE(fails(f, property::kCompliantSafe, "rss_longitudinal"));
+}
+
+TEST(Properties, AVehicleBlamedForRssDangerWasNotCompliant) {
+  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("rss_longitudinal", 1)}), std::nullopt);
+  EXPECT_FALSE(fails(f, property::kCompliantSafe, "rss_longitudinal"));
 }
 
 TEST(Properties, NonCompliantOthersExcuseRssDanger) {
@@ -67,13 +72,14 @@ TEST(Properties, CollisionWithNobodyLiableFails) {
   EXPECT_FALSE(fails(f, property::kCompliantSafe, "collision"));  // the vehicle was non-compliant
 }
 
-TEST(Properties, CollisionWithALiableVehicleOnlyFailsWithCompliantOthers) {
-  CheckResult r = result_with({failing("collision", 1)});
+TEST(Properties, CollisionBlamedOnTheEgoFailsWithCompliantOthers) {
+  CheckResult r = result_with({failing("collision", kEgoId)});
   r.collision = true;
-  r.collision_liable_id = 1;
+  r.collision_liable_id = kEgoId;
   const auto f = evaluate_properties(one_vehicle_scenario(), r, std::nullopt);
   EXPECT_FALSE(fails(f, property::kCollisionLiable, "collision"));
   EXPECT_TRUE(fails(f, property::kCompliantSafe, "collision"));
+  EXPECT_TRUE(fails(f, property::kEgoNeverLiable, "collision"));
 }
 
 TEST(Properties, SideLaneEndIsCrossCheckedOnTheTrace) {

@@ -1,5 +1,6 @@
 #include "fuzz/scenario_gen.h"
 
+#include <cmath>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -32,6 +33,8 @@ RC_GTEST_PROP(ScenarioGen, GeneratedScenariosRespectTheDocumentedRanges, ()) {
   RC_ASSERT(s.vehicles.size() <= 6u);
   RC_ASSERT(s.ego.speed_mps <= s.road.speed_limit_mps);
   RC_ASSERT(s.ego.x_m >= s.road.side_lane_start_x_m);
+  const double edge_clearance_m = s.road.lane_width_m / 2.0 - std::abs(s.ego.y_m + s.road.lane_width_m) - s.ego.size.width_m / 2.0;
+  RC_ASSERT(edge_clearance_m >= range::kEgoEdgeClearanceM - 0.01 || s.ego.y_m == -s.road.lane_width_m);
   const double v = s.ego.speed_mps;
   RC_ASSERT(s.road.side_lane_end_x_m - s.ego.x_m >= v * v / (2 * s.ego.limits.brake_min_mps2));
   RC_ASSERT(s.params.sim.horizon_s >= range::kHorizon.lo);

@@ -17,6 +17,7 @@ namespace {
 constexpr double kPathBehindM = 10.0;
 constexpr double kPathAheadM = 160.0;
 constexpr double kPathStepM = 1.0;
+constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
 constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
 
@@ -271,7 +272,10 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       return def1_cost + field_cost(w, sig, rho_s, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); },
                                     constant_speed_x);
     };
-    const auto choice = choose_sigmoid(pc_min, pc_max, p.pc_candidates, kappa_range, p.kappa_candidates, cost);
+    // Candidates keep kPcMarginM from both bounds when the interval allows (path-tracking error).
+    const double pc_margin = std::min(kPcMarginM, 0.25 * (pc_max - pc_min));
+    const auto choice = choose_sigmoid(pc_min + pc_margin, pc_max - pc_margin, p.pc_candidates, kappa_range,
+                                       p.kappa_candidates, cost);
     if (!choice) { ++n_sigmoid; continue; }
     if (choice->cost >= best_cost) continue;
     best_cost = choice->cost;

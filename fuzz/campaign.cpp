@@ -132,11 +132,10 @@ class Campaign {
     for (const PropertyFailure& f : final_run.failures)
       if (signature_of(final_run.planner, f) == signature) c.failure = f;
     c.provenance = {"mergeguard fuzz", opt_.seed, i, shrunk.steps, shrunk.attempts, shrunk.minimal, utc_now_iso8601()};
-    const std::string path = (std::filesystem::path(opt_.corpus_dir) / (signature.file_stem() + ".json")).string();
-
     std::lock_guard lock(mutex_);
     SignatureRecord& rec = signatures_.at(signature);
     if (rec.first_run != i) return;  // a lower run index failed meanwhile; its case wins
+    const std::string path = rec.case_path.empty() ? free_case_path(opt_.corpus_dir, signature.file_stem()) : rec.case_path;
     write_case(c, path);
     rec.case_path = path;
     rec.shrink_steps = shrunk.steps;

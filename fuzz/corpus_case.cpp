@@ -188,8 +188,19 @@ std::set<Signature> corpus_signatures(const std::string& dir) {
   std::set<Signature> known;
   std::error_code ec;
   if (!std::filesystem::exists(dir, ec)) return known;
-  for (const std::string& file : case_files(dir)) known.insert(load_case(file).signature);
+  for (const std::string& file : case_files(dir)) {
+    const CorpusCase c = load_case(file);
+    const auto& failed = c.verdict.failed_properties;
+    if (std::find(failed.begin(), failed.end(), c.signature) != failed.end()) known.insert(c.signature);
+  }
   return known;
+}
+
+std::string free_case_path(const std::string& dir, const std::string& stem) {
+  namespace fs = std::filesystem;
+  fs::path path = fs::path(dir) / (stem + ".json");
+  for (int n = 2; fs::exists(path); ++n) path = fs::path(dir) / (stem + "-" + std::to_string(n) + ".json");
+  return path.string();
 }
 
 std::string utc_now_iso8601() {

@@ -70,9 +70,14 @@ void write_case(const CorpusCase& c, const std::string& path);
 // The *.json files of a directory (sorted; temporary files of atomic writes are ignored), or
 // the path itself when it is a file. Throws InputError when the path does not exist.
 std::vector<std::string> case_files(const std::string& path);
-// Signatures of the cases already in `dir` (missing directory: none). Unreadable or invalid
-// cases raise InputError: a corpus must stay loadable.
+// Signatures of the open findings in `dir`: the cases whose recorded verdict still fails with
+// their signature (a case updated to hold after a fix is a regression test and does not hide a
+// new failure of the same signature). Missing directory: none. Unreadable or invalid cases raise
+// InputError: a corpus must stay loadable.
 std::set<Signature> corpus_signatures(const std::string& dir);
+
+// DIR/<stem>.json, or DIR/<stem>-2.json, -3, ... when that file already exists.
+std::string free_case_path(const std::string& dir, const std::string& stem);
 
 std::string utc_now_iso8601();
 

@@ -113,6 +113,20 @@ TEST(Campaign, AResumedCampaignDoesNotReAddKnownSignatures) {
   fs::remove_all(dir);
 }
 
+TEST(Campaign, ACaseThatNowHoldsDoesNotHideANewFailureOfItsSignature) {
+  const auto dir = scratch_dir("fixed");
+  const auto first = run_campaign(options(100, 2, dir), fake_factory());
+  ASSERT_EQ(first.new_cases.size(), 1u);
+  CorpusCase fixed = load_case(first.new_cases[0]);
+  fixed.verdict = CaseVerdict{};  // as after `replay --update` once the bug is fixed: it holds
+  write_case(fixed, first.new_cases[0]);
+  const auto second = run_campaign(options(100, 2, dir), fake_factory());
+  ASSERT_EQ(second.new_cases.size(), 1u);
+  EXPECT_EQ(fs::path(second.new_cases[0]).filename(), fixed.signature.file_stem() + "-2.json");
+  EXPECT_TRUE(load_case(first.new_cases[0]).verdict.holds);  // the regression case is left alone
+  fs::remove_all(dir);
+}
+
 TEST(Campaign, EveryNewCaseIsMinimalAndReplays) {
   const auto dir = scratch_dir("replay");
   const auto r = run_campaign(options(60, 2, dir), fake_factory());
@@ -122,7 +136,7 @@ TEST(Campaign, EveryNewCaseIsMinimalAndReplays) {
     EXPECT_EQ(c.scenario.vehicles.size(), 1u);
     EXPECT_TRUE(c.provenance.shrink_minimal);
     EXPECT_TRUE(replay_case(c, test::fake_check).reproduces) << path;
-    EXPECT_EQ(fs::path(path).filename(), c.signature.file_stem() + ".json");
+    EXPECT_EQ(fs::path(path).filename(), c.signature.file_stem() + ".json");  // a fresh corpus
   }
   fs::remove_all(dir);
 }

@@ -451,8 +451,11 @@ double standstill_merge_length_m(const Scenario& s) {
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, std::string* why) {
   const double rho_base_s = std::max(w.scenario->params.planner.merge_duration_s,
                                      kShortestMergeFactor * shortest_comfortable_merge_s(*w.scenario));
+  // Slow: too slow for a trackable sigmoid (kappa <= kappa_cap) to fit in rho at constant speed.
+  const double slow_mps = std::max(kStandstillMergeSpeedMps, kSlowMergeSpeedFactor * 2.0 * half_span_times_kappa() /
+                                                                 (kappa_cap_per_m(*w.scenario) * rho_base_s));
   for (const double factor : kMergeDurationFactors) {
-    if (factor > 1.0 && ego_speed_mps(w) >= kStandstillMergeSpeedMps) break;  // slow merges only
+    if (factor > 1.0 && ego_speed_mps(w) >= slow_mps) break;  // slow merges only
     std::string this_why;
     if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why)) return plan;
     if (why && factor == kMergeDurationFactors[0]) *why = this_why;

@@ -15,10 +15,12 @@
 
 namespace mg {
 
-// Merge durations tried, as multiples of rho_m: rho_m itself first; longer ones only while the ego
-// is slower than kStandstillMergeSpeedMps (merging from standstill after Def. 1.3), whose
-// comfortable sigmoid does not fit in rho_m (docs/planner.md).
+// Merge durations tried, as multiples of rho_m: rho_m itself first; longer ones only for slow egos
+// (e.g. merging from standstill after Def. 1.3), whose trackable sigmoid does not fit in rho_m:
+// slower than kStandstillMergeSpeedMps or than kSlowMergeSpeedFactor * 2 ln(49) / (kappa_cap rho)
+// (docs/planner.md).
 inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
+inline constexpr double kSlowMergeSpeedFactor = 1.2;
 // No comfortable sigmoid at constant speed fits in less than shortest_comfortable_merge_s; a
 // configured rho_m below it is raised to kShortestMergeFactor times that duration.
 inline constexpr double kShortestMergeFactor = 1.05;

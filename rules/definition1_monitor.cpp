@@ -51,7 +51,24 @@ double def1_2_margin_m(const Scenario& s, const VehicleState& ego, std::size_t l
   return (lo.x_m + v_o * rho_m_s - d_lon) - (ego.x_m + ve_star_mps * rho_m_s);
 }
 
+double speed_change_distance_m(double v, double v_star, double accel, double brake, double tau) {
+  const double rate = v_star >= v ? accel : brake;
+  const double t_change = rate > 0.0 ? std::min(std::abs(v_star - v) / rate, tau) : 0.0;
+  const double v_end = v + (v_star >= v ? 1.0 : -1.0) * rate * t_change;
+  return (v + v_end) / 2.0 * t_change + v_end * (tau - t_change);
+}
+
 namespace {
+
+// The ego state whose "X + v_e* tau" is where the ego really is after tau while changing
+// speed toward v_e* at a_accel^max / b_min (DESIGN §4 fix).
+VehicleState real_position_ego(const Scenario& s, const VehicleState& ego, double ve_star, double tau) {
+  VehicleState e = ego;
+  e.x_m += speed_change_distance_m(std::max(speed_of(ego), 0.0), ve_star, s.ego.limits.accel_max_mps2,
+                                   s.ego.limits.brake_min_mps2, tau) -
+           ve_star * tau;
+  return e;
+}
 
 enum class GapSide { kFollower, kLeader };
 
@@ -70,10 +87,16 @@ MonitorOutput monitor_gap_inequality(const MonitorContext& ctx, GapSide side) {
     const VehicleState& o = state_of(st, static_cast<std::size_t>(k));
     // Ineq. (2) must hold over the whole interval [T_dec, T_dec + rho] ("c_e is behind c_o^i"):
     // checked at its midpoint and its end, so a "leader" still behind the ego does not qualify.
-    const double m = side == GapSide::kFollower
-                         ? def1_1_margin_m(s, st.ego, k, o, ve_star, e.merge_duration_s)
-                         : std::min(def1_2_margin_m(s, st.ego, k, o, ve_star, e.merge_duration_s),
-                                    def1_2_margin_m(s, st.ego, k, o, ve_star, e.merge_duration_s / 2.0));
+    // The ego gets the benefit of the doubt between the paper's model (already at v_e*) and
+    // the real-position model (changing speed at a bounded rate): it breaks the rule only when
+    // the decision fails under both.
+    const double rho = e.merge_duration_s;
+    auto both = [&](auto margin_fn, double tau_rho) {
+      return std::max(margin_fn(st.ego, tau_rho), margin_fn(real_position_ego(s, st.ego, ve_star, tau_rho * rho), tau_rho));
+    };
+    auto ineq1 = [&](const VehicleState& ego, double) { return def1_1_margin_m(s, ego, k, o, ve_star, rho); };
+    auto ineq2 = [&](const VehicleState& ego, double f) { return def1_2_margin_m(s, ego, k, o, ve_star, f * rho); };
+    const double m = side == GapSide::kFollower ? both(ineq1, 0.5) : std::min(both(ineq2, 1.0), both(ineq2, 0.5));
     if (acc.record(step, d.time_s, m, kEgoId, 0.0, m)) {
       std::ostringstream os;
       os << "ego decided a Def. 1 merge at t = " << d.time_s << " s with v_e* = " << ve_star << " m/s although "

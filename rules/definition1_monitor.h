@@ -21,6 +21,10 @@ double def1_1_margin_m(const Scenario& s, const VehicleState& ego, std::size_t f
 double def1_2_margin_m(const Scenario& s, const VehicleState& ego, std::size_t leader,
                        const VehicleState& leader_state, double ve_star_mps, double rho_m_s);
 
+// Distance covered in tau seconds while changing speed from v to v_star at the given rates
+// (then holding v_star): the ego's real position model of DESIGN §4.
+double speed_change_distance_m(double v, double v_star, double accel, double brake, double tau);
+
 MonitorOutput monitor_def1_1_gap(const MonitorContext& ctx);
 MonitorOutput monitor_def1_1_follower(const MonitorContext& ctx);
 MonitorOutput monitor_def1_2_gap(const MonitorContext& ctx);

@@ -12,14 +12,6 @@ namespace {
 
 constexpr int kBisections = 24;
 
-// Distance covered in tau seconds while changing speed from v to v_star at the given rates.
-double distance_m(double v, double v_star, double accel, double brake, double tau) {
-  const double rate = v_star >= v ? accel : brake;
-  const double t_change = rate > 0.0 ? std::min(std::abs(v_star - v) / rate, tau) : 0.0;
-  const double v_end = v + (v_star >= v ? 1.0 : -1.0) * rate * t_change;
-  return (v + v_end) / 2.0 * t_change + v_end * (tau - t_change);
-}
-
 }  // namespace
 
 bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho, double margin) {
@@ -38,7 +30,7 @@ bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho, dou
   // The predicted ego (X shifted so that X + v_e* tau is where it really is after tau).
   auto ego_at = [&](double v_star, double tau) {
     VehicleState e = ego;
-    e.x_m = ego.x_m + distance_m(v, v_star, lim.accel_max_mps2, lim.brake_min_mps2, tau) - v_star * tau;
+    e.x_m = ego.x_m + speed_change_distance_m(v, v_star, lim.accel_max_mps2, lim.brake_min_mps2, tau) - v_star * tau;
     return e;
   };
   constexpr double kOpen = std::numeric_limits<double>::infinity();

@@ -44,6 +44,11 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
   std::vector<Episode> episodes(pair_count(n));
   std::vector<double> last_overbrake(n, kNever);
   std::vector<char> prev_lon_only(pair_count(n), 0);  // previous step: lon unsafe, lat safe
+  // Below this speed a vehicle braking at b_min stops within one step (its applied
+  // acceleration over that step is then smaller): it counts as stopped.
+  std::vector<double> stop_speed(n);
+  for (std::size_t v = 0; v < n; ++v)
+    stop_speed[v] = ctx.params.halted_speed_mps + limits_of(s, v).brake_min_mps2 * s.params.sim.step_s;
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const TraceStep& st = steps[k];
     for (std::size_t v = 0; v < n; ++v) {
@@ -72,7 +77,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
           e.breach = kEgoId;
           why = "ego entered the lane of " + describe(s, i == 0 ? j : i) +
                 " at an unsafe longitudinal distance without the right of way";
-        } else if (st.time_s >= e.blame_time_s + T - 1e-9 && speed_of(rear) > ctx.params.halted_speed_mps &&
+        } else if (st.time_s >= e.blame_time_s + T - 1e-9 && speed_of(rear) > stop_speed[g.rear] &&
                    rear.accel_mps2 > -(limits_of(s, g.rear).brake_min_mps2 - tol)) {
           e.breach = party_of(s, g.rear);
           std::ostringstream os;

@@ -392,7 +392,6 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   plan.vo = vo;
   plan.partner = o;
   plan.ego_speed_after_mps = v_after;
-  plan.gap = gap;
   Decision& d = plan.decision;
   d.time_s = w.time_s;
   d.mode = DecisionMode::kDef2Request;

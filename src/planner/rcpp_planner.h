@@ -53,7 +53,6 @@ struct Def2Plan {
   VoStar vo;
   MainLaneVehicle partner;
   double ego_speed_after_mps = 0.0;  // the ego's speed during and after the exchange
-  Gap gap;
 };
 std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<int, double>& retry_after_s);
 

@@ -3,7 +3,8 @@
 // through the strict loaders instead (a scenario, or a corpus case when it has a "scenario" key):
 // rejected input is fine, a crash or sanitizer report is not (issue #7 item 4).
 // Environment: MG_FUZZ_PLANNER (default rcpp); MG_FUZZ_CASE_DIR: write each failure there as a
-// corpus case (found_by "libFuzzer", not shrunk) before aborting.
+// corpus case (found_by "libFuzzer", not shrunk) before aborting; MG_FUZZ_LOADERS_ONLY=1: every
+// input is JSON text for the loaders (no simulation), for fuzzing the input boundary alone.
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
@@ -63,10 +64,18 @@ void load_json(const std::uint8_t* data, std::size_t size) {
   std::abort();
 }
 
+bool loaders_only() {
+  static const bool only = [] {
+    const char* env = std::getenv("MG_FUZZ_LOADERS_ONLY");
+    return env != nullptr && std::string(env) == "1";
+  }();
+  return only;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size > 0 && data[0] == '{') {
+  if (loaders_only() || (size > 0 && data[0] == '{')) {
     load_json(data, size);
     return 0;
   }

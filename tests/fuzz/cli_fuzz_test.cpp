@@ -42,8 +42,8 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-// Runs MG_CLI with args; `interrupt_after_s` > 0 sends SIGINT after that many seconds.
-CliRun run_cli(const std::vector<std::string>& args, double interrupt_after_s = 0.0) {
+// Runs MG_CLI with args; `interrupt_after_s` > 0 sends `signal` (SIGINT) after that many seconds.
+CliRun run_cli(const std::vector<std::string>& args, double interrupt_after_s = 0.0, int signal = SIGINT) {
   const char* cli = std::getenv("MG_CLI");
   if (cli == nullptr) throw std::runtime_error("MG_CLI is not set (run through ctest)");
   const auto dir = scratch("io");
@@ -60,7 +60,7 @@ CliRun run_cli(const std::vector<std::string>& args, double interrupt_after_s = 
   }
   if (interrupt_after_s > 0.0) {
     std::this_thread::sleep_for(std::chrono::duration<double>(interrupt_after_s));
-    ::kill(pid, SIGINT);
+    ::kill(pid, signal);
   }
   int status = 0;
   ::waitpid(pid, &status, 0);
@@ -121,6 +121,20 @@ TEST(CliFuzz, SigintStopsCleanlyAndStillReports) {
   EXPECT_TRUE(j.at("interrupted").get<bool>());
   EXPECT_TRUE(fs::exists(dir / "report" / "campaign.json"));
   for (const auto& path : j.at("new_cases")) EXPECT_NO_THROW(load_case(path.get<std::string>()));
+  fs::remove_all(dir);
+}
+
+TEST(CliFuzz, SigkillNeverLeavesABrokenCase) {
+  const auto dir = scratch("sigkill");
+  for (double after_s : {1.5, 4.0}) {
+    const CliRun r = run_cli({"fuzz", "--planner", "tripfield", "--time", "600", "--jobs", "2", "--seed",
+                              std::to_string(static_cast<int>(after_s * 10)), "--corpus", (dir / "cases").string()},
+                             after_s, SIGKILL);
+    EXPECT_EQ(r.exit_code, 128 + SIGKILL);
+  }
+  ASSERT_TRUE(fs::exists(dir / "cases")) << "no case written before the kill";
+  for (const std::string& file : case_files((dir / "cases").string())) EXPECT_NO_THROW(load_case(file)) << file;
+  EXPECT_EQ(run_cli({"replay", (dir / "cases").string()}).exit_code, 0);
   fs::remove_all(dir);
 }
 

@@ -30,6 +30,7 @@ const std::vector<Expectation> kFiles = {
     {"number_as_string.json", "/vehicles/0/speed_mps: must be a number"},
     {"huge_number.json", "/vehicles/1/x_m: must be in"},
     {"nan_literal.json", "malformed JSON"},
+    {"number_overflow.json", "number out of range of a double"},
     {"negative_length.json", "/vehicles/1/length_m: must be > 0"},
     {"zero_width.json", "/ego/width_m: must be > 0"},
     {"faster_than_light.json", "/ego/speed_mps: must be in [0, 100]"},

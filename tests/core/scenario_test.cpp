@@ -108,6 +108,7 @@ TEST(JsonText, MalformedEmptyAndDeepInputsAreInputErrors) {
   EXPECT_THROW(parse_json_text("{\"x\": ", "a.json"), InputError);
   EXPECT_THROW(parse_json_text("\x01\x02garbage", "a.json"), InputError);
   EXPECT_THROW(parse_json_text(std::string(10000, '[') + std::string(10000, ']'), "a.json"), InputError);
+  EXPECT_THROW(parse_json_text("{\"x_m\": 2e308}", "a.json"), InputError);  // overflows a double
   EXPECT_NO_THROW(parse_json_text("{\"a\": [[1]]}", "a.json"));
 }
 

@@ -54,7 +54,7 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& sourc
     std::string what = e.what();
     if (auto pos = what.find("parse error"); pos != std::string::npos) what = what.substr(pos);
     throw InputError(source, "", "malformed JSON (" + what + ")");
-  } catch (const nlohmann::json::out_of_range& e) {
+  } catch (const nlohmann::json::out_of_range&) {
     // A number literal beyond the range of a double (e.g. 2e308).
     throw InputError(source, "", "number out of range of a double");
   } catch (const nlohmann::json::exception& e) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include "core/rss.h"
+
 namespace mg::fuzz {
 namespace {
 
@@ -57,6 +59,17 @@ NonCompliance noncompliance_of(const VehicleSpec& s, const Limits& declared) {
       nc.type == NonComplianceType::kExceedAccel ? declared.accel_max_mps2 : declared.brake_max_mps2;
   nc.accel_mps2 = std::min(30.0, snap_to_grid(declared_mps2 + s.nc_excess_mps2, 0.1));
   return nc;
+}
+
+// The centre X of `front` placed `slack_m` beyond the RSS safe distance ahead of `rear` (RCPP
+// eq. (1) with the scenario's response time and the declared limits), rounded up to 5 cm: every
+// generated scenario starts RSS-safe between main-lane vehicles of a lane, so a collision among
+// them always has a party that broke an obligation after t = 0.
+double ahead_of(const MainVehicle& rear, const MainVehicle& front, double response_time_s, double slack_m) {
+  const double d_lon_m =
+      rss_longitudinal_m({rear.speed_mps, front.speed_mps, rear.size.length_m, front.size.length_m, response_time_s,
+                          rear.limits.accel_max_mps2, rear.limits.brake_min_mps2, front.limits.brake_max_mps2});
+  return std::ceil((rear.x_m + d_lon_m + slack_m) / 0.05 - 1e-6) * 0.05;
 }
 
 }  // namespace
@@ -118,8 +131,7 @@ Scenario assemble_scenario(const ScenarioSpec& spec) {
     if (prev == last_in_lane.end()) {
       m.x_m = snap_to_grid(ego.x_m + vs.first_offset_m, 0.05);
     } else {
-      const MainVehicle& p = s.vehicles[prev->second];
-      m.x_m = snap_to_grid(p.x_m + (p.size.length_m + m.size.length_m) / 2.0 + vs.gap_m, 0.05);
+      m.x_m = ahead_of(s.vehicles[prev->second], m, s.params.rss.response_time_s, vs.gap_m);
     }
     last_in_lane[m.lane] = s.vehicles.size();
     s.vehicles.push_back(m);

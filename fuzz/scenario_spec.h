@@ -42,7 +42,7 @@ inline constexpr RealRange kLatency{0.0, 1.0, 0.1, 0.01};             // s
 inline constexpr RealRange kLoss{0.0, 1.0, 0.0, 0.05};                // probability
 // Main-lane vehicles.
 inline constexpr RealRange kFirstOffset{-80.0, 120.0, 0.0, 0.5};      // m, first vehicle of a lane vs ego X
-inline constexpr RealRange kGap{5.0, 150.0, 40.0, 0.5};               // m bumper to bumper behind the previous one
+inline constexpr RealRange kGap{1.0, 150.0, 20.0, 0.5};               // m beyond the RSS safe distance behind the previous one
 inline constexpr RealRange kSpeed{0.0, 40.0, 20.0, 0.1};              // m/s, capped at 1.1 x speed limit
 inline constexpr RealRange kLength{3.5, 18.0, 4.8, 0.1};              // m (cars to trucks)
 inline constexpr RealRange kWidth{1.6, 2.55, 1.9, 0.05};              // m
@@ -104,7 +104,7 @@ struct EgoSpec {
 struct VehicleSpec {
   int lane = 0;                   // clamped to the road's main lanes
   double first_offset_m = 0.0;    // used by the first vehicle of its lane
-  double gap_m = 40.0;            // used by the others
+  double gap_m = 20.0;            // used by the others: slack beyond the RSS distance (RCPP eq. 1)
   double speed_mps = 20.0;
   double length_m = 4.8;
   double width_m = 1.9;
@@ -139,7 +139,8 @@ struct ScenarioSpec {
 };
 
 // Places the vehicles (per lane, in order: the first at first_offset_m from the ego, the next
-// gap_m bumper to bumper ahead of the previous one), numbers them 1..n, caps speeds, resets fields
+// gap_m beyond the RSS longitudinal safe distance ahead of the previous one, so that every lane
+// starts RSS-safe), numbers them 1..n, caps speeds, resets fields
 // the chosen behaviour or non-compliance does not use, and extends the side lane so that the
 // ego can always stop before its end (the scenario is never unwinnable by construction).
 Scenario assemble_scenario(const ScenarioSpec& spec);

@@ -7,10 +7,57 @@
 #include <rapidcheck/gtest.h>
 
 #include "core/input_error.h"
+#include "core/rss.h"
 #include "fuzz/shrink.h"
 
 namespace mg::fuzz {
 namespace {
+
+// True when every main-lane vehicle is at least the RSS longitudinal distance (RCPP eq. 1, the
+// scenario's response time, declared limits) behind each vehicle ahead of it in its lane.
+bool starts_rss_safe_in_every_lane(const Scenario& s) {
+  for (const MainVehicle& rear : s.vehicles) {
+    for (const MainVehicle& front : s.vehicles) {
+      if (&rear == &front || rear.lane != front.lane || front.x_m < rear.x_m) continue;
+      const double d_lon_m = rss_longitudinal_m({rear.speed_mps, front.speed_mps, rear.size.length_m, front.size.length_m,
+                                                 s.params.rss.response_time_s, rear.limits.accel_max_mps2,
+                                                 rear.limits.brake_min_mps2, front.limits.brake_max_mps2});
+      if (front.x_m - rear.x_m < d_lon_m) return false;
+    }
+  }
+  return true;
+}
+
+RC_GTEST_PROP(ScenarioGen, EveryGeneratedScenarioStartsRssSafeBetweenMainLaneVehicles, ()) {
+  const Scenario s = *gen_scenario(GenConfig{});
+  RC_ASSERT(starts_rss_safe_in_every_lane(s));
+}
+
+RC_GTEST_PROP(ScenarioGen, EveryFirstShrinkStartsRssSafe, (std::uint64_t seed)) {
+  const auto generated = generate_scenario(seed, GenConfig{});
+  auto shrinks = generated.shrinks();
+  int checked = 0;
+  while (auto candidate = shrinks.next()) {
+    RC_ASSERT(starts_rss_safe_in_every_lane(candidate->value()));
+    if (++checked == 40) break;
+  }
+}
+
+TEST(ScenarioGen, RssSafetyCheckRejectsAFollowerTooClose) {
+  Scenario s = generate_scenario(run_seed(1, 0), {}).value();
+  s.vehicles.clear();
+  MainVehicle rear;
+  rear.id = 1;
+  rear.speed_mps = 20.0;
+  MainVehicle front = rear;
+  front.id = 2;
+  front.speed_mps = 0.0;
+  front.x_m = 44.8;  // the campaign's finding: 20 m/s, 44.8 m behind a stopped vehicle
+  s.vehicles = {rear, front};
+  EXPECT_FALSE(starts_rss_safe_in_every_lane(s));
+  s.vehicles[1].x_m = 200.0;
+  EXPECT_TRUE(starts_rss_safe_in_every_lane(s));
+}
 
 RC_GTEST_PROP(ScenarioGen, EveryGeneratedScenarioPassesTheLoader, ()) {
   const Scenario s = *gen_scenario(GenConfig{});

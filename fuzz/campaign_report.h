@@ -12,11 +12,11 @@
 
 namespace mg::fuzz {
 
-// The summary printed by `mergeguard fuzz --json` and saved as campaign.json. Only "seconds",
+// The summary printed by `mergeguard fuzz --json` and saved as report.json. Only "seconds",
 // "scenarios_per_second" and "date" depend on timing.
 nlohmann::json campaign_summary_json(const CampaignOptions& options, const CampaignResult& result);
 
-// Writes campaign.json, campaign.md and campaign.html into `dir` (atomically, each). `liability_reports`
+// Writes report.json, report.md and report.html into `dir` (atomically, each). `liability_reports`
 // maps a case path to its liability report (relative to `dir`) when one was written.
 void write_campaign_report(const std::string& dir, const CampaignOptions& options, const CampaignResult& result,
                            const std::map<std::string, std::string>& liability_reports);

@@ -117,7 +117,7 @@ int run_fuzz_checked(const std::vector<std::string>& args) {
   app.add_option("--shard", shard, "K/N: run only the indices i with i mod N = K");
   app.add_option("--planner", o.planner, "rcpp, rcpp-coop or tripfield")->check(CLI::IsMember(planner_names()));
   app.add_option("--corpus", o.corpus_dir, "corpus directory (minimal cases are added here, one per new signature)");
-  app.add_option("--report", report_dir, "write campaign.json, campaign.md, campaign.html here");
+  app.add_option("--report", report_dir, "write report.json, report.md, report.html here");
   app.add_flag("--json", json, "print one JSON summary on stdout");
   app.add_option("--max-vehicles", o.gen.max_vehicles, "main-lane vehicles per scenario, 0..N (default 6)");
   app.add_option("--determinism-every", o.determinism_every, "check determinism on every k-th run (0: never; default 8)");

@@ -119,7 +119,7 @@ TEST(CliFuzz, SigintStopsCleanlyAndStillReports) {
   ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.exit_code << " " << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j.at("interrupted").get<bool>());
-  EXPECT_TRUE(fs::exists(dir / "report" / "campaign.json"));
+  EXPECT_TRUE(fs::exists(dir / "report" / "report.json"));
   for (const auto& path : j.at("new_cases")) EXPECT_NO_THROW(load_case(path.get<std::string>()));
   fs::remove_all(dir);
 }

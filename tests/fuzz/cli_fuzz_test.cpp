@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -42,8 +44,32 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-// Runs MG_CLI with args; `interrupt_after_s` > 0 sends `signal` (SIGINT) after that many seconds.
-CliRun run_cli(const std::vector<std::string>& args, double interrupt_after_s = 0.0, int signal = SIGINT) {
+// Every wait in these tests is bounded (a hung child fails the test instead of hanging CTest) and
+// none asserts a duration: signals are sent on observed events, not after fixed delays, so the
+// tests hold under sanitizers and on a loaded machine.
+constexpr double kMaxWaitS = 300.0;
+
+// Polls `ready` every 10 ms until it holds or `max_s` passed; false on timeout.
+bool wait_until(const std::function<bool()>& ready, double max_s = kMaxWaitS) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(max_s);
+  while (!ready()) {
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return true;
+}
+
+// When and how to signal the child: once `ready(err_path)` holds (bounded wait), after
+// `extra_delay_s` more, send `signal`.
+struct Interrupt {
+  int signal = SIGINT;
+  std::function<bool(const fs::path& err_path)> ready;
+  double extra_delay_s = 0.0;
+};
+
+// Runs MG_CLI with args, optionally signalling it. exit_code is the exit status, 128 + the signal
+// that killed it, or -1 (with a note in err) when it did not exit within kMaxWaitS.
+CliRun run_cli(const std::vector<std::string>& args, const std::optional<Interrupt>& interrupt = std::nullopt) {
   const char* cli = std::getenv("MG_CLI");
   if (cli == nullptr) throw std::runtime_error("MG_CLI is not set (run through ctest)");
   const auto dir = scratch("io");
@@ -58,18 +84,35 @@ CliRun run_cli(const std::vector<std::string>& args, double interrupt_after_s = 
     ::execv(cli, argv.data());
     ::_exit(127);
   }
-  if (interrupt_after_s > 0.0) {
-    std::this_thread::sleep_for(std::chrono::duration<double>(interrupt_after_s));
-    ::kill(pid, signal);
-  }
   int status = 0;
-  ::waitpid(pid, &status, 0);
+  bool exited = false;
+  const auto child_exited = [&] { return exited || (exited = ::waitpid(pid, &status, WNOHANG) == pid); };
+  std::string note;
+  if (interrupt) {
+    if (!wait_until([&] { return child_exited() || interrupt->ready(err_path); })) note = "\n[test: ready condition timed out]";
+    if (!child_exited()) wait_until(child_exited, interrupt->extra_delay_s);
+    if (!child_exited()) ::kill(pid, interrupt->signal);
+  }
+  if (!wait_until(child_exited)) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+    note += "\n[test: the command did not exit within the bounded wait]";
+  }
   CliRun r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.exit_code = !note.empty() ? -1 : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = slurp(out_path);
-  r.err = slurp(err_path);
+  r.err = slurp(err_path) + note;
   fs::remove_all(dir);
   return r;
+}
+
+// True once the campaign has started (its first progress line, printed after the SIGINT handler
+// is installed and the corpus is read).
+bool campaign_started(const fs::path& err_path) { return slurp(err_path).find("fuzz: ") != std::string::npos; }
+
+std::size_t finished_cases(const fs::path& corpus) {
+  std::error_code ec;
+  return fs::is_directory(corpus, ec) ? case_files(corpus.string()).size() : 0;
 }
 
 std::vector<std::string> fuzz_args(const fs::path& corpus, const std::string& runs, const std::string& jobs) {
@@ -113,28 +156,40 @@ TEST(CliFuzz, BadUsageExitsTwo) {
 
 TEST(CliFuzz, SigintStopsCleanlyAndStillReports) {
   const auto dir = scratch("sigint");
-  const CliRun r = run_cli({"fuzz", "--planner", "tripfield", "--time", "600", "--corpus", (dir / "cases").string(),
-                         "--report", (dir / "report").string(), "--json"},
-                        3.0);
+  // SIGINT once the first case is written: the campaign is then surely running and has found
+  // something to report.
+  const auto cases = dir / "cases";
+  const CliRun r = run_cli({"fuzz", "--planner", "tripfield", "--time", "600", "--shrink-attempts", "20", "--corpus",
+                            cases.string(), "--report", (dir / "report").string(), "--json"},
+                           Interrupt{SIGINT, [&](const fs::path&) { return finished_cases(cases) > 0; }, 0.0});
   ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.exit_code << " " << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j.at("interrupted").get<bool>());
   EXPECT_TRUE(fs::exists(dir / "report" / "report.json"));
+  EXPECT_FALSE(j.at("new_cases").empty());
   for (const auto& path : j.at("new_cases")) EXPECT_NO_THROW(load_case(path.get<std::string>()));
   fs::remove_all(dir);
 }
 
 TEST(CliFuzz, SigkillNeverLeavesABrokenCase) {
   const auto dir = scratch("sigkill");
-  for (double after_s : {1.5, 4.0}) {
+  // Kill moments tied to events, not to the clock: right at the start of the campaign, the
+  // moment the first case is finished (another is likely being shrunk or written), and a little
+  // later. Small shrink budgets make writes frequent.
+  const std::vector<Interrupt> kills{{SIGKILL, campaign_started, 0.0},
+                                     {SIGKILL, [&](const fs::path&) { return finished_cases(dir / "cases-1") > 0; }, 0.0},
+                                     {SIGKILL, [&](const fs::path&) { return finished_cases(dir / "cases-2") > 0; }, 0.3}};
+  for (std::size_t k = 0; k < kills.size(); ++k) {
+    const auto cases = dir / ("cases-" + std::to_string(k));
     const CliRun r = run_cli({"fuzz", "--planner", "tripfield", "--time", "600", "--jobs", "2", "--seed",
-                              std::to_string(static_cast<int>(after_s * 10)), "--corpus", (dir / "cases").string()},
-                             after_s, SIGKILL);
-    EXPECT_EQ(r.exit_code, 128 + SIGKILL);
+                              std::to_string(k + 1), "--shrink-attempts", "20", "--corpus", cases.string()},
+                             kills[k]);
+    EXPECT_EQ(r.exit_code, 128 + SIGKILL) << r.err;
+    if (!fs::exists(cases)) continue;  // killed before the first case: nothing to check
+    for (const std::string& file : case_files(cases.string())) EXPECT_NO_THROW(load_case(file)) << file;
+    EXPECT_EQ(run_cli({"replay", cases.string()}).exit_code, 0) << cases;
   }
-  ASSERT_TRUE(fs::exists(dir / "cases")) << "no case written before the kill";
-  for (const std::string& file : case_files((dir / "cases").string())) EXPECT_NO_THROW(load_case(file)) << file;
-  EXPECT_EQ(run_cli({"replay", (dir / "cases").string()}).exit_code, 0);
+  EXPECT_GT(finished_cases(dir / "cases-1"), 0u);
   fs::remove_all(dir);
 }
 

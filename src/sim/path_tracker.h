@@ -16,6 +16,11 @@ struct PathTrackerGains {
   double preview_time_s = 0.3;
   double softening_mps = 2.0;        // k_soft: keeps the gain finite at low speed
   double yaw_rate_damping_s = 0.05;  // k_d on (r_path - r)
+  // Comfort envelope of the driver: the request is capped at the steering whose kinematic
+  // sideslip atan(l_r tan(delta) / L) equals this, below the rules' sideslip bound (0.05 rad).
+  // Without it, Stanley's cross-track term at low speed (atan(k e / (k_soft + v))) steers up to
+  // ~0.1 rad for a 0.3 m offset, i.e. a kinematic sideslip of ~0.06 rad right after a start.
+  double sideslip_max_rad = 0.04;
 };
 
 // Signed lateral error of a point against a polyline (positive: point left of the path) and the
@@ -30,7 +35,7 @@ struct PathProjection {
 };
 PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m, double preview_m = 2.0);
 
-// Steering request that brings the front axle onto the path.
+// Steering request that brings the front axle onto the path, within the sideslip envelope.
 double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleState& ego, const EgoDynamics& d,
                             const PathTrackerGains& gains = {});
 

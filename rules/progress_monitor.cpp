@@ -2,66 +2,39 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
-#include "rules/definition1_monitor.h"
+#include "planner/definition1.h"
 
 namespace mg {
-namespace {
 
-constexpr int kBisections = 24;
-
-}  // namespace
-
+// The planner's own Definition 1 functions (planner/definition1.h: the paper's literal form AND
+// the bounded-rate form of DESIGN §4) judge feasibility, so the rule and the planner cannot
+// disagree about what a feasible gap is; the rule only adds `margin` to both inequalities.
 bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho, double margin) {
-  std::vector<std::size_t> lane;  // rightmost main lane, sorted by X
+  std::vector<MainLaneVehicle> lane;  // rightmost main lane
   for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
-    if (s.vehicles[k - 1].lane == 0) lane.push_back(k);
+    const MainVehicle& m = s.vehicles[k - 1];
+    if (m.lane != 0) continue;
+    const VehicleState& o = state_of(step, k);
+    lane.push_back(MainLaneVehicle{m.id, o.x_m, std::max(speed_of(o), 0.0), m.size.length_m, m.limits});
   }
-  std::sort(lane.begin(), lane.end(),
-            [&](std::size_t a, std::size_t b) { return state_of(step, a).x_m < state_of(step, b).x_m; });
-  const VehicleState& ego = step.ego;
-  const Limits& lim = s.ego.limits;
-  const double v = std::max(speed_of(ego), 0.0);
-  const double lo = std::max(0.0, v - lim.brake_min_mps2 * rho / 2.0);
-  const double hi = std::min(s.road.speed_limit_mps, v + lim.accel_max_mps2 * rho / 2.0);
+  const Def1Context c{step.ego.x_m,  std::max(speed_of(step.ego), 0.0), s.ego.size.length_m, s.ego.limits,
+                      s.params.rss.response_time_s, rho, s.road.speed_limit_mps};
   const double end_x = s.road.side_lane_end_x_m - s.params.planner.halt_margin_m - s.ego.size.length_m / 2.0;
-  // The predicted ego (X shifted so that X + v_e* tau is where it really is after tau).
-  auto ego_at = [&](double v_star, double tau) {
-    VehicleState e = ego;
-    e.x_m = ego.x_m + speed_change_distance_m(v, v_star, lim.accel_max_mps2, lim.brake_min_mps2, tau) - v_star * tau;
-    return e;
-  };
-  constexpr double kOpen = std::numeric_limits<double>::infinity();
-  for (std::size_t g = 0; g <= lane.size(); ++g) {
-    // Ineq. (1) toward the follower: non-decreasing in v_e* (the ego gets farther ahead and
-    // D_lon with the ego in front shrinks).
-    auto follower_margin = [&](double v_star) {
-      return g == 0 ? kOpen
-                    : def1_1_margin_m(s, ego_at(v_star, rho / 2.0), lane[g - 1], state_of(step, lane[g - 1]), v_star, rho);
-    };
-    // Ineq. (2) toward the leader at rho/2 and rho, and the midpoint before the side lane end:
-    // non-increasing in v_e*.
-    auto leader_margin = [&](double v_star) {
-      const VehicleState half = ego_at(v_star, rho / 2.0);
-      double m = end_x - (half.x_m + v_star * rho / 2.0);
-      if (g < lane.size()) {
-        const VehicleState& o = state_of(step, lane[g]);
-        m = std::min({m, def1_2_margin_m(s, ego_at(v_star, rho), lane[g], o, v_star, rho),
-                      def1_2_margin_m(s, half, lane[g], o, v_star, rho / 2.0)});
-      }
-      return m;
-    };
-    if (follower_margin(hi) < margin || leader_margin(lo) < margin) continue;
-    // Smallest v_e* that satisfies ineq. (1) (bisection on a monotone margin), then ineq. (2).
-    double a = lo, b = hi;
-    if (follower_margin(lo) >= margin) b = lo;
-    for (int it = 0; it < kBisections && b > a; ++it) {
-      const double mid = 0.5 * (a + b);
-      (follower_margin(mid) >= margin ? b : a) = mid;
+  for (const LaneGap& gap : enumerate_gaps(lane)) {
+    // Ineq. (1.1): non-decreasing in v_e*, so the smallest satisfying v_e* is the best for (1.2).
+    double lo = 0.0;
+    if (gap.follower) {
+      const auto v = lowest_satisfying(
+          [&](double ve) { return def1_1_margin_m(c, *gap.follower, ve) - margin; }, 0.0, c.speed_limit_mps);
+      if (!v) continue;
+      lo = *v;
     }
-    if (leader_margin(b) >= margin) return true;
+    // Ineq. (1.2) and the merge midpoint before the side lane end: non-increasing in v_e*.
+    double m = end_x - (c.ego_x_m + c.ramp_to(lo).distance_at_m(rho / 2.0));
+    if (gap.leader) m = std::min(m, def1_2_margin_m(c, *gap.leader, lo) - margin);
+    if (m >= 0.0) return true;
   }
   return false;
 }

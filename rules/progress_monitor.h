@@ -7,11 +7,10 @@
 
 namespace mg {
 
-// Whether some gap of the rightmost main lane satisfies ineq. (1) and (2) with `margin_m`
-// (ineq. (2) at both rho/2 and rho) for a v_e* the ego can reach from its current speed (the ego's position is predicted while
-// it changes speed at a_accel^max / b_min, not as if it already drove v_e*), with the merge
-// midpoint before the side lane end. Exact up to bisection: ineq. (1) is monotone increasing
-// and ineq. (2) decreasing in v_e*.
+// Whether some gap of the rightmost main lane satisfies ineq. (1) and (2) with `margin_m` for a
+// v_e* in [0, speed_limit], judged by the planner's own Definition 1 margins
+// (planner/definition1.h: the paper's literal form and the bounded-rate form of DESIGN §4 must
+// both hold), with the merge midpoint before the side lane end.
 bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho_m_s, double margin_m);
 
 MonitorOutput monitor_progress(const MonitorContext& ctx);

@@ -20,6 +20,7 @@ constexpr double kPathStepM = 1.0;
 constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
 constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
+constexpr double kLeaderBrakingMps2 = 0.5;   // a gap leader decelerating harder than this is braking
 
 std::string fmt(const char* f, double a) {
   char buf[64];
@@ -218,7 +219,8 @@ double gap_traffic_speed_mps(const LaneGap& g, double fallback_mps) {
 }
 
 // Definition 1 for one merge duration rho_s.
-std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_s, std::string* why) {
+std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_s, std::string* why,
+                                             int* sigmoid_failures) {
   const Scenario& s = *w.scenario;
   const PlannerParams& p = s.params.planner;
   const Def1Context ctx = def1_context(w, rho_s);
@@ -300,6 +302,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
                "/m, rho = " + fmt("%.1f", rho_s) + " s (cost " + fmt("%.2f", choice->cost) + ")";
     best = plan;
   }
+  if (!best && sigmoid_failures) *sigmoid_failures += n_cross + n_sigmoid;
   if (!best && why)
     *why = std::to_string(n_def1) + " gap(s) violate ineq. 1.1/1.2, " + std::to_string(n_cross) +
            " with crossing P_c bounds, " + std::to_string(n_sigmoid) + " without a comfortable sigmoid";
@@ -453,10 +456,13 @@ std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, std::string* wh
   // Slow: too slow for a trackable sigmoid (kappa <= kappa_cap) to fit in rho at constant speed.
   const double slow_mps = std::max(kStandstillMergeSpeedMps, kSlowMergeSpeedFactor * 2.0 * half_span_times_kappa() /
                                                                  (kappa_cap_per_m(*w.scenario) * rho_base_s));
+  int sigmoid_failures = 0;  // gaps of the first rho that satisfy ineq. (1.1)/(1.2) but lack a sigmoid
   for (const double factor : kMergeDurationFactors) {
-    if (factor > 1.0 && ego_speed_mps(w) >= slow_mps) break;  // slow merges only
+    // Longer merges for slow egos, and for any ego whose gap satisfies ineq. (1.1)/(1.2) but has
+    // no comfortable sigmoid in rho_m (e.g. it must drop behind a vehicle that is passing it).
+    if (factor > 1.0 && ego_speed_mps(w) >= slow_mps && sigmoid_failures == 0) break;
     std::string this_why;
-    if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why)) return plan;
+    if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why, &sigmoid_failures)) return plan;
     if (why && factor == kMergeDurationFactors[0]) *why = this_why;
   }
   return std::nullopt;
@@ -551,9 +557,15 @@ PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
   out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM, kPathStepM);
   double target = merge_->target_speed_mps;
   // Past P_c the ego is in the main lane: it also keeps its RSS distance to the vehicle ahead.
-  if (w.ego.x_m >= merge_->sigmoid.pc_m)
-    if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m))
-      target = std::min(target, rss_follow_speed_mps(w, *leader));
+  // Before P_c it does so too once that vehicle brakes: Def. 1.2 predicted it at constant speed,
+  // and a compliant leader may brake (e.g. for a slow vehicle ahead of it) up to its b_max; the
+  // ego must still reach P_c at D_lon behind it (RCPP §II-C, DESIGN §6).
+  if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m)) {
+    const auto obs = std::find_if(w.others.begin(), w.others.end(),
+                                  [&](const ObservedVehicle& o) { return o.id == leader->id; });
+    const bool braking = obs != w.others.end() && obs->state.accel_mps2 < -kLeaderBrakingMps2;
+    if (w.ego.x_m >= merge_->sigmoid.pc_m || braking) target = std::min(target, rss_follow_speed_mps(w, *leader));
+  }
   out.target_speed_mps = target;
   out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
   out.decision = merge_->decision;

@@ -11,7 +11,8 @@ namespace mg {
 // The planner's own Definition 1 functions (planner/definition1.h: the paper's literal form AND
 // the bounded-rate form of DESIGN §4) judge feasibility, so the rule and the planner cannot
 // disagree about what a feasible gap is; the rule only adds `margin` to both inequalities.
-bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho, double margin) {
+bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho, double margin,
+                       double min_midpoint_ahead_m) {
   std::vector<MainLaneVehicle> lane;  // rightmost main lane
   for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
     const MainVehicle& m = s.vehicles[k - 1];
@@ -32,7 +33,8 @@ bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho, dou
       lo = *v;
     }
     // Ineq. (1.2) and the merge midpoint before the side lane end: non-increasing in v_e*.
-    double m = end_x - (c.ego_x_m + c.ramp_to(lo).distance_at_m(rho / 2.0));
+    const double mid_x = c.ego_x_m + std::max(c.ramp_to(lo).distance_at_m(rho / 2.0), min_midpoint_ahead_m);
+    double m = end_x - mid_x;
     if (gap.leader) m = std::min(m, def1_2_margin_m(c, *gap.leader, lo) - margin);
     if (m >= 0.0) return true;
   }
@@ -47,6 +49,13 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
   double run_start = -1.0;
   double last_eval = -1.0;
   bool feasible = false;
+  // The shortest way to the lane boundary that respects the sideslip rule: a logistic lane change
+  // whose peak curvature W kappa^2 / (6 sqrt 3) stays within the kinematic-sideslip curvature
+  // tan(sideslip_max) / l_r covers ln(49) / kappa from 2 % of the offset to its midpoint. From a
+  // standstill just before the side lane's end no merge fits, whatever the gaps.
+  const double curvature_max = std::tan(ctx.params.sideslip_max_rad) / s.ego.dynamics.cg_to_rear_m;
+  const double kappa_max = std::sqrt(6.0 * std::sqrt(3.0) * curvature_max / s.road.lane_width_m);
+  const double min_midpoint_ahead = std::log(49.0) / kappa_max;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const TraceStep& st = steps[i];
     const bool halting = st.ego_mode == DecisionMode::kDef1Halt || speed_of(st.ego) < ctx.params.halted_speed_mps;
@@ -57,7 +66,8 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
     }
     // Feasibility is re-evaluated once per planner cycle (the planner cannot react faster).
     if (last_eval < 0.0 || st.time_s - last_eval >= s.params.sim.planner_cycle_s - 1e-9) {
-      feasible = def1_gap_feasible(s, st, s.params.planner.merge_duration_s, ctx.params.progress_gap_margin_m);
+      feasible = def1_gap_feasible(s, st, s.params.planner.merge_duration_s, ctx.params.progress_gap_margin_m,
+                                   min_midpoint_ahead);
       last_eval = st.time_s;
     }
     if (!feasible) {

@@ -11,7 +11,10 @@ namespace mg {
 // v_e* in [0, speed_limit], judged by the planner's own Definition 1 margins
 // (planner/definition1.h: the paper's literal form and the bounded-rate form of DESIGN §4 must
 // both hold), with the merge midpoint before the side lane end.
-bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho_m_s, double margin_m);
+// The midpoint must also lie at least min_midpoint_ahead_m ahead of the ego (the shortest lane
+// change the sideslip rule allows).
+bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho_m_s, double margin_m,
+                       double min_midpoint_ahead_m);
 
 MonitorOutput monitor_progress(const MonitorContext& ctx);
 

@@ -523,7 +523,8 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
 bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
   const Scenario& s = *w.scenario;
   const Decision& d = merge_->decision;
-  const SpeedRamp ramp{ego_speed_mps(w), merge_->target_speed_mps, s.ego.limits.accel_max_mps2,
+  // The speed the ego will really aim for: v_e*, or less behind a braking leader (follow_merge).
+  const SpeedRamp ramp{ego_speed_mps(w), merge_target_speed_mps(w), s.ego.limits.accel_max_mps2,
                        s.ego.limits.brake_min_mps2};
   const double to_pc_m = merge_->sigmoid.pc_m - w.ego.x_m;
   if (to_pc_m <= 0.0) return false;
@@ -551,10 +552,7 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
   return false;
 }
 
-PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
-  PlanOutput out;
-  out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM, kPathStepM);
+double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
   double target = merge_->target_speed_mps;
   // Past P_c the ego is in the main lane: it also keeps its RSS distance to the vehicle ahead.
   // Before P_c it does so too once that vehicle brakes: Def. 1.2 predicted it at constant speed,
@@ -566,6 +564,14 @@ PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
     const bool braking = obs != w.others.end() && obs->state.accel_mps2 < -kLeaderBrakingMps2;
     if (w.ego.x_m >= merge_->sigmoid.pc_m || braking) target = std::min(target, rss_follow_speed_mps(w, *leader));
   }
+  return target;
+}
+
+PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  PlanOutput out;
+  out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM, kPathStepM);
+  const double target = merge_target_speed_mps(w);
   out.target_speed_mps = target;
   out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
   out.decision = merge_->decision;

@@ -78,6 +78,7 @@ class RcppPlanner : public Planner {
   PlanOutput decide_in_side_lane(const WorldSnapshot& w);
   PlanOutput start_merge(const WorldSnapshot& w, const Sigmoid& s, double speed_mps, Decision d);
   bool committed_bounds_crossed(const WorldSnapshot& w) const;  // P_c bounds at predicted positions
+  double merge_target_speed_mps(const WorldSnapshot& w) const;  // v_e*, capped behind a braking leader
   void apply_override(const WorldSnapshot& w, PlanOutput& out) const;
 
   bool cooperative_;

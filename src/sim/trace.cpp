@@ -8,11 +8,12 @@ namespace {
 
 class Fnv1a64 {
  public:
+  // FNV-1a over whole 64-bit words (one multiply per field instead of eight), with an
+  // xor-shift fold so that the high bits of a word also reach the low bits of the digest.
   void add_bytes(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) {
-      hash_ ^= (v >> (8 * i)) & 0xFFu;
-      hash_ *= 0x100000001B3ull;
-    }
+    hash_ ^= v;
+    hash_ *= 0x100000001B3ull;
+    hash_ ^= hash_ >> 29;
   }
   void add(double v) { add_bytes(std::bit_cast<std::uint64_t>(v)); }
   void add(const VehicleState& s) {

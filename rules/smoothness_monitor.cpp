@@ -11,7 +11,20 @@ MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
   MarginAccumulator acc("smoothness_oscillation", steps.size());
   int merges = 0;
   for (const TraceEvent& e : ctx.trace.events) merges += e.kind == EventKind::kMergeStart && e.vehicle_id == kEgoId;
-  const int allowed = ctx.params.max_lat_speed_sign_changes_per_merge * std::max(merges, 1);
+  // An aborted merge (DESIGN §6: abort when the P_c bounds cross) is a merge attempt of its own:
+  // out, back, and out again later is not oscillation. Aborts are merge decisions followed (RSS
+  // overrides aside) by a side-lane decision; with k aborts there were at least k + 1 attempts.
+  int aborts = 0;
+  DecisionMode last = DecisionMode::kKeepLane;
+  for (const Decision& d : ctx.trace.decisions) {
+    if (d.mode == DecisionMode::kProperResponse) continue;
+    const bool merging = last == DecisionMode::kDef1Merge || last == DecisionMode::kDef2Merge;
+    aborts += merging && (d.mode == DecisionMode::kDef1Halt || d.mode == DecisionMode::kDef2Request ||
+                          d.mode == DecisionMode::kKeepLane);
+    last = d.mode;
+  }
+  merges = std::max(merges, aborts + 1);
+  const int allowed = ctx.params.max_lat_speed_sign_changes_per_merge * merges;
   const double h = ctx.params.lat_speed_hysteresis_mps;
   int sign = 0, changes = 0;
   for (std::size_t i = 0; i < steps.size(); ++i) {

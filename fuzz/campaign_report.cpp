@@ -1,4 +1,5 @@
 #include "fuzz/campaign_report.h"
+#include "sim/svg_plot.h"
 
 #include <cmath>
 #include <filesystem>
@@ -32,19 +33,7 @@ std::string relative_to(const std::string& path, const std::string& dir) {
   return ec ? path : rel.string();
 }
 
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string html_escape(const std::string& s) { return svg::xml_escape(s); }
 
 // One table as rows of cells, rendered to Markdown or HTML.
 struct Table {

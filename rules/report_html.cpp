@@ -19,20 +19,7 @@ const char* const kPalette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff
 
 std::string colour_of(std::size_t k) { return kPalette[k % (sizeof kPalette / sizeof *kPalette)]; }
 
-std::string escape(const std::string& in) {
-  std::string out;
-  out.reserve(in.size());
-  for (char c : in) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(const std::string& in) { return svg::xml_escape(in); }
 
 // Inline SVG inside HTML needs no namespace declaration: drop it so the page holds no URL.
 std::string inline_svg(std::string svg) {

@@ -12,19 +12,6 @@ namespace {
 constexpr int kMarginLeft = 72, kMarginRight = 16, kMarginTop = 34, kMarginBottom = 50;
 constexpr int kGridTitleHeight = 36;
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string num(double v) {
   char buf[32];
@@ -66,7 +53,7 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
 
   out << "<g font-family=\"sans-serif\" font-size=\"12\">\n";
   out << "<text x=\"" << num(0.5 * (x0 + x1)) << "\" y=\"" << oy + 20
-      << "\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">" << escape(p.title) << "</text>\n";
+      << "\" text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\">" << xml_escape(p.title) << "</text>\n";
   out << "<clipPath id=\"clip" << ox << "_" << oy << "\"><rect x=\"" << num(x0) << "\" y=\"" << num(y1)
       << "\" width=\"" << num(x1 - x0) << "\" height=\"" << num(y0 - y1) << "\"/></clipPath>\n";
   for (const Band& b : p.bands) {
@@ -74,7 +61,7 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
     out << "<rect x=\"" << num(bx0) << "\" y=\"" << num(y1) << "\" width=\"" << num(bx1 - bx0) << "\" height=\""
         << num(y0 - y1) << "\" fill=\"" << b.colour << "\" opacity=\"0.6\"/>\n";
     out << "<text x=\"" << num(0.5 * (bx0 + bx1)) << "\" y=\"" << num(y1 + 14)
-        << "\" text-anchor=\"middle\" font-size=\"11\" fill=\"#665\">" << escape(b.caption) << "</text>\n";
+        << "\" text-anchor=\"middle\" font-size=\"11\" fill=\"#665\">" << xml_escape(b.caption) << "</text>\n";
   }
   // Grid, ticks and tick labels.
   const auto xt = nice_ticks(xr.lo, xr.hi), yt = nice_ticks(yr.lo, yr.hi);
@@ -94,9 +81,9 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
   out << "<rect x=\"" << num(x0) << "\" y=\"" << num(y1) << "\" width=\"" << num(x1 - x0) << "\" height=\""
       << num(y0 - y1) << "\" fill=\"none\" stroke=\"#333\"/>\n";
   out << "<text x=\"" << num(0.5 * (x0 + x1)) << "\" y=\"" << num(y0 + 36) << "\" text-anchor=\"middle\">"
-      << escape(p.x_label) << "</text>\n";
+      << xml_escape(p.x_label) << "</text>\n";
   out << "<text transform=\"translate(" << ox + 16 << "," << num(0.5 * (y0 + y1))
-      << ") rotate(-90)\" text-anchor=\"middle\">" << escape(p.y_label) << "</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(p.y_label) << "</text>\n";
   // Data.
   for (const Series& s : p.series) {
     std::string d;
@@ -133,7 +120,7 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
       out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 28) << "\" y2=\"" << num(ly)
           << "\" stroke=\"" << s.colour << "\" stroke-width=\"" << num(s.width_px + 0.4) << "\"";
       if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
-      out << "/>\n<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">" << escape(s.label)
+      out << "/>\n<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">" << xml_escape(s.label)
           << "</text>\n";
     }
   }
@@ -181,11 +168,26 @@ std::string render_grid(const std::vector<Plot>& plots, int columns, const std::
   out << header(cell_w * columns, top + cell_h * rows);
   if (!title.empty())
     out << "<text x=\"" << cell_w * columns / 2 << "\" y=\"24\" text-anchor=\"middle\" font-family=\"sans-serif\" "
-        << "font-size=\"16\" font-weight=\"bold\">" << escape(title) << "</text>\n";
+        << "font-size=\"16\" font-weight=\"bold\">" << xml_escape(title) << "</text>\n";
   for (std::size_t i = 0; i < plots.size(); ++i)
     draw(out, plots[i], static_cast<int>(i % columns) * cell_w, top + static_cast<int>(i / columns) * cell_h);
   out << "</svg>\n";
   return out.str();
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace mg::svg

@@ -46,6 +46,9 @@ struct Plot {
 // Round tick values ("1, 2, 5 x 10^k" steps) covering [lo, hi], about `target` of them.
 std::vector<double> nice_ticks(double lo, double hi, int target = 6);
 
+// Escapes &, <, > and " for XML/HTML text and attribute values.
+std::string xml_escape(const std::string& s);
+
 // One plot as a standalone SVG document.
 std::string render(const Plot& plot);
 

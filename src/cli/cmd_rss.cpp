@@ -1,6 +1,5 @@
 // mergeguard rss longitudinal|lateral: one JSON object on stdin -> {"distance_m": ...} (DESIGN §10).
 #include <iostream>
-#include <iterator>
 #include <limits>
 #include <string>
 
@@ -54,13 +53,7 @@ int run_rss(const std::vector<std::string>& args) {
   std::string kind;
   app.add_option("kind", kind, "longitudinal or lateral")->required()->check(CLI::IsMember({"longitudinal", "lateral"}));
   if (!parse_args(app, args)) return kExitOk;
-  std::string text;
-  std::string chunk(1 << 16, '\0');
-  while (std::cin.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || std::cin.gcount() > 0) {
-    text.append(chunk.data(), static_cast<std::size_t>(std::cin.gcount()));
-    if (text.size() > kMaxInputBytes) throw InputError("<stdin>", "", "input larger than 64 MiB");
-  }
-  const auto json = parse_json_text(text, "<stdin>");
+  const auto json = parse_json_stream(std::cin, "<stdin>");
   const ObjectReader reader(json, "<stdin>", "");
   const double d = kind == "longitudinal" ? rss_longitudinal_from(reader) : rss_lateral_from(reader);
   std::cout << nlohmann::json{{"distance_m", d}}.dump() << "\n";

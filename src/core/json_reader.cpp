@@ -62,17 +62,21 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& sourc
   }
 }
 
-nlohmann::json parse_json_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open file");
+nlohmann::json parse_json_stream(std::istream& in, const std::string& source) {
   std::string text;
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxInputBytes)
-      throw InputError(path, "", "file larger than " + std::to_string(kMaxInputBytes / (1024 * 1024)) + " MiB");
+      throw InputError(source, "", "input larger than " + std::to_string(kMaxInputBytes / (1024 * 1024)) + " MiB");
   }
-  return parse_json_text(text, path);
+  return parse_json_text(text, source);
+}
+
+nlohmann::json parse_json_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot open file");
+  return parse_json_stream(in, path);
 }
 
 ObjectReader::ObjectReader(const nlohmann::json& value, std::string source, std::string path)

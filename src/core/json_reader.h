@@ -3,6 +3,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <istream>
 #include <string>
 #include <string_view>
 
@@ -15,7 +16,9 @@ namespace mg {
 // Parses text as JSON; malformed or empty input raises InputError naming `source`.
 // Nesting deeper than kMaxJsonDepth is rejected (hostile input guard).
 nlohmann::json parse_json_text(const std::string& text, const std::string& source);
-// Reads a whole file (at most kMaxInputBytes) and parses it.
+// Reads a whole stream (at most kMaxInputBytes) and parses it; `source` names it in errors.
+nlohmann::json parse_json_stream(std::istream& in, const std::string& source);
+// Opens and parses a file (same bounds).
 nlohmann::json parse_json_file(const std::string& path);
 
 inline constexpr std::size_t kMaxInputBytes = 64u * 1024u * 1024u;

@@ -3,18 +3,34 @@
 // Definition 1 gap stays feasible by progress_gap_margin_m.
 #pragma once
 
+#include <optional>
+
 #include "rules/monitor.h"
 
 namespace mg {
 
-// Whether some gap of the rightmost main lane satisfies ineq. (1) and (2) with `margin_m` for a
-// v_e* in [0, speed_limit], judged by the planner's own Definition 1 margins
-// (planner/definition1.h: the paper's literal form and the bounded-rate form of DESIGN §4 must
-// both hold), with the merge midpoint before the side lane end.
-// The midpoint must also lie at least min_midpoint_ahead_m ahead of the ego (the shortest lane
-// change the sideslip rule allows).
-bool def1_gap_feasible(const Scenario& s, const TraceStep& step, double rho_m_s, double margin_m,
-                       double min_midpoint_ahead_m);
+// Merge durations the rule considers, as multiples of max(rho_m, the shortest comfortable merge):
+// a slow or halted ego needs a longer merge to cover a drivable lane change.
+inline constexpr double kProgressMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
+// v_e* candidates, evenly over [0, speed limit].
+inline constexpr int kProgressSpeedSamples = 96;
+
+// Whether some gap of the rightmost main lane admits a Definition 1 merge from the ego's state
+// at `step`: for one of the merge durations, a v_e* in [0, speed limit] satisfies ineq. (1) and
+// (2) with `margin_m` (judged by the planner's own Definition 1 margins, planner/definition1.h:
+// the paper's literal form and the bounded-rate form of DESIGN §4 must both hold), the gentlest
+// logistic lane change that fits the ego's travel is drivable (peak kinematic sideslip within
+// sideslip_budget_rad) and within the comfort bound, and the ego's right edge leaves the side
+// lane margin_m before the side lane's end. A gap whose leader brakes harder than
+// leader_braking_mps2 does not count (Def. 1.2 assumes the leader holds its speed).
+struct FeasibleMerge {
+  int follower_id = -1;  // -1: open gap
+  int leader_id = -1;
+  double merge_duration_s = 0.0;
+  double ve_star_mps = 0.0;
+};
+std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceStep& step, double margin_m,
+                                               double sideslip_budget_rad, double leader_braking_mps2);
 
 MonitorOutput monitor_progress(const MonitorContext& ctx);
 

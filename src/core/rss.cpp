@@ -27,9 +27,37 @@ double lateral_braking_distance_m(double speed_toward_mps, double brake_mps2) {
   return speed_toward_mps > 0.0 ? speed_toward_mps * speed_toward_mps / (2.0 * brake_mps2) : 0.0;
 }
 
+
+// Worst-case motion of RSS Def. 1 from the current instant: the rear vehicle accelerates at a for
+// T and then brakes at b_min until it stops; the front vehicle brakes at b_max until it stops.
+struct WorstCase {
+  const LongitudinalInput& in;
+  double rear_speed_after_t_mps() const { return in.rear_speed_mps + in.accel_max_mps2 * in.response_time_s; }
+  double rear_stop_s() const { return in.response_time_s + rear_speed_after_t_mps() / in.brake_min_mps2; }
+  double front_stop_s() const { return in.front_speed_mps / in.brake_max_mps2; }
+  double rear_x_m(double t) const {
+    const double tr = std::min(t, in.response_time_s);
+    const double tb = std::clamp(t - in.response_time_s, 0.0, rear_stop_s() - in.response_time_s);
+    return in.rear_speed_mps * tr + 0.5 * in.accel_max_mps2 * tr * tr + rear_speed_after_t_mps() * tb -
+           0.5 * in.brake_min_mps2 * tb * tb;
+  }
+  double front_x_m(double t) const {
+    const double tf = std::min(t, front_stop_s());
+    return in.front_speed_mps * tf - 0.5 * in.brake_max_mps2 * tf * tf;
+  }
+  // How far the rear vehicle gets ahead of where it started relative to the front vehicle.
+  double closing_m(double t) const { return rear_x_m(t) - front_x_m(t); }
+};
+
 }  // namespace
 
-// RCPP eq. (1); RSS arXiv:1708.06374 Def. 1. Deviation (DESIGN §3): half-lengths outside [.]_+.
+// RCPP eq. (1); RSS arXiv:1708.06374 Def. 1. Deviations (DESIGN §3, docs/rss.md): half-lengths
+// outside [.]_+; and the bracket is the largest closing of the worst-case motion over time, not
+// only at the final stop. The two agree whenever b_max,f >= b_min,r (then the closing is
+// monotone after T and the RSS term v_r T + a T^2/2 + (v_r + a T)^2/(2 b_min) - v_f^2/(2 b_max)
+// is its maximum); with a front vehicle that brakes more weakly than the rear one, the final
+// positions can be far apart while the rear vehicle hits the front one on the way, so the
+// maximum is taken at the instant their speeds are equal as well.
 double rss_longitudinal_m(const LongitudinalInput& in) {
   require_non_negative(in.rear_speed_mps, "rear_speed_mps");
   require_non_negative(in.front_speed_mps, "front_speed_mps");
@@ -39,12 +67,23 @@ double rss_longitudinal_m(const LongitudinalInput& in) {
   require_non_negative(in.accel_max_mps2, "accel_max_mps2");
   require_positive(in.brake_min_mps2, "brake_min_mps2");
   require_positive(in.brake_max_mps2, "brake_max_mps2");
+  const WorstCase m{in};
   const double t = in.response_time_s;
-  const double v_rear_after_t = in.rear_speed_mps + in.accel_max_mps2 * t;
-  const double clamped = in.rear_speed_mps * t + 0.5 * in.accel_max_mps2 * t * t +
-                         v_rear_after_t * v_rear_after_t / (2.0 * in.brake_min_mps2) -
-                         in.front_speed_mps * in.front_speed_mps / (2.0 * in.brake_max_mps2);
-  return 0.5 * (in.rear_length_m + in.front_length_m) + std::max(0.0, clamped);
+  const double v_rear_after_t = m.rear_speed_after_t_mps();
+  const double final_closing = in.rear_speed_mps * t + 0.5 * in.accel_max_mps2 * t * t +
+                               v_rear_after_t * v_rear_after_t / (2.0 * in.brake_min_mps2) -
+                               in.front_speed_mps * in.front_speed_mps / (2.0 * in.brake_max_mps2);
+  double closing = std::max(0.0, final_closing);
+  if (in.brake_max_mps2 < in.brake_min_mps2) {
+    // Up to T the closing speed only grows; after T it falls at b_min - b_max while both move, is
+    // the rear speed once the front has stopped, minus the front speed once the rear has stopped.
+    // So the maximum lies at T, where the speeds become equal while both move, or the rear stop.
+    closing = std::max({closing, m.closing_m(t), m.closing_m(m.rear_stop_s())});
+    const double t_equal = (in.front_speed_mps - v_rear_after_t - in.brake_min_mps2 * t) /
+                           (in.brake_max_mps2 - in.brake_min_mps2);
+    if (t_equal > t && t_equal < std::min(m.rear_stop_s(), m.front_stop_s())) closing = std::max(closing, m.closing_m(t_equal));
+  }
+  return 0.5 * (in.rear_length_m + in.front_length_m) + closing;
 }
 
 // RCPP eq. (2) corrected per RSS arXiv:1708.06374 Def. 4 (DESIGN §3): the right vehicle's

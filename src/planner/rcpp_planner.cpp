@@ -21,6 +21,7 @@ constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far insi
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
 constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
 constexpr double kLeaderBrakingMps2 = 0.5;   // a gap leader decelerating harder than this is braking
+constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
 
 std::string fmt(const char* f, double a) {
   char buf[64];
@@ -68,24 +69,6 @@ double kappa_cap_per_m(const Scenario& s) {
                   std::sqrt(6.0 * std::sqrt(3.0) * curvature_max / s.road.lane_width_m));
 }
 
-// Peak lateral acceleration along a sigmoid driven with a speed profile: max of v(x)^2 |y''(x)| over
-// kComfortSamples points within +-kComfortSpan/kappa of P_c, y'' = W kappa^2 s(1-s)(1-2s) for the
-// logistic s (RCPP §II-C; equals the constant-speed bound v^2 W kappa^2/(6 sqrt 3) at fixed v).
-constexpr int kComfortSamples = 40;
-constexpr double kComfortSpan = 4.0;
-double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, double ramp_origin_x_m) {
-  double peak = 0.0;
-  for (int i = 0; i <= kComfortSamples; ++i) {
-    const double u = kComfortSpan * (2.0 * i / kComfortSamples - 1.0);  // kappa (x - P_c)
-    const double x = sig.pc_m + u / sig.kappa_per_m;
-    const double sgm = 1.0 / (1.0 + std::exp(-u));
-    const double ypp = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * sgm * (1.0 - sgm) * std::abs(1.0 - 2.0 * sgm);
-    const double v = ramp.speed_at_distance_mps(std::max(0.0, x - ramp_origin_x_m));
-    peak = std::max(peak, v * v * ypp);
-  }
-  return peak;
-}
-
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
 // start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak
 // lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
@@ -129,19 +112,35 @@ Track follower_track(const MainLaneVehicle& f, double rho_s) {
                },
                [=](double t) { return f.speed_mps + a * std::min(t, half); }, f.length_m, f.limits};
 }
-Track leader_track(const MainLaneVehicle& l) {
-  return Track{[=](double t) { return l.x_m + l.speed_mps * t; }, [=](double) { return l.speed_mps; }, l.length_m,
-               l.limits};
+// The leader holds its speed (Def. 1.2) unless it is seen braking harder than
+// kLeaderBrakingMps2: then it is predicted to keep braking at that rate (at most its b_max) until
+// it stops, since a compliant leader may brake for a slower vehicle ahead of it (docs/planner.md).
+Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
+  if (observed_accel_mps2 >= -kLeaderBrakingMps2)
+    return Track{[=](double t) { return l.x_m + l.speed_mps * t; }, [=](double) { return l.speed_mps; },
+                 l.length_m, l.limits};
+  const SpeedRamp stop{l.speed_mps, 0.0, 1.0, std::min(-observed_accel_mps2, l.limits.brake_max_mps2)};
+  return Track{[=](double t) { return l.x_m + stop.distance_at_m(t); }, [=](double t) { return stop.speed_at_mps(t); },
+               l.length_m, l.limits};
+}
+double observed_accel_mps2(const WorldSnapshot& w, int id) {
+  for (const ObservedVehicle& o : w.others)
+    if (o.id == id) return o.state.accel_mps2;
+  return 0.0;
 }
 
 // Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
 // rho, docs/planner.md): at every one of kOccupancySamples instants of [0, horizon_s] at which the
 // ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
 // lateral speed on the path) plus kOccupancyLateralMarginM, it must also be at least D_lon
-// (RCPP eq. 1) ahead of the follower and behind the leader: the merge never creates an RSS-dangerous
-// situation with a gap vehicle, whatever the instant.
+// (RCPP eq. 1) behind the leader and, until it reaches P_c, ahead of the follower: the merge never
+// creates an RSS-dangerous situation with a gap vehicle. Past P_c the ego is in the lane with the
+// right of way, and keeping D_lon behind it is the follower's duty as the rear vehicle (RSS Def.
+// 1; DESIGN §8), not something the ego's path must foresee for a follower that keeps the speed
+// Def. 1.1 allows it to gain.
 constexpr int kOccupancySamples = 40;
-constexpr double kOccupancyLateralMarginM = 0.75;  // absorbs path-tracking error
+constexpr double kOccupancyLateralMarginM = 0.75;  // absorbs path-tracking error...
+constexpr double kOccupancyFullMarginFraction = 0.1;  // ...in full from 10 % of the lateral offset on
 bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, const SpeedRamp& ego, double horizon_s,
                      const std::optional<Track>& follower, const std::optional<Track>& leader) {
   const double t_lag = s.params.rss.response_time_s;
@@ -155,8 +154,11 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, cons
     const double lat_speed = v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);
     const double d_lat = rss_lateral_m({0.0, lat_speed, s.ego.size.width_m, s.ego.size.width_m, t_lag,
                                         el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
-    if (-sig.y_at_m(x) >= d_lat + kOccupancyLateralMarginM) continue;  // laterally safe (lane centre Y = 0)
-    if (follower) {
+    // Laterally safe (lane centre Y = 0). The tracking margin grows with the lateral progress: on
+    // the side lane's centre, before the sigmoid starts, there is no tracking error to absorb.
+    const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
+    if (-sig.y_at_m(x) >= d_lat + margin_m) continue;
+    if (follower && x <= sig.pc_m) {
       const double d = rss_longitudinal_m({follower->v_at(t), v, follower->length_m, le, t_lag,
                                            follower->limits.accel_max_mps2, follower->limits.brake_min_mps2,
                                            el.brake_max_mps2});
@@ -219,8 +221,7 @@ double gap_traffic_speed_mps(const LaneGap& g, double fallback_mps) {
 }
 
 // Definition 1 for one merge duration rho_s.
-std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_s, std::string* why,
-                                             int* sigmoid_failures) {
+std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_s, std::string* why) {
   const Scenario& s = *w.scenario;
   const PlannerParams& p = s.params.planner;
   const Def1Context ctx = def1_context(w, rho_s);
@@ -267,7 +268,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
       std::optional<Track> ft, lt;
       if (gap.follower) ft = follower_track(*gap.follower, rho_s);
-      if (gap.leader) lt = leader_track(*gap.leader);
+      if (gap.leader) lt = leader_track(*gap.leader, observed_accel_mps2(w, gap.leader->id));
       if (!occupancy_clear(s, ctx.ego_x_m, sig, ramp, rho_s, ft, lt)) return std::numeric_limits<double>::infinity();
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic);
@@ -302,7 +303,6 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
                "/m, rho = " + fmt("%.1f", rho_s) + " s (cost " + fmt("%.2f", choice->cost) + ")";
     best = plan;
   }
-  if (!best && sigmoid_failures) *sigmoid_failures += n_cross + n_sigmoid;
   if (!best && why)
     *why = std::to_string(n_def1) + " gap(s) violate ineq. 1.1/1.2, " + std::to_string(n_cross) +
            " with crossing P_c bounds, " + std::to_string(n_sigmoid) + " without a comfortable sigmoid";
@@ -373,7 +373,7 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   std::optional<Track> ft, lt;
   if (k == CoopCase::kEgoAhead) {
     ft = responder;
-    if (const auto l = neighbour(lane, i, +1)) lt = leader_track(*l);
+    if (const auto l = neighbour(lane, i, +1)) lt = leader_track(*l, observed_accel_mps2(w, l->id));
   } else {
     lt = responder;
     if (const auto f = neighbour(lane, i, -1)) ft = follower_track(*f, 2.0 * t_c);
@@ -450,29 +450,18 @@ double standstill_merge_length_m(const Scenario& s) {
          kappa;
 }
 
-std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, std::string* why) {
-  const double rho_base_s = std::max(w.scenario->params.planner.merge_duration_s,
-                                     kShortestMergeFactor * shortest_comfortable_merge_s(*w.scenario));
-  // Slow: too slow for a trackable sigmoid (kappa <= kappa_cap) to fit in rho at constant speed.
-  const double slow_mps = std::max(kStandstillMergeSpeedMps, kSlowMergeSpeedFactor * 2.0 * half_span_times_kappa() /
-                                                                 (kappa_cap_per_m(*w.scenario) * rho_base_s));
-  int sigmoid_failures = 0;  // gaps of the first rho that satisfy ineq. (1.1)/(1.2) but lack a sigmoid
+std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why) {
+  const Scenario& s = *w.scenario;
+  const double rho_base_s =
+      std::max(s.params.planner.merge_duration_s,
+               kShortestMergeFactor * shortest_comfortable_merge_s(s.road.lane_width_m, s.params.planner.lat_accel_comfort_mps2));
   for (const double factor : kMergeDurationFactors) {
-    // Longer merges for slow egos, and for any ego whose gap satisfies ineq. (1.1)/(1.2) but has
-    // no comfortable sigmoid in rho_m (e.g. it must drop behind a vehicle that is passing it).
-    if (factor > 1.0 && ego_speed_mps(w) >= slow_mps && sigmoid_failures == 0) break;
+    if ((factor == 1.0) != (durations == MergeDurations::kRhoM)) continue;
     std::string this_why;
-    if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why, &sigmoid_failures)) return plan;
-    if (why && factor == kMergeDurationFactors[0]) *why = this_why;
+    if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why)) return plan;
+    if (why) *why += (why->empty() ? "" : "; ") + ("rho = " + fmt("%.1f", factor * rho_base_s) + " s: ") + this_why;
   }
   return std::nullopt;
-}
-
-double shortest_comfortable_merge_s(const Scenario& s) {
-  // At constant speed v the sigmoid spans 2 ln(49)/kappa <= v rho, and the comfort bound gives
-  // kappa <= sqrt(6 sqrt3 a_c / W)/v: rho >= 2 ln(49) / sqrt(6 sqrt3 a_c / W), whatever v.
-  return 2.0 * half_span_times_kappa() /
-         std::sqrt(6.0 * std::sqrt(3.0) * s.params.planner.lat_accel_comfort_mps2 / s.road.lane_width_m);
 }
 
 std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<int, double>& retry_after_s) {
@@ -509,8 +498,8 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
       merged_ = true;
       merge_.reset();
     } else if (merge_->decision.mode == DecisionMode::kDef1Merge && progress < kAbortLateralFraction &&
-               can_still_halt(w) && committed_bounds_crossed(w)) {
-      note = "merge aborted (P_c bounds crossed at the predicted positions); ";
+               can_still_halt(w) && (committed_bounds_crossed(w) || !committed_occupancy_clear(w))) {
+      note = "merge aborted (P_c bounds crossed or lane occupied at the predicted positions); ";
       merge_.reset();
     }
   }
@@ -550,6 +539,27 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
     }
   }
   return false;
+}
+
+bool RcppPlanner::committed_occupancy_clear(const WorldSnapshot& w) const {
+  const Scenario& s = *w.scenario;
+  const Decision& d = merge_->decision;
+  if (!d.gap) return true;
+  // The rest of the merge, until the ego reaches the sigmoid's end at the speed it aims for.
+  const SpeedRamp ramp{ego_speed_mps(w), merge_target_speed_mps(w), s.ego.limits.accel_max_mps2,
+                       s.ego.limits.brake_min_mps2};
+  const double to_end_m = merge_->sigmoid.x_at_fraction_m(1.0 - kSigmoidEndFraction) - w.ego.x_m;
+  const double horizon_s =
+      lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_end_m; }, 0.0, kMaxMergeHorizonS, 1e-3)
+          .value_or(kMaxMergeHorizonS);
+  // The follower may still accelerate for what is left of its Def. 1.1 window (rho/2 from T_dec).
+  const double follower_window_s = std::max(0.0, d.merge_duration_s - 2.0 * (w.time_s - d.time_s));
+  std::optional<Track> ft, lt;
+  for (const ObservedVehicle& ov : w.others) {
+    if (ov.id == d.gap->follower_id) ft = follower_track(to_lane_vehicle(ov), follower_window_s);
+    if (ov.id == d.gap->leader_id) lt = leader_track(to_lane_vehicle(ov), ov.state.accel_mps2);
+  }
+  return occupancy_clear(s, w.ego.x_m, merge_->sigmoid, ramp, horizon_s, ft, lt);
 }
 
 double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
@@ -640,7 +650,7 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     }
   }
   std::string why;
-  if (auto plan = plan_definition1(w, &why)) {
+  if (auto plan = plan_definition1(w, MergeDurations::kRhoM, &why)) {
     pending_.reset();
     plan->decision.reason = note + plan->decision.reason;
     return start_merge(w, plan->sigmoid, plan->ve_star_mps, plan->decision);
@@ -668,6 +678,12 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
       plan->decision.reason = note + plan->decision.reason;
       note.clear();
       pending_->plan.decision = plan->decision;
+    }
+  }
+  if (!pending_) {
+    if (auto plan = plan_definition1(w, MergeDurations::kLonger, &why)) {
+      plan->decision.reason = note + plan->decision.reason;
+      return start_merge(w, plan->sigmoid, plan->ve_star_mps, plan->decision);
     }
   }
   if (pending_) {

@@ -15,16 +15,14 @@
 
 namespace mg {
 
-// Merge durations tried, as multiples of rho_m: rho_m itself first; longer ones only for slow egos
-// (e.g. merging from standstill after Def. 1.3), whose trackable sigmoid does not fit in rho_m:
-// slower than kStandstillMergeSpeedMps or than kSlowMergeSpeedFactor * 2 ln(49) / (kappa_cap rho)
+// Merge durations tried in turn, as multiples of rho_m, until one admits a merge: rho_m itself
+// first; longer ones for slow egos (e.g. merging from standstill after Def. 1.3), whose trackable
+// sigmoid does not fit in rho_m, and for egos that must drop behind a vehicle passing them
 // (docs/planner.md).
 inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
-inline constexpr double kSlowMergeSpeedFactor = 1.2;
 // No comfortable sigmoid at constant speed fits in less than shortest_comfortable_merge_s; a
 // configured rho_m below it is raised to kShortestMergeFactor times that duration.
 inline constexpr double kShortestMergeFactor = 1.05;
-double shortest_comfortable_merge_s(const Scenario& s);
 // A committed merge may be aborted (P_c bounds crossed) only while the ego has covered less than
 // this fraction of the lateral offset; later it completes, protected by the RSS override.
 inline constexpr double kAbortLateralFraction = 0.25;
@@ -43,8 +41,11 @@ struct Def1Plan {
   Sigmoid sigmoid;
   double ve_star_mps = 0.0;
 };
-// nullopt when no gap is feasible; `why` then says why the gaps failed.
-std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, std::string* why);
+// kRhoM: the configured merge duration (raised to a comfortable one); kLonger: the longer ones of
+// kMergeDurationFactors, tried only after Definition 2 (the paper's order: Def. 1 at rho_m, then
+// cooperation, then the extension). nullopt when no gap is feasible; `why` then gets the reasons.
+enum class MergeDurations { kRhoM, kLonger };
+std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why);
 
 // Definition 2 request at one decision instant (excluding partners in `excluded`).
 struct Def2Plan {
@@ -78,6 +79,8 @@ class RcppPlanner : public Planner {
   PlanOutput decide_in_side_lane(const WorldSnapshot& w);
   PlanOutput start_merge(const WorldSnapshot& w, const Sigmoid& s, double speed_mps, Decision d);
   bool committed_bounds_crossed(const WorldSnapshot& w) const;  // P_c bounds at predicted positions
+  // The occupancy check of the rest of the merge with the gap vehicles as observed now.
+  bool committed_occupancy_clear(const WorldSnapshot& w) const;
   double merge_target_speed_mps(const WorldSnapshot& w) const;  // v_e*, capped behind a braking leader
   void apply_override(const WorldSnapshot& w, PlanOutput& out) const;
 

@@ -37,6 +37,25 @@ double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_acce
   return std::sqrt(kSixRootThree * lat_accel_mps2 / width_m) / speed_mps;
 }
 
+double shortest_comfortable_merge_s(double width_m, double lat_accel_mps2) {
+  return 2.0 * std::log(49.0) / std::sqrt(6.0 * std::sqrt(3.0) * lat_accel_mps2 / width_m);
+}
+
+double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, double ramp_origin_x_m) {
+  constexpr int kSamples = 40;
+  constexpr double kSpan = 4.0;
+  double peak = 0.0;
+  for (int i = 0; i <= kSamples; ++i) {
+    const double u = kSpan * (2.0 * i / kSamples - 1.0);  // kappa (x - P_c)
+    const double x = sig.pc_m + u / sig.kappa_per_m;
+    const double sgm = 1.0 / (1.0 + std::exp(-u));
+    const double ypp = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * sgm * (1.0 - sgm) * std::abs(1.0 - 2.0 * sgm);
+    const double v = ramp.speed_at_distance_mps(std::max(0.0, x - ramp_origin_x_m));
+    peak = std::max(peak, v * v * ypp);
+  }
+  return peak;
+}
+
 namespace {
 // x_from, x_from + step, ... while clearly below x_to, then x_to: strictly increasing.
 std::vector<double> path_xs(double x_from_m, double x_to_m, double step_m) {

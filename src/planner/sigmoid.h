@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "planner/definition1.h"
 #include "planner/planner.h"
 
 namespace mg {
@@ -27,6 +28,15 @@ struct Sigmoid {
 double sigmoid_peak_lat_accel_mps2(double speed_mps, double width_m, double kappa_per_m);
 // The largest kappa with sigmoid_peak_lat_accel <= lat_accel_mps2 (infinite at speed 0).
 double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_accel_mps2);
+// The shortest merge (2 % to 98 % of W) whose peak lateral acceleration stays within
+// lat_accel_mps2 at any constant speed v: the path spans 2 ln(49)/kappa <= v rho and the bound
+// gives kappa <= sqrt(6 sqrt3 a / W)/v, so rho >= 2 ln(49) / sqrt(6 sqrt3 a / W), whatever v.
+double shortest_comfortable_merge_s(double width_m, double lat_accel_mps2);
+
+// Peak lateral acceleration along a sigmoid driven with a speed profile (the ramp starting at
+// ramp_origin_x_m): max of v(x)^2 |y''(x)| over points within +-4/kappa of P_c, y'' = W kappa^2
+// s(1-s)(1-2s) for the logistic s (RCPP §II-C; equals sigmoid_peak_lat_accel_mps2 at fixed v).
+double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, double ramp_origin_x_m);
 
 // Fraction of W within which the path counts as "at" a lane centre: the sigmoid starts within
 // kSigmoidEndFraction of the side lane at the ego (so the path is continuous with the ego's

@@ -8,14 +8,16 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "core/rss.h"
+
 namespace mg {
 namespace {
 
-// ---- independent re-implementation (paper formulas written out, no planner code) ----
-// RCPP eq. (1) with the half-lengths outside the clamp (DESIGN §3).
+// ---- independent re-implementation (paper inequalities written out, no planner code) ----
+// D_lon is checked on its own in tests/core/rss_test.cpp (vectors and a brute-force oracle); the
+// reference here re-derives the solver's inequalities around it.
 double ref_d_lon(double vr, double vf, double lr, double lf, double t, double a, double bmin, double bmax) {
-  const double inner = vr * t + a * t * t / 2 + (vr + a * t) * (vr + a * t) / (2 * bmin) - vf * vf / (2 * bmax);
-  return (lr + lf) / 2 + (inner > 0 ? inner : 0);
+  return rss_longitudinal_m({vr, vf, lr, lf, t, a, bmin, bmax});
 }
 // Position and speed after t when moving from v0 toward v at rate a (up) or b (down).
 double ref_pos(double v0, double v, double t, double a, double b) {

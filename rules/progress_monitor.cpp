@@ -6,32 +6,23 @@
 #include <sstream>
 
 #include "planner/definition1.h"
+#include "planner/merge_path.h"
 #include "planner/sigmoid.h"
 
 namespace mg {
 
-// The sharpest lane change the ego can really drive (DESIGN §6): the logistic path's peak
-// curvature W kappa^2 / (6 sqrt 3) stays within both the kinematic-sideslip curvature of the
-// lane-change budget, tan(budget)/l_r, and the steering limit tan(steer_max)/wheelbase, and kappa
-// within the configured kappa_max.
-double sharpest_kappa_per_m(const Scenario& s, double sideslip_budget_rad) {
-  const EgoDynamics& d = s.ego.dynamics;
-  const double curvature = std::min(std::tan(sideslip_budget_rad) / d.cg_to_rear_m,
-                                    std::tan(d.steer_max_rad) / (d.cg_to_front_m + d.cg_to_rear_m));
-  return std::min(s.params.planner.kappa_max_per_m,
-                  std::sqrt(6.0 * std::sqrt(3.0) * curvature / s.road.lane_width_m));
-}
-
-// Ineq. (1.1) and (1.2) are the planner's own pure functions (planner/definition1.h: the paper's
-// literal form AND the bounded-rate form of DESIGN §4), so the rule and the planner cannot
-// disagree about the inequalities; the rule adds `margin` to both and to the side lane's end.
-// The path is the gentlest logistic lane change that fits the ego's travel (2 % of the offset at
-// the ego, the midpoint at rho/2, 98 % at rho): it must be drivable and within the planner's
-// lateral comfort bound along the ego's speed profile (RCPP §II-C). v_e* is scanned (the comfort
-// bound is not monotone in it), so a very narrow feasible interval may be missed: the rule errs
-// toward calling a halt justified.
+// Ineq. (1.1) and (1.2), the merge path's admissibility and the occupancy check are the planner's
+// own pure functions (planner/definition1.h, planner/merge_path.h), so the rule and the planner
+// cannot disagree about what a feasible, drivable, comfortable and RSS-clear merge is; the rule
+// adds `margin` to both inequalities and to the side lane's end, and stays independent of the
+// planner's choices: which gap, P_c and kappa, the cost, and its prediction of braking leaders (a
+// braking leader simply offers no gap here). For each v_e* the path is the sharpest admissible
+// sigmoid with its midpoint where the ego is at rho/2: it starts its lateral motion last, so it is
+// the one most likely to find the lane clear. v_e* is scanned (the comfort and occupancy checks
+// are not monotone in it), so a very narrow feasible interval may be missed: the rule errs toward
+// calling a halt justified.
 std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceStep& step, double margin,
-                                               double sideslip_budget_rad, double leader_braking_mps2) {
+                                               double leader_braking_mps2) {
   std::vector<MainLaneVehicle> lane;  // rightmost main lane
   std::map<int, double> accel_mps2;   // id -> current acceleration
   for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
@@ -42,9 +33,7 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
     accel_mps2[m.id] = o.accel_mps2;
   }
   const double w = s.road.lane_width_m;
-  const double kappa_max = sharpest_kappa_per_m(s, sideslip_budget_rad);
-  const double f = std::clamp(0.5 + s.ego.size.width_m / (2.0 * w), 0.5, 0.98);  // right edge leaves the side lane
-  const double exit_limit_x = s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - margin;
+  const double exit_after_pc_times_kappa = ln_ratio(side_lane_exit_fraction(s.ego.size.width_m, w));
   const double rho_base = std::max(s.params.planner.merge_duration_s,
                                    shortest_comfortable_merge_s(w, s.params.planner.lat_accel_comfort_mps2));
   const double x0 = step.ego.x_m;
@@ -55,17 +44,20 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
     for (const double factor : kProgressMergeDurationFactors) {
       const Def1Context c{x0, std::max(speed_of(step.ego), 0.0), s.ego.size.length_m, s.ego.limits,
                           s.params.rss.response_time_s, factor * rho_base, s.road.speed_limit_mps};
+      std::optional<Track> follower, leader;
+      if (gap.follower) follower = follower_track(*gap.follower, c.merge_duration_s);
+      if (gap.leader) leader = leader_track(*gap.leader, 0.0);
       for (int i = 0; i <= kProgressSpeedSamples; ++i) {
         const double ve = c.speed_limit_mps * i / kProgressSpeedSamples;
         if (gap.follower && def1_1_margin_m(c, *gap.follower, ve) < margin) continue;
         if (gap.leader && def1_2_margin_m(c, *gap.leader, ve) < margin) continue;
         const SpeedRamp ramp = c.ramp_to(ve);
-        const double to_mid = ramp.distance_at_m(0.5 * c.merge_duration_s);
-        const double kappa = std::log(49.0) / std::min(to_mid, ramp.distance_at_m(c.merge_duration_s) - to_mid);
-        if (!(kappa <= kappa_max)) continue;
-        if (x0 + to_mid + std::log(f / (1.0 - f)) / kappa > exit_limit_x) continue;
-        const Sigmoid path{w, kappa, x0 + to_mid, -w};
-        if (peak_lat_accel_along_mps2(path, ramp, x0) > s.params.planner.lat_accel_comfort_mps2) continue;
+        const double pc = x0 + ramp.distance_at_m(0.5 * c.merge_duration_s);
+        const KappaRange kappa = kappa_range_for(s, pc, x0, x0 + ramp.distance_at_m(c.merge_duration_s), ramp, x0);
+        if (!kappa) continue;
+        if (pc + exit_after_pc_times_kappa / kappa->second > side_exit_limit_x_m(s) - margin) continue;
+        const Sigmoid path{w, kappa->second, pc, -w};
+        if (!occupancy_clear(s, x0, path, ramp, c.merge_duration_s, follower, leader)) continue;
         return FeasibleMerge{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1,
                              c.merge_duration_s, ve};
       }
@@ -92,8 +84,7 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
     }
     // Feasibility is re-evaluated once per planner cycle (the planner cannot react faster).
     if (last_eval < 0.0 || st.time_s - last_eval >= s.params.sim.planner_cycle_s - 1e-9) {
-      feasible = def1_gap_feasible(s, st, ctx.params.progress_gap_margin_m, ctx.params.progress_lane_change_sideslip_rad,
-                                   ctx.params.progress_leader_braking_mps2);
+      feasible = def1_gap_feasible(s, st, ctx.params.progress_gap_margin_m, ctx.params.progress_leader_braking_mps2);
       last_eval = st.time_s;
     }
     if (!feasible) {

@@ -17,11 +17,11 @@ inline constexpr int kProgressSpeedSamples = 96;
 
 // Whether some gap of the rightmost main lane admits a Definition 1 merge from the ego's state
 // at `step`: for one of the merge durations, a v_e* in [0, speed limit] satisfies ineq. (1) and
-// (2) with `margin_m` (judged by the planner's own Definition 1 margins, planner/definition1.h:
-// the paper's literal form and the bounded-rate form of DESIGN §4 must both hold), the gentlest
-// logistic lane change that fits the ego's travel is drivable (peak kinematic sideslip within
-// sideslip_budget_rad) and within the comfort bound, and the ego's right edge leaves the side
-// lane margin_m before the side lane's end. A gap whose leader brakes harder than
+// (2) with `margin_m` (the planner's own Definition 1 margins, planner/definition1.h: the paper's
+// literal form and the bounded-rate form of DESIGN §4 must both hold), an admissible sigmoid
+// (planner/merge_path.h: drivable, comfortable, completed in time) has its midpoint where the ego
+// is at rho/2 and passes the occupancy check, and the ego's right edge leaves the side lane
+// margin_m before the side lane's end. A gap whose leader brakes harder than
 // leader_braking_mps2 does not count (Def. 1.2 assumes the leader holds its speed).
 struct FeasibleMerge {
   int follower_id = -1;  // -1: open gap
@@ -30,7 +30,7 @@ struct FeasibleMerge {
   double ve_star_mps = 0.0;
 };
 std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceStep& step, double margin_m,
-                                               double sideslip_budget_rad, double leader_braking_mps2);
+                                               double leader_braking_mps2);
 
 MonitorOutput monitor_progress(const MonitorContext& ctx);
 

@@ -46,7 +46,6 @@ const CatalogParams& catalog_params() {
     c.sideslip_min_speed_mps = p.at("sideslip_min_speed_mps").get<double>();
     c.progress_grace_s = p.at("progress_grace_s").get<double>();
     c.progress_gap_margin_m = p.at("progress_gap_margin_m").get<double>();
-    c.progress_lane_change_sideslip_rad = p.at("progress_lane_change_sideslip_rad").get<double>();
     c.progress_leader_braking_mps2 = p.at("progress_leader_braking_mps2").get<double>();
     return c;
   }();

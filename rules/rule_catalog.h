@@ -31,7 +31,6 @@ struct CatalogParams {
   double sideslip_min_speed_mps = 0.0;
   double progress_grace_s = 0.0;
   double progress_gap_margin_m = 0.0;
-  double progress_lane_change_sideslip_rad = 0.0;
   double progress_leader_braking_mps2 = 0.0;
 };
 

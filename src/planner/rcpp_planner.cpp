@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/rss.h"
+#include "planner/merge_path.h"
 #include "planner/potential_field.h"
 #include "planner/proper_response.h"
 #include "planner/world_view.h"
@@ -20,7 +21,6 @@ constexpr double kPathStepM = 1.0;
 constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
 constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
-constexpr double kLeaderBrakingMps2 = 0.5;   // a gap leader decelerating harder than this is braking
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
 
 std::string fmt(const char* f, double a) {
@@ -34,10 +34,6 @@ std::string gap_name(const Gap& g) {
   return "gap (follower " + id(g.follower_id) + ", leader " + id(g.leader_id) + ")";
 }
 
-double ln_ratio(double fraction) { return std::log(fraction / (1.0 - fraction)); }
-// Distance from the start of the sigmoid (within kSigmoidEndFraction of the side lane) to P_c,
-// times kappa; the same from P_c to completion.
-double half_span_times_kappa() { return ln_ratio(1.0 - kSigmoidEndFraction); }
 
 Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
   const Scenario& s = *w.scenario;
@@ -52,126 +48,14 @@ CoopContext coop_context(const WorldSnapshot& w) {
                      s.params.planner.comm_threshold_s, s.road.speed_limit_mps};
 }
 
-// The x the ego's centre may reach at most while its sigmoid still has `exit` left to cover:
-// the side lane's end minus half the ego length (DESIGN §2: never pass the end in the side lane).
-double side_exit_limit_x_m(const Scenario& s) { return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m; }
 
-// Trackability of the path at any speed: its peak curvature c = W kappa^2/(6 sqrt 3) stays within
-// half the ego's steering ability (tan(steer_max)/(2 wheelbase)) and keeps the kinematic sideslip
-// atan(l_r c) below kPathSideslipMaxRad (docs/planner.md).
-constexpr double kPathSideslipMaxRad = 0.025;
-double kappa_cap_per_m(const Scenario& s) {
-  const EgoDynamics& dyn = s.ego.dynamics;
-  const double wheelbase_m = dyn.cg_to_front_m + dyn.cg_to_rear_m;
-  const double curvature_max = std::min(std::tan(dyn.steer_max_rad) / (2.0 * wheelbase_m),
-                                        std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
-  return std::min(s.params.planner.kappa_max_per_m,
-                  std::sqrt(6.0 * std::sqrt(3.0) * curvature_max / s.road.lane_width_m));
-}
 
-// Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
-// start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak
-// lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
-// bound, and lies in the configured [kappa_min, kappa_max].
-KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
-                           const SpeedRamp& ramp, double ramp_origin_x_m) {
-  const PlannerParams& p = s.params.planner;
-  const double before_m = pc_m - start_x_m;
-  const double after_m = complete_by_x_m - pc_m;
-  const double exit_room_m = side_exit_limit_x_m(s) - pc_m;
-  if (before_m <= 0.0 || after_m <= 0.0 || exit_room_m <= 0.0) return std::nullopt;
-  const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
-  const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
-                              half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
-  const double kappa_cap = kappa_cap_per_m(s);
-  if (lo > kappa_cap) return std::nullopt;
-  const auto comfort_margin = [&](double kappa) {
-    const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
-    return p.lat_accel_comfort_mps2 - peak_lat_accel_along_mps2(sig, ramp, ramp_origin_x_m);
-  };
-  const auto hi = highest_satisfying(comfort_margin, lo, kappa_cap, 1e-5);
-  if (!hi) return std::nullopt;
-  return std::make_pair(lo, *hi);
-}
-
-// A main-lane vehicle's predicted motion during a merge candidate.
-struct Track {
-  std::function<double(double)> x_at;  // position at t after the decision
-  std::function<double(double)> v_at;  // speed at t
-  double length_m = 0.0;
-  Limits limits;
-};
-
-// Prediction of a gap vehicle as Definition 1 assumes it: the follower accelerates at its
-// a_accel^max until rho/2 and then holds its speed (Def. 1.1); the leader holds its speed (1.2).
-Track follower_track(const MainLaneVehicle& f, double rho_s) {
-  const double a = f.limits.accel_max_mps2, half = 0.5 * rho_s;
-  return Track{[=](double t) {
-                 const double tau = std::min(t, half);
-                 return f.x_m + f.speed_mps * tau + 0.5 * a * tau * tau + (f.speed_mps + a * tau) * (t - tau);
-               },
-               [=](double t) { return f.speed_mps + a * std::min(t, half); }, f.length_m, f.limits};
-}
-// The leader holds its speed (Def. 1.2) unless it is seen braking harder than
-// kLeaderBrakingMps2: then it is predicted to keep braking at that rate (at most its b_max) until
-// it stops, since a compliant leader may brake for a slower vehicle ahead of it (docs/planner.md).
-Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
-  if (observed_accel_mps2 >= -kLeaderBrakingMps2)
-    return Track{[=](double t) { return l.x_m + l.speed_mps * t; }, [=](double) { return l.speed_mps; },
-                 l.length_m, l.limits};
-  const SpeedRamp stop{l.speed_mps, 0.0, 1.0, std::min(-observed_accel_mps2, l.limits.brake_max_mps2)};
-  return Track{[=](double t) { return l.x_m + stop.distance_at_m(t); }, [=](double t) { return stop.speed_at_mps(t); },
-               l.length_m, l.limits};
-}
 double observed_accel_mps2(const WorldSnapshot& w, int id) {
   for (const ObservedVehicle& o : w.others)
     if (o.id == id) return o.state.accel_mps2;
   return 0.0;
 }
 
-// Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
-// rho, docs/planner.md): at every one of kOccupancySamples instants of [0, horizon_s] at which the
-// ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
-// lateral speed on the path) plus kOccupancyLateralMarginM, it must also be at least D_lon
-// (RCPP eq. 1) behind the leader and, until it reaches P_c, ahead of the follower: the merge never
-// creates an RSS-dangerous situation with a gap vehicle. Past P_c the ego is in the lane with the
-// right of way, and keeping D_lon behind it is the follower's duty as the rear vehicle (RSS Def.
-// 1; DESIGN §8), not something the ego's path must foresee for a follower that keeps the speed
-// Def. 1.1 allows it to gain.
-constexpr int kOccupancySamples = 40;
-constexpr double kOccupancyLateralMarginM = 0.75;  // absorbs path-tracking error...
-constexpr double kOccupancyFullMarginFraction = 0.1;  // ...in full from 10 % of the lateral offset on
-bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, const SpeedRamp& ego, double horizon_s,
-                     const std::optional<Track>& follower, const std::optional<Track>& leader) {
-  const double t_lag = s.params.rss.response_time_s;
-  const Limits& el = s.ego.limits;
-  const double le = s.ego.size.length_m;
-  for (int k = 0; k <= kOccupancySamples; ++k) {
-    const double t = horizon_s * k / kOccupancySamples;
-    const double x = ego_x_m + ego.distance_at_m(t);
-    const double v = ego.speed_at_mps(t);
-    const double sgm = (sig.y_at_m(x) - sig.offset_m) / sig.width_m;
-    const double lat_speed = v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);
-    const double d_lat = rss_lateral_m({0.0, lat_speed, s.ego.size.width_m, s.ego.size.width_m, t_lag,
-                                        el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
-    // Laterally safe (lane centre Y = 0). The tracking margin grows with the lateral progress: on
-    // the side lane's centre, before the sigmoid starts, there is no tracking error to absorb.
-    const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
-    if (-sig.y_at_m(x) >= d_lat + margin_m) continue;
-    if (follower && x <= sig.pc_m) {
-      const double d = rss_longitudinal_m({follower->v_at(t), v, follower->length_m, le, t_lag,
-                                           follower->limits.accel_max_mps2, follower->limits.brake_min_mps2,
-                                           el.brake_max_mps2});
-      if (x - d < follower->x_at(t)) return false;
-    }
-    if (leader) {
-      const double d = rss_longitudinal_m({v, leader->v_at(t), le, leader->length_m, t_lag, el.accel_max_mps2,
-                                           el.brake_min_mps2, leader->limits.brake_max_mps2});
-      if (x + d > leader->x_at(t)) return false;
-    }
-  }
-  return true;
-}
 
 // Potential field cost of a candidate path (docs/planner.md): the mean of RCPP eq. (3)-(5) over
 // kFieldSamples instants of [0, duration_s], the ego at ego_x_at(t) on the sigmoid, every other
@@ -436,9 +320,6 @@ double accel_limit_toward(const Scenario& s, double current_mps, double target_m
 
 }  // namespace
 
-double side_lane_exit_fraction(double ego_width_m, double lane_width_m) {
-  return std::clamp(0.5 + ego_width_m / (2.0 * lane_width_m), 0.5 + 1e-3, 1.0 - kSigmoidEndFraction);
-}
 
 double standstill_merge_length_m(const Scenario& s) {
   const PlannerParams& p = s.params.planner;

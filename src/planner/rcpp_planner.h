@@ -26,9 +26,6 @@ inline constexpr double kShortestMergeFactor = 1.05;
 // A committed merge may be aborted (P_c bounds crossed) only while the ego has covered less than
 // this fraction of the lateral offset; later it completes, protected by the RSS override.
 inline constexpr double kAbortLateralFraction = 0.25;
-// Fraction of the ego width that must have left the side lane before the side lane's end: the
-// ego's right edge is beyond the lane line, i.e. the sigmoid has covered 1/2 + w/(2W) of W.
-double side_lane_exit_fraction(double ego_width_m, double lane_width_m);
 
 // The room a merge from standstill needs ahead of the halted ego: the distance from the start of
 // a comfortable sigmoid at kStandstillMergeSpeed to the side-lane exit (Def. 1.3).

@@ -1,0 +1,98 @@
+#include "planner/merge_path.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/rss.h"
+
+namespace mg {
+
+double ln_ratio(double fraction) { return std::log(fraction / (1.0 - fraction)); }
+double half_span_times_kappa() { return ln_ratio(1.0 - kSigmoidEndFraction); }
+
+double side_lane_exit_fraction(double ego_width_m, double lane_width_m) {
+  return std::clamp(0.5 + ego_width_m / (2.0 * lane_width_m), 0.5 + 1e-3, 1.0 - kSigmoidEndFraction);
+}
+
+double side_exit_limit_x_m(const Scenario& s) { return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m; }
+
+double kappa_cap_per_m(const Scenario& s) {
+  const EgoDynamics& dyn = s.ego.dynamics;
+  const double wheelbase_m = dyn.cg_to_front_m + dyn.cg_to_rear_m;
+  const double curvature_max = std::min(std::tan(dyn.steer_max_rad) / (2.0 * wheelbase_m),
+                                        std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
+  return std::min(s.params.planner.kappa_max_per_m,
+                  std::sqrt(6.0 * std::sqrt(3.0) * curvature_max / s.road.lane_width_m));
+}
+
+KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
+                           const SpeedRamp& ramp, double ramp_origin_x_m) {
+  const PlannerParams& p = s.params.planner;
+  const double before_m = pc_m - start_x_m;
+  const double after_m = complete_by_x_m - pc_m;
+  const double exit_room_m = side_exit_limit_x_m(s) - pc_m;
+  if (before_m <= 0.0 || after_m <= 0.0 || exit_room_m <= 0.0) return std::nullopt;
+  const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
+  const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
+                              half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
+  const double kappa_cap = kappa_cap_per_m(s);
+  if (lo > kappa_cap) return std::nullopt;
+  const auto comfort_margin = [&](double kappa) {
+    const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
+    return p.lat_accel_comfort_mps2 - peak_lat_accel_along_mps2(sig, ramp, ramp_origin_x_m);
+  };
+  const auto hi = highest_satisfying(comfort_margin, lo, kappa_cap, 1e-5);
+  if (!hi) return std::nullopt;
+  return std::make_pair(lo, *hi);
+}
+
+Track follower_track(const MainLaneVehicle& f, double rho_s) {
+  const double a = f.limits.accel_max_mps2, half = 0.5 * rho_s;
+  return Track{[=](double t) {
+                 const double tau = std::min(t, half);
+                 return f.x_m + f.speed_mps * tau + 0.5 * a * tau * tau + (f.speed_mps + a * tau) * (t - tau);
+               },
+               [=](double t) { return f.speed_mps + a * std::min(t, half); }, f.length_m, f.limits};
+}
+
+Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
+  if (observed_accel_mps2 >= -kLeaderBrakingMps2)
+    return Track{[=](double t) { return l.x_m + l.speed_mps * t; }, [=](double) { return l.speed_mps; },
+                 l.length_m, l.limits};
+  const SpeedRamp stop{l.speed_mps, 0.0, 1.0, std::min(-observed_accel_mps2, l.limits.brake_max_mps2)};
+  return Track{[=](double t) { return l.x_m + stop.distance_at_m(t); }, [=](double t) { return stop.speed_at_mps(t); },
+               l.length_m, l.limits};
+}
+
+bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, const SpeedRamp& ego, double horizon_s,
+                     const std::optional<Track>& follower, const std::optional<Track>& leader) {
+  const double t_lag = s.params.rss.response_time_s;
+  const Limits& el = s.ego.limits;
+  const double le = s.ego.size.length_m;
+  for (int k = 0; k <= kOccupancySamples; ++k) {
+    const double t = horizon_s * k / kOccupancySamples;
+    const double x = ego_x_m + ego.distance_at_m(t);
+    const double v = ego.speed_at_mps(t);
+    const double sgm = (sig.y_at_m(x) - sig.offset_m) / sig.width_m;
+    const double lat_speed = v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);
+    const double d_lat = rss_lateral_m({0.0, lat_speed, s.ego.size.width_m, s.ego.size.width_m, t_lag,
+                                        el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
+    // Laterally safe (lane centre Y = 0), with the growing tracking margin.
+    const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
+    if (-sig.y_at_m(x) >= d_lat + margin_m) continue;
+    if (follower && x <= sig.pc_m) {
+      const double d = rss_longitudinal_m({follower->v_at(t), v, follower->length_m, le, t_lag,
+                                           follower->limits.accel_max_mps2, follower->limits.brake_min_mps2,
+                                           el.brake_max_mps2});
+      if (x - d < follower->x_at(t)) return false;
+    }
+    if (leader) {
+      const double d = rss_longitudinal_m({v, leader->v_at(t), le, leader->length_m, t_lag, el.accel_max_mps2,
+                                           el.brake_min_mps2, leader->limits.brake_max_mps2});
+      if (x + d > leader->x_at(t)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace mg

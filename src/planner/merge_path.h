@@ -1,0 +1,72 @@
+// The merge path's admissibility and the lane-occupancy check along it (RCPP §II-C, DESIGN §6):
+// pure functions shared by the RCPP planner and the progress rule (rules/progress_monitor), so
+// the two agree on what a drivable, comfortable, RSS-clear merge is (docs/planner.md).
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include "core/scenario.h"
+#include "planner/definition1.h"
+#include "planner/sigmoid.h"
+
+namespace mg {
+
+// ln(f / (1 - f)): kappa times the distance from P_c to where the sigmoid has covered f of W.
+double ln_ratio(double fraction);
+// Distance from the start of the sigmoid (within kSigmoidEndFraction of the side lane) to P_c,
+// times kappa; the same from P_c to completion.
+double half_span_times_kappa();
+// Fraction of the lateral offset after which the ego's right edge has left the side lane,
+// 1/2 + w/(2W), clamped into the sigmoid.
+double side_lane_exit_fraction(double ego_width_m, double lane_width_m);
+// The x the ego's centre may reach at most while its sigmoid still has `exit` left to cover:
+// the side lane's end minus half the ego length (DESIGN §2: never pass the end in the side lane).
+double side_exit_limit_x_m(const Scenario& s);
+
+// Trackability of the path at any speed: its peak curvature c = W kappa^2/(6 sqrt 3) stays within
+// half the ego's steering ability (tan(steer_max)/(2 wheelbase)) and keeps the kinematic sideslip
+// atan(l_r c) below kPathSideslipMaxRad, half the sideslip rule's bound (docs/planner.md).
+inline constexpr double kPathSideslipMaxRad = 0.025;
+double kappa_cap_per_m(const Scenario& s);
+
+// Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
+// start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak
+// lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
+// bound, and lies in the configured [kappa_min, kappa_max].
+KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
+                           const SpeedRamp& ramp, double ramp_origin_x_m);
+
+// A main-lane vehicle's predicted motion during a merge candidate.
+struct Track {
+  std::function<double(double)> x_at;  // position at t after the decision
+  std::function<double(double)> v_at;  // speed at t
+  double length_m = 0.0;
+  Limits limits;
+};
+
+// The follower accelerates at its a_accel^max until rho/2 and then holds its speed (Def. 1.1).
+Track follower_track(const MainLaneVehicle& f, double rho_s);
+// The leader holds its speed (Def. 1.2) unless it is seen braking harder than
+// kLeaderBrakingMps2: then it is predicted to keep braking at that rate (at most its b_max) until
+// it stops, since a compliant leader may brake for a slower vehicle ahead of it (docs/planner.md).
+inline constexpr double kLeaderBrakingMps2 = 0.5;
+Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2);
+
+// Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
+// rho, docs/planner.md): at every one of kOccupancySamples instants of [0, horizon_s] at which the
+// ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
+// lateral speed on the path) plus a tracking margin, it must also be at least D_lon (RCPP eq. 1)
+// behind the leader and, until it reaches P_c, ahead of the follower: the merge never creates an
+// RSS-dangerous situation with a gap vehicle. Past P_c the ego is in the lane with the right of
+// way, and keeping D_lon behind it is the follower's duty as the rear vehicle (RSS Def. 1; DESIGN
+// §8), not something the ego's path must foresee for a follower that keeps the speed Def. 1.1
+// allows it to gain. The tracking margin, kOccupancyLateralMarginM, grows with the lateral
+// progress: on the side lane's centre, before the sigmoid starts, there is no tracking error.
+inline constexpr int kOccupancySamples = 40;
+inline constexpr double kOccupancyLateralMarginM = 0.75;
+inline constexpr double kOccupancyFullMarginFraction = 0.1;  // full margin from 10 % of W on
+bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, const SpeedRamp& ego, double horizon_s,
+                     const std::optional<Track>& follower, const std::optional<Track>& leader);
+
+}  // namespace mg

@@ -22,6 +22,9 @@ constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far insi
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
 constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
+// After an abort the ego holds the side lane this long before it plans a new merge: re-planning
+// at once, every cycle, against a leader that keeps braking would weave (docs/planner.md).
+constexpr double kMergeRetryAfterAbortS = 1.0;
 
 std::string fmt(const char* f, double a) {
   char buf[64];
@@ -382,6 +385,7 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
                can_still_halt(w) && (committed_bounds_crossed(w) || !committed_occupancy_clear(w))) {
       note = "merge aborted (P_c bounds crossed or lane occupied at the predicted positions); ";
       merge_.reset();
+      no_merge_before_s_ = w.time_s + kMergeRetryAfterAbortS;
     }
   }
   PlanOutput out = merged_ ? keep_main_lane(w) : merge_ ? follow_merge(w) : decide_in_side_lane(w);
@@ -529,6 +533,17 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
       retry_after_s_[partner] = w.time_s + kRetryAfterRhoC * p.comm_threshold_s;
       pending_.reset();
     }
+  }
+  if (w.time_s < no_merge_before_s_) {  // just aborted: back toward the side lane centre first
+    PlanOutput out;
+    out.path = side_lane_path(w);
+    out.target_speed_mps = std::min(v_e, halt_cap);
+    out.accel_limit_mps2 = s.ego.limits.brake_min_mps2;
+    out.decision.time_s = w.time_s;
+    out.decision.mode = DecisionMode::kDef1Halt;
+    out.decision.reason = note + "merge aborted; holding the side lane until t = " + fmt("%.2f", no_merge_before_s_) +
+                          " s before re-evaluating";
+    return out;
   }
   std::string why;
   if (auto plan = plan_definition1(w, MergeDurations::kRhoM, &why)) {

@@ -14,7 +14,9 @@ double side_lane_exit_fraction(double ego_width_m, double lane_width_m) {
   return std::clamp(0.5 + ego_width_m / (2.0 * lane_width_m), 0.5 + 1e-3, 1.0 - kSigmoidEndFraction);
 }
 
-double side_exit_limit_x_m(const Scenario& s) { return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m; }
+double side_exit_limit_x_m(const Scenario& s) {
+  return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - kSideExitMarginM;
+}
 
 double kappa_cap_per_m(const Scenario& s) {
   const EgoDynamics& dyn = s.ego.dynamics;

@@ -21,7 +21,9 @@ double half_span_times_kappa();
 // 1/2 + w/(2W), clamped into the sigmoid.
 double side_lane_exit_fraction(double ego_width_m, double lane_width_m);
 // The x the ego's centre may reach at most while its sigmoid still has `exit` left to cover:
-// the side lane's end minus half the ego length (DESIGN §2: never pass the end in the side lane).
+// the side lane's end minus half the ego length (DESIGN §2: never pass the end in the side lane)
+// minus kSideExitMarginM for path-tracking lag (at 35 m/s, 0.1 s of lag is 3.5 m).
+inline constexpr double kSideExitMarginM = 5.0;
 double side_exit_limit_x_m(const Scenario& s);
 
 // Trackability of the path at any speed: its peak curvature c = W kappa^2/(6 sqrt 3) stays within

@@ -331,7 +331,8 @@ double standstill_merge_length_m(const Scenario& s) {
       std::min(kappa_comfort_max_per_m(kStandstillMergeSpeedMps, s.road.lane_width_m, p.lat_accel_comfort_mps2),
                kappa_cap_per_m(s)));
   return (half_span_times_kappa() + ln_ratio(side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m))) /
-         kappa;
+             kappa +
+         kSideExitMarginM;
 }
 
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why) {

@@ -28,7 +28,8 @@ inline constexpr double kShortestMergeFactor = 1.05;
 inline constexpr double kAbortLateralFraction = 0.25;
 
 // The room a merge from standstill needs ahead of the halted ego: the distance from the start of
-// a comfortable sigmoid at kStandstillMergeSpeed to the side-lane exit (Def. 1.3).
+// a comfortable sigmoid at kStandstillMergeSpeed to the side-lane exit, plus kSideExitMarginM
+// (Def. 1.3).
 inline constexpr double kStandstillMergeSpeedMps = 5.0;
 double standstill_merge_length_m(const Scenario& s);
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "core/rss.h"
 #include "rules/definition2_monitor.h"
@@ -12,20 +13,31 @@ namespace {
 
 bool is_merge(DecisionMode m) { return m == DecisionMode::kDef1Merge || m == DecisionMode::kDef2Merge; }
 
-// Time of the decision that started the merge in force at time_s, or time_s - rho_m/2.
-double decision_time_before(const Scenario& s, const Trace& t, double time_s) {
-  double start = time_s - s.params.planner.merge_duration_s / 2.0;
+// The decision that started the merge in force at time_s, or nullptr.
+const Decision* merge_decision_before(const Trace& t, double time_s) {
+  const Decision* start = nullptr;
   bool in_merge = false;
   for (const Decision& d : t.decisions) {
     if (d.time_s > time_s) break;
     if (is_merge(d.mode)) {
-      if (!in_merge) start = d.time_s;
+      if (!in_merge) start = &d;
       in_merge = true;
     } else if (d.mode != DecisionMode::kProperResponse) {
       in_merge = false;
     }
   }
   return start;
+}
+
+// Where Definition 1 predicted a gap vehicle at `dt` after the decision, from its state then: the
+// follower accelerating at a_accel^max until rho/2 and then holding its speed (Def. 1.1), the
+// leader holding its speed (Def. 1.2). Returns {x, v}.
+std::pair<double, double> def1_predicted(const VehicleState& at_decision, double accel_mps2, double accel_for_s,
+                                         double dt) {
+  const double v0 = std::max(speed_of(at_decision), 0.0);
+  const double tau = std::min(dt, accel_for_s);
+  return {at_decision.x_m + v0 * tau + 0.5 * accel_mps2 * tau * tau + (v0 + accel_mps2 * tau) * (dt - tau),
+          v0 + accel_mps2 * tau};
 }
 
 // The main-lane vehicle that broke a declared limit in [from, to] (a follower accelerating
@@ -87,44 +99,68 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     }
     const double T = s.params.rss.response_time_s;
     const double ve = std::max(speed_of(st.ego), 0.0);
-    double m = std::numeric_limits<double>::infinity();
-    double required = 0.0, actual = 0.0;
-    std::size_t worst = 0;
+    const Decision* dec = merge_decision_before(ctx.trace, e.time_s);
+    const bool def1 = dec != nullptr && dec->mode == DecisionMode::kDef1Merge;
+    const TraceStep& at_dec = steps[step_at(ctx.trace, def1 ? dec->time_s : e.time_s)];
+    const double since_dec_s = def1 ? e.time_s - dec->time_s : 0.0;
+    // Margins against the real positions, and against the ones Definition 1 predicted at the
+    // decision (the follower accelerating at a_accel^max until rho/2, then holding its speed; the
+    // leader holding its speed); the latter only for a Def. 1 merge.
+    const double inf = std::numeric_limits<double>::infinity();
+    double m_follower = inf, m_follower_pred = -inf, m_leader = inf, m_leader_pred = -inf;
     if (follower > 0) {
-      const VehicleState& f = state_of(st, follower);
       const Limits& lf = limits_of(s, follower);
-      const double d_lon = rss_longitudinal_m({std::max(speed_of(f), 0.0), ve, size_of(s, follower).length_m,
-                                               s.ego.size.length_m, T, lf.accel_max_mps2, lf.brake_min_mps2,
-                                               s.ego.limits.brake_max_mps2});
-      m = st.ego.x_m - f.x_m - d_lon;
-      required = f.x_m + d_lon;  // P_c lower bound
-      actual = st.ego.x_m;
-      worst = follower;
-    }
-    if (leader > 0) {
-      const VehicleState& l = state_of(st, leader);
-      const double d_lon = rss_longitudinal_m({ve, std::max(speed_of(l), 0.0), s.ego.size.length_m,
-                                               size_of(s, leader).length_m, T, s.ego.limits.accel_max_mps2,
-                                               s.ego.limits.brake_min_mps2, limits_of(s, leader).brake_max_mps2});
-      if (l.x_m - st.ego.x_m - d_lon < m) {
-        m = l.x_m - st.ego.x_m - d_lon;
-        required = l.x_m - d_lon;  // P_c upper bound
-        actual = st.ego.x_m;
-        worst = leader;
+      const auto margin = [&](double x_f, double v_f) {
+        return st.ego.x_m - x_f -
+               rss_longitudinal_m({std::max(v_f, 0.0), ve, size_of(s, follower).length_m, s.ego.size.length_m, T,
+                                   lf.accel_max_mps2, lf.brake_min_mps2, s.ego.limits.brake_max_mps2});
+      };
+      const VehicleState& f = state_of(st, follower);
+      m_follower = margin(f.x_m, speed_of(f));
+      if (def1) {
+        const auto [x, v] =
+            def1_predicted(state_of(at_dec, follower), lf.accel_max_mps2, 0.5 * dec->merge_duration_s, since_dec_s);
+        m_follower_pred = margin(x, v);
       }
     }
-    if (!std::isfinite(m)) continue;
+    if (leader > 0) {
+      const auto margin = [&](double x_l, double v_l) {
+        return x_l - st.ego.x_m -
+               rss_longitudinal_m({ve, std::max(v_l, 0.0), s.ego.size.length_m, size_of(s, leader).length_m, T,
+                                   s.ego.limits.accel_max_mps2, s.ego.limits.brake_min_mps2,
+                                   limits_of(s, leader).brake_max_mps2});
+      };
+      const VehicleState& l = state_of(st, leader);
+      m_leader = margin(l.x_m, speed_of(l));
+      if (def1) {
+        const auto [x, v] = def1_predicted(state_of(at_dec, leader), 0.0, 0.0, since_dec_s);
+        m_leader_pred = margin(x, v);
+      }
+    }
+    if (follower == 0 && leader == 0) continue;
+    // A gap vehicle that broke its declared limit (or reneged on an accepted v_o*) is liable for
+    // the real margin. Otherwise the ego gets the benefit of the doubt: each vehicle is judged at
+    // the better of its real and its predicted position, so a leader that slowed within its b_max
+    // or a follower that kept accelerating after rho/2 (both legal, neither what Definition 1
+    // assumes) leaves the pair to the RSS rules (docs/rules.md).
+    const bool leader_worse = m_leader < m_follower;
+    const std::size_t worst = leader_worse ? leader : follower;
+    double m = std::min(m_follower, m_leader);
     int liable = kEgoId;
     if (m < 0.0) {
-      int breaker = limit_breaker(ctx, follower, leader, decision_time_before(s, ctx.trace, e.time_s), e.time_s);
+      const double from_s = dec ? dec->time_s : e.time_s - s.params.planner.merge_duration_s / 2.0;
+      int breaker = limit_breaker(ctx, follower, leader, from_s, e.time_s);
       if (breaker == kNobody && worst > 0) breaker = reneging_responder(ctx, worst, e.time_s);
-      if (breaker != kNobody) liable = breaker;
+      if (breaker != kNobody)
+        liable = breaker;
+      else
+        m = std::min(std::max(m_follower, m_follower_pred), std::max(m_leader, m_leader_pred));
     }
-    if (acc.record(i, e.time_s, m, liable, required, actual)) {
+    const double required = leader_worse ? st.ego.x_m + m : st.ego.x_m - m;  // the P_c bound
+    if (acc.record(i, e.time_s, m, liable, required, st.ego.x_m)) {
       std::ostringstream os;
       os << "at the merge midpoint (t = " << e.time_s << " s, X = " << st.ego.x_m << " m) the ego was " << -m
-         << " m inside the safe distance of "
-         << party_name(party_of(s, worst));
+         << " m inside the safe distance of " << party_name(party_of(s, worst));
       if (liable != kEgoId) os << ", after " << party_name(liable) << " broke its declared limit or its accepted v_o*";
       acc.set_detail(os.str());
     }

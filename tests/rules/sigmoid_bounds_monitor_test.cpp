@@ -45,6 +45,44 @@ TEST(SigmoidBoundsMonitor, FollowerThatOveracceleratedBeforeTheMidpointIsLiable)
   EXPECT_EQ(out.result.liable_id, 1);
 }
 
+// A Def. 1 merge decided at t = 0 (P_c inside its bounds) for the gap behind vehicle 1.
+Trace with_def1_decision(Trace t) {
+  Decision d;
+  d.mode = DecisionMode::kDef1Merge;
+  d.gap = Gap{-1, 1};
+  d.pc_min_m = 0.0;
+  d.pc_m = 20.0;
+  d.pc_max_m = 40.0;
+  d.merge_duration_s = 2.0;
+  t.decisions.push_back(d);
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, LeaderThatSlowedWithinItsLimitsLeavesThePairToTheRssRules) {
+  // Leader 50 m ahead, all at 20 m/s; it brakes at 3 m/s^2 (its b_max is 8). At the midpoint
+  // (t = 1 s) it is 50 - 1.5 = 48.5 m ahead at 17 m/s, D_lon(20, 17) = 45.175 + (400 - 289)/16
+  // = 52.11 m: 3.6 m inside. Def. 1.2 predicted it holding 20 m/s, 50 m ahead: 4.825 m clear.
+  // The ego gets the benefit of the doubt; rss_longitudinal judges its response.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 50.0, 20.0)};
+  const Trace t = with_def1_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0})));
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 4.825, 1e-6);
+}
+
+TEST(SigmoidBoundsMonitor, LeaderAtItsPredictedSpeedButTooCloseBlamesTheEgo) {
+  // The same merge with the leader holding its speed 40 m ahead: 40 - 45.175 = -5.175 m under
+  // both the real and the predicted positions.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 40.0, 20.0)};
+  const Trace t = with_def1_decision(with_midpoint(constant_accel_trace(s, 2.0)));
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
+}
+
 TEST(SigmoidBoundsMonitor, DecisionPcOutsideItsBoundsIsAViolation) {
   Scenario s = base_scenario();
   Trace t = constant_accel_trace(s, 1.0);

@@ -440,12 +440,17 @@ bool RcppPlanner::committed_occupancy_clear(const WorldSnapshot& w) const {
           .value_or(kMaxMergeHorizonS);
   // The follower may still accelerate for what is left of its Def. 1.1 window (rho/2 from T_dec).
   const double follower_window_s = std::max(0.0, d.merge_duration_s - 2.0 * (w.time_s - d.time_s));
-  std::optional<Track> ft, lt;
+  std::optional<Track> ft, lt, ahead;
   for (const ObservedVehicle& ov : w.others) {
     if (ov.id == d.gap->follower_id) ft = follower_track(to_lane_vehicle(ov), follower_window_s);
     if (ov.id == d.gap->leader_id) lt = leader_track(to_lane_vehicle(ov), ov.state.accel_mps2);
   }
-  return occupancy_clear(s, w.ego.x_m, merge_->sigmoid, ramp, horizon_s, ft, lt);
+  // The vehicle now nearest ahead in the target lane, when it is not the gap's leader (the
+  // leader left the gap, e.g. a non-compliant one that drove on): the ego must keep D_lon to it too.
+  if (const auto next = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m); next && next->id != d.gap->leader_id)
+    ahead = leader_track(*next, observed_accel_mps2(w, next->id));
+  return occupancy_clear(s, w.ego.x_m, merge_->sigmoid, ramp, horizon_s, ft, lt) &&
+         (!ahead || occupancy_clear(s, w.ego.x_m, merge_->sigmoid, ramp, horizon_s, std::nullopt, ahead));
 }
 
 double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {

@@ -28,15 +28,7 @@ void holds_for_generated_scenarios(const std::string& planner, const std::string
               "\nscenario: " + scenario_to_json(s).dump());
 }
 
-// OPEN FINDINGS (issue #6 stays open until they are fixed in the planner; then remove DISABLED_):
-// - ego_never_liable / sigmoid_pc_bounds: at the merge midpoint the ego is 0.04-1.4 m inside D_lon
-//   when the gap leader brakes legally for a slower vehicle ahead of it, or a bounded-random
-//   vehicle ahead of the gap varies its speed; Def. 1.2's constant-speed prediction misses both.
-// - progress: the planner halts although the progress rule (which uses the planner's own
-//   definition1.h margins) finds a feasible gap; the planner rejects it for its occupancy,
-//   sigmoid or merge-duration checks, which the rule does not model.
-// They are run by `mergeguard fuzz --planner rcpp`, which shrinks and stores every one of them.
-RC_GTEST_PROP(RcppProperties, DISABLED_EgoIsNeverLiable, ()) {
+RC_GTEST_PROP(RcppProperties, EgoIsNeverLiable, ()) {
   holds_for_generated_scenarios("rcpp", property::kEgoNeverLiable);
 }
 RC_GTEST_PROP(RcppProperties, CompliantOthersMeanNoCollisionAndNoUnansweredDanger, ()) {
@@ -52,11 +44,11 @@ RC_GTEST_PROP(RcppProperties, NoOscillation, ()) { holds_for_generated_scenarios
 RC_GTEST_PROP(RcppProperties, SameScenarioSameTraceDigest, ()) {
   holds_for_generated_scenarios("rcpp", property::kDeterminism);
 }
-RC_GTEST_PROP(RcppProperties, DISABLED_NoNeedlessHalt, ()) {  // open finding, see above
+RC_GTEST_PROP(RcppProperties, NoNeedlessHalt, ()) {
   holds_for_generated_scenarios("rcpp", property::kProgress);
 }
 
-RC_GTEST_PROP(RcppCoopProperties, DISABLED_EgoIsNeverLiable, ()) {  // open finding, see above
+RC_GTEST_PROP(RcppCoopProperties, EgoIsNeverLiable, ()) {
   holds_for_generated_scenarios("rcpp-coop", property::kEgoNeverLiable);
 }
 RC_GTEST_PROP(RcppCoopProperties, CompliantOthersMeanNoCollisionAndNoUnansweredDanger, ()) {

@@ -105,8 +105,9 @@ Scenario assemble_scenario(const ScenarioSpec& spec) {
   ego.x_m = spec.road.side_lane_start_x_m + spec.ego.offset_m;
   // The ego starts inside its lane with at least kEgoEdgeClearanceM to either lane edge (a start
   // at the road's edge would be an unavoidable on_road violation, not a planner finding).
-  const double max_offset_m = std::max(0.0, (spec.road.lane_width_m - spec.ego.width_m) / 2.0 - range::kEgoEdgeClearanceM);
-  ego.y_m = snap_to_grid(-spec.road.lane_width_m + std::clamp(spec.ego.lateral_offset_m, -max_offset_m, max_offset_m), 0.01);
+  const double lane_w = s.road.lane_width_m;
+  const double max_offset_m = std::max(0.0, (lane_w - spec.ego.width_m) / 2.0 - range::kEgoEdgeClearanceM);
+  ego.y_m = snap_to_grid(-lane_w + std::clamp(spec.ego.lateral_offset_m, -max_offset_m, max_offset_m), 0.01);
   ego.speed_mps = std::min(spec.ego.speed_mps, spec.road.speed_limit_mps);
   ego.size.length_m = spec.ego.length_m;
   ego.size.width_m = spec.ego.width_m;

@@ -73,6 +73,15 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
           why = describe(s, g.front) + " braked harder than its declared b_max " +
                 std::to_string(limits_of(s, g.front).brake_max_mps2) + " m/s2 while " +
                 describe(s, g.rear) + " followed";
+        } else if (rear.accel_mps2 > limits_of(s, g.rear).accel_max_mps2 + tol) {
+          // RSS Def. 1's worst case bounds the rear vehicle's acceleration by its a_accel^max even
+          // during the response time; beyond it, D_lon no longer covers the pair.
+          e.breach = party_of(s, g.rear);
+          std::ostringstream os;
+          os << describe(s, g.rear) << " accelerated at " << rear.accel_mps2 << " m/s2, beyond its declared a_accel^max "
+             << limits_of(s, g.rear).accel_max_mps2 << " m/s2, while the situation was dangerous (since t = "
+             << e.blame_time_s << " s)";
+          why = os.str();
         } else if (e.lateral_entrance && !ctx.row.ego_holds_at(e.blame_time_s)) {
           e.breach = kEgoId;
           why = "ego entered the lane of " + describe(s, i == 0 ? j : i) +

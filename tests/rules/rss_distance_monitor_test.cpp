@@ -47,6 +47,16 @@ TEST(RssLongitudinalMonitor, RearBrakingAtBminIsAProperResponse) {
   EXPECT_NEAR(out.result.min_margin, 0.0, 1e-12);
 }
 
+TEST(RssLongitudinalMonitor, RearAcceleratingBeyondItsAmaxInsideTheResponseTimeIsLiable) {
+  // Unsafe from t = 0 (40 m < 45.175 m); vehicle 1 accelerates at 3 > a_max 2 m/s2 at once.
+  // Within T it owes no braking yet, but D_lon assumed at most a_max: liable at t = 0, not 0.5 s.
+  const Scenario s = two_in_lane(40.0);
+  const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 0.4, {0.0, 3.0, 0.0}));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 0.0, 1e-9);
+}
+
 TEST(RssLongitudinalMonitor, FrontBrakingBeyondBmaxIsLiable) {
   // Vehicle 2 brakes at 9 > b_max 8 m/s2 from t = 0 with a safe 50 m gap; as the gap shrinks
   // below D_lon the front is liable even though the rear brakes at b_min after T.

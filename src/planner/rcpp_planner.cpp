@@ -312,9 +312,21 @@ bool can_still_halt(const WorldSnapshot& w) {
   return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
 }
 
+// The side lane's centre; from off it (after an aborted merge, or a start off-centre) a logistic
+// path back to it, as sharp as the comfort bound at the ego's speed and the trackability cap
+// allow: a straight target line would make the tracker snap back (sideslip beyond the rule's
+// bound at merge speeds).
+constexpr double kReturnPathMinOffsetM = 0.05;
 std::vector<PathPoint> side_lane_path(const WorldSnapshot& w) {
-  return sample_straight(w.scenario->road.side_lane_y_m(), w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM,
-                         kPathStepM);
+  const Scenario& s = *w.scenario;
+  const double to_centre_m = s.road.side_lane_y_m() - w.ego.y_m;
+  const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + kPathAheadM;
+  if (std::abs(to_centre_m) < kReturnPathMinOffsetM) return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
+  const double kappa = std::min(
+      kappa_cap_per_m(s),
+      kappa_comfort_max_per_m(ego_speed_mps(w), std::abs(to_centre_m), s.params.planner.lat_accel_comfort_mps2));
+  const Sigmoid back{to_centre_m, kappa, w.ego.x_m + half_span_times_kappa() / kappa, w.ego.y_m};
+  return sample_sigmoid(back, from_x, to_x, kPathStepM);
 }
 
 double accel_limit_toward(const Scenario& s, double current_mps, double target_mps) {
@@ -432,7 +444,9 @@ bool RcppPlanner::committed_occupancy_clear(const WorldSnapshot& w) const {
   const Decision& d = merge_->decision;
   if (!d.gap) return true;
   // The rest of the merge, until the ego reaches the sigmoid's end at the speed it aims for.
-  const SpeedRamp ramp{ego_speed_mps(w), merge_target_speed_mps(w), s.ego.limits.accel_max_mps2,
+  // The ego's speed as planned (v_e*), as the candidate was checked: checking the capped target
+  // speed instead made a merge fail its re-check right after it passed the planner's.
+  const SpeedRamp ramp{ego_speed_mps(w), merge_->target_speed_mps, s.ego.limits.accel_max_mps2,
                        s.ego.limits.brake_min_mps2};
   const double to_end_m = merge_->sigmoid.x_at_fraction_m(1.0 - kSigmoidEndFraction) - w.ego.x_m;
   const double horizon_s =

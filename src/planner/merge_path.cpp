@@ -61,7 +61,7 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
   if (observed_accel_mps2 >= -kLeaderBrakingMps2)
     return Track{[=](double t) { return l.x_m + l.speed_mps * t; }, [=](double) { return l.speed_mps; },
                  l.length_m, l.limits};
-  const SpeedRamp stop{l.speed_mps, 0.0, 1.0, std::min(-observed_accel_mps2, l.limits.brake_max_mps2)};
+  const SpeedRamp stop{l.speed_mps, 0.0, 1.0, -observed_accel_mps2};
   return Track{[=](double t) { return l.x_m + stop.distance_at_m(t); }, [=](double t) { return stop.speed_at_mps(t); },
                l.length_m, l.limits};
 }

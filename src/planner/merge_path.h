@@ -50,8 +50,9 @@ struct Track {
 // The follower accelerates at its a_accel^max until rho/2 and then holds its speed (Def. 1.1).
 Track follower_track(const MainLaneVehicle& f, double rho_s);
 // The leader holds its speed (Def. 1.2) unless it is seen braking harder than
-// kLeaderBrakingMps2: then it is predicted to keep braking at that rate (at most its b_max) until
-// it stops, since a compliant leader may brake for a slower vehicle ahead of it (docs/planner.md).
+// kLeaderBrakingMps2: then it is predicted to keep braking at that rate until it stops, since a
+// compliant leader may brake for a slower vehicle ahead of it (docs/planner.md); a rate beyond its
+// declared b_max is taken as seen, not capped.
 inline constexpr double kLeaderBrakingMps2 = 0.5;
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2);
 

@@ -59,14 +59,24 @@ struct WorstCase {
 // positions can be far apart while the rear vehicle hits the front one on the way, so the
 // maximum is taken at the instant their speeds are equal as well.
 double rss_longitudinal_m(const LongitudinalInput& in) {
-  require_non_negative(in.rear_speed_mps, "rear_speed_mps");
-  require_non_negative(in.front_speed_mps, "front_speed_mps");
-  require_non_negative(in.rear_length_m, "rear_length_m");
-  require_non_negative(in.front_length_m, "front_length_m");
-  require_non_negative(in.response_time_s, "response_time_s");
-  require_non_negative(in.accel_max_mps2, "accel_max_mps2");
-  require_positive(in.brake_min_mps2, "brake_min_mps2");
-  require_positive(in.brake_max_mps2, "brake_max_mps2");
+  // One branch on the hot path (planner and monitors call this millions of times); the named
+  // checks run only to report what is wrong.
+  const bool ok = in.rear_speed_mps >= 0.0 && in.front_speed_mps >= 0.0 && in.rear_length_m >= 0.0 &&
+                  in.front_length_m >= 0.0 && in.response_time_s >= 0.0 && in.accel_max_mps2 >= 0.0 &&
+                  in.brake_min_mps2 > 0.0 && in.brake_max_mps2 > 0.0 &&
+                  std::isfinite(in.rear_speed_mps + in.front_speed_mps + in.rear_length_m + in.front_length_m +
+                                in.response_time_s + in.accel_max_mps2 + in.brake_min_mps2 + in.brake_max_mps2);
+  if (!ok) [[unlikely]] {
+    require_non_negative(in.rear_speed_mps, "rear_speed_mps");
+    require_non_negative(in.front_speed_mps, "front_speed_mps");
+    require_non_negative(in.rear_length_m, "rear_length_m");
+    require_non_negative(in.front_length_m, "front_length_m");
+    require_non_negative(in.response_time_s, "response_time_s");
+    require_non_negative(in.accel_max_mps2, "accel_max_mps2");
+    require_positive(in.brake_min_mps2, "brake_min_mps2");
+    require_positive(in.brake_max_mps2, "brake_max_mps2");
+    throw std::invalid_argument("rss_longitudinal_m: inputs out of range");  // e.g. finite parts, infinite sum
+  }
   const WorstCase m{in};
   const double t = in.response_time_s;
   const double v_rear_after_t = m.rear_speed_after_t_mps();
@@ -89,14 +99,22 @@ double rss_longitudinal_m(const LongitudinalInput& in) {
 // RCPP eq. (2) corrected per RSS arXiv:1708.06374 Def. 4 (DESIGN §3): the right vehicle's
 // braking term enters with the RSS sign; widths outside [.]_+.
 double rss_lateral_m(const LateralInput& in) {
-  require_finite(in.left_lat_speed_mps, "left_lat_speed_mps");
-  require_finite(in.right_lat_speed_mps, "right_lat_speed_mps");
-  require_non_negative(in.left_width_m, "left_width_m");
-  require_non_negative(in.right_width_m, "right_width_m");
-  require_non_negative(in.response_time_s, "response_time_s");
-  require_non_negative(in.lat_accel_max_mps2, "lat_accel_max_mps2");
-  require_positive(in.lat_brake_min_mps2, "lat_brake_min_mps2");
-  require_non_negative(in.fluctuation_margin_m, "fluctuation_margin_m");
+  const bool ok = in.left_width_m >= 0.0 && in.right_width_m >= 0.0 && in.response_time_s >= 0.0 &&
+                  in.lat_accel_max_mps2 >= 0.0 && in.lat_brake_min_mps2 > 0.0 && in.fluctuation_margin_m >= 0.0 &&
+                  std::isfinite(in.left_lat_speed_mps + in.right_lat_speed_mps + in.left_width_m + in.right_width_m +
+                                in.response_time_s + in.lat_accel_max_mps2 + in.lat_brake_min_mps2 +
+                                in.fluctuation_margin_m);
+  if (!ok) [[unlikely]] {
+    require_finite(in.left_lat_speed_mps, "left_lat_speed_mps");
+    require_finite(in.right_lat_speed_mps, "right_lat_speed_mps");
+    require_non_negative(in.left_width_m, "left_width_m");
+    require_non_negative(in.right_width_m, "right_width_m");
+    require_non_negative(in.response_time_s, "response_time_s");
+    require_non_negative(in.lat_accel_max_mps2, "lat_accel_max_mps2");
+    require_positive(in.lat_brake_min_mps2, "lat_brake_min_mps2");
+    require_non_negative(in.fluctuation_margin_m, "fluctuation_margin_m");
+    throw std::invalid_argument("rss_lateral_m: inputs out of range");
+  }
   const double t = in.response_time_s;
   // During T each accelerates toward the other (+Y is left: L moves down, R moves up).
   const double v_left_rho = in.left_lat_speed_mps - t * in.lat_accel_max_mps2;

@@ -13,7 +13,7 @@ namespace mg {
 // a slow or halted ego needs a longer merge to cover a drivable lane change.
 inline constexpr double kProgressMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
 // v_e* candidates, evenly over [0, speed limit].
-inline constexpr int kProgressSpeedSamples = 96;
+inline constexpr int kProgressSpeedSamples = 48;
 
 // Whether some gap of the rightmost main lane admits a Definition 1 merge from the ego's state
 // at `step`: for one of the merge durations, a v_e* in [0, speed limit] satisfies ineq. (1) and

@@ -25,6 +25,7 @@ constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committ
 // After an abort the ego holds the side lane this long before it plans a new merge: re-planning
 // at once, every cycle, against a leader that keeps braking would weave (docs/planner.md).
 constexpr double kMergeRetryAfterAbortS = 1.0;
+constexpr double kLongerMergeEveryS = 0.5;
 
 std::string fmt(const char* f, double a) {
   char buf[64];
@@ -596,7 +597,11 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
       pending_->plan.decision = plan->decision;
     }
   }
-  if (!pending_) {
+  // The longer merges are the costly search (three durations); while no merge exists they are
+  // tried every kLongerMergeEveryS (docs/performance.md), Def. 1 at rho_m every cycle.
+  const bool longer_due = w.time_s + 1e-9 >= next_longer_merge_s_;
+  if (!pending_ && longer_due) {
+    next_longer_merge_s_ = w.time_s + kLongerMergeEveryS;
     if (auto plan = plan_definition1(w, MergeDurations::kLonger, &why)) {
       plan->decision.reason = note + plan->decision.reason;
       return start_merge(w, plan->sigmoid, plan->ve_star_mps, plan->decision);

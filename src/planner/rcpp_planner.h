@@ -88,6 +88,7 @@ class RcppPlanner : public Planner {
   std::optional<Pending> pending_;
   std::map<int, double> retry_after_s_;  // partner id -> earliest time of a new request
   double no_merge_before_s_ = -1.0;       // after an abort: earliest time of a new merge
+  double next_longer_merge_s_ = -1.0;     // next time the longer merge durations are searched
 };
 
 }  // namespace mg

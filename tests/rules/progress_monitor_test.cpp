@@ -1,5 +1,7 @@
 #include "rules/progress_monitor.h"
 
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "trace_builder.h"
@@ -35,6 +37,29 @@ TEST(ProgressMonitor, HaltingBesideADensePlatoonIsNotNeedless) {
   const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 4.0));
   EXPECT_TRUE(out.result.holds);
   EXPECT_NEAR(out.result.min_margin, 3.0, 1e-12);
+}
+
+TEST(ProgressMonitor, HaltingWhileAVehicleDrivesAwayAheadIsNeedless) {
+  // The ego stands at X = 100; vehicle 1 drives away at 20 m/s from X = 160: merging behind it
+  // is feasible (a drivable sigmoid, clear of it), so the halt is needless after the 3 s grace.
+  Scenario s = base_scenario();
+  s.ego.x_m = 100.0;
+  s.ego.speed_mps = 0.0;
+  s.vehicles = {vehicle(1, 160.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 5.0));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_NE(out.result.detail.find("leader 1"), std::string::npos) << out.result.detail;
+}
+
+TEST(ProgressMonitor, ABrakingLeaderOffersNoGap) {
+  // The same, but vehicle 1 brakes at 1 m/s^2 (> progress_leader_braking_mps2): Def. 1.2 assumes
+  // it holds its speed, so the gap behind it does not count and the halt is justified.
+  Scenario s = base_scenario();
+  s.ego.x_m = 100.0;
+  s.ego.speed_mps = 0.0;
+  s.vehicles = {vehicle(1, 160.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 5.0, {0.0, -1.0}));
+  EXPECT_TRUE(out.result.holds);
 }
 
 TEST(ProgressMonitor, MovingEgoIsNotJudged) {

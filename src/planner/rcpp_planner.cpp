@@ -473,12 +473,16 @@ double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
   // Past P_c the ego is in the main lane: it also keeps its RSS distance to the vehicle ahead.
   // Before P_c it does so too once that vehicle brakes: Def. 1.2 predicted it at constant speed,
   // and a compliant leader may brake (e.g. for a slow vehicle ahead of it) up to its b_max; the
-  // ego must still reach P_c at D_lon behind it (RCPP §II-C, DESIGN §6).
+  // ego must still reach P_c at D_lon behind it (RCPP §II-C, DESIGN §6). And once the merge can
+  // no longer be aborted (kAbortLateralFraction): a leader that has braked to a stop is not
+  // braking any more, and the ego must not speed up toward it on the way in.
   if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m)) {
     const auto obs = std::find_if(w.others.begin(), w.others.end(),
                                   [&](const ObservedVehicle& o) { return o.id == leader->id; });
     const bool braking = obs != w.others.end() && obs->state.accel_mps2 < -kLeaderBrakingMps2;
-    if (w.ego.x_m >= merge_->sigmoid.pc_m || braking) target = std::min(target, rss_follow_speed_mps(w, *leader));
+    const Sigmoid& sig = merge_->sigmoid;
+    const bool committed = (w.ego.y_m - sig.offset_m) / sig.width_m >= kAbortLateralFraction;
+    if (w.ego.x_m >= sig.pc_m || braking || committed) target = std::min(target, rss_follow_speed_mps(w, *leader));
   }
   return target;
 }

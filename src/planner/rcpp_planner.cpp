@@ -566,8 +566,8 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     out.accel_limit_mps2 = s.ego.limits.brake_min_mps2;
     out.decision.time_s = w.time_s;
     out.decision.mode = DecisionMode::kDef1Halt;
-    out.decision.reason = note + "merge aborted; holding the side lane until t = " + fmt("%.2f", no_merge_before_s_) +
-                          " s before re-evaluating";
+    out.decision.reason = note + "holding the side lane after an aborted merge until t = " +
+                          fmt("%.2f", no_merge_before_s_) + " s, then re-evaluating";
     return out;
   }
   std::string why;

@@ -21,7 +21,7 @@ inline constexpr int kProgressSpeedSamples = 48;
 // literal form and the bounded-rate form of DESIGN §4 must both hold), an admissible sigmoid
 // (planner/merge_path.h: drivable, comfortable, completed in time) has its midpoint where the ego
 // is at rho/2 and passes the occupancy check, and the ego's right edge leaves the side lane
-// margin_m before the side lane's end. A gap whose leader brakes harder than
+// margin_m before the planner's exit limit (side_exit_limit_x_m). A gap whose leader brakes harder than
 // leader_braking_mps2 does not count (Def. 1.2 assumes the leader holds its speed).
 struct FeasibleMerge {
   int follower_id = -1;  // -1: open gap

@@ -38,7 +38,6 @@ std::string gap_name(const Gap& g) {
   return "gap (follower " + id(g.follower_id) + ", leader " + id(g.leader_id) + ")";
 }
 
-
 Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
   const Scenario& s = *w.scenario;
   return Def1Context{w.ego.x_m, ego_speed_mps(w), s.ego.size.length_m, s.ego.limits,
@@ -52,14 +51,11 @@ CoopContext coop_context(const WorldSnapshot& w) {
                      s.params.planner.comm_threshold_s, s.road.speed_limit_mps};
 }
 
-
-
 double observed_accel_mps2(const WorldSnapshot& w, int id) {
   for (const ObservedVehicle& o : w.others)
     if (o.id == id) return o.state.accel_mps2;
   return 0.0;
 }
-
 
 // Potential field cost of a candidate path (docs/planner.md): the mean of RCPP eq. (3)-(5) over
 // kFieldSamples instants of [0, duration_s], the ego at ego_x_at(t) on the sigmoid, every other
@@ -336,7 +332,6 @@ double accel_limit_toward(const Scenario& s, double current_mps, double target_m
 
 }  // namespace
 
-
 double standstill_merge_length_m(const Scenario& s) {
   const PlannerParams& p = s.params.planner;
   const double kappa = std::max(
@@ -477,9 +472,7 @@ double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
   // no longer be aborted (kAbortLateralFraction): a leader that has braked to a stop is not
   // braking any more, and the ego must not speed up toward it on the way in.
   if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m)) {
-    const auto obs = std::find_if(w.others.begin(), w.others.end(),
-                                  [&](const ObservedVehicle& o) { return o.id == leader->id; });
-    const bool braking = obs != w.others.end() && obs->state.accel_mps2 < -kLeaderBrakingMps2;
+    const bool braking = observed_accel_mps2(w, leader->id) < -kLeaderBrakingMps2;
     const Sigmoid& sig = merge_->sigmoid;
     const bool committed = (w.ego.y_m - sig.offset_m) / sig.width_m >= kAbortLateralFraction;
     if (w.ego.x_m >= sig.pc_m || braking || committed) target = std::min(target, rss_follow_speed_mps(w, *leader));

@@ -65,8 +65,6 @@ NonCompliance noncompliance_of(const VehicleSpec& s, const Limits& declared) {
 // eq. (1) with the scenario's response time and the declared limits), rounded up to 5 cm: every
 // generated scenario starts RSS-safe between main-lane vehicles of a lane, so a collision among
 // them always has a party that broke an obligation after t = 0.
-constexpr double kLaneRssClearanceM = 0.3;
-
 double ahead_of(const MainVehicle& rear, const MainVehicle& front, double response_time_s, double slack_m) {
   const double d_lon_m =
       rss_longitudinal_m({rear.speed_mps, front.speed_mps, rear.size.length_m, front.size.length_m, response_time_s,
@@ -79,14 +77,15 @@ double ahead_of(const MainVehicle& rear, const MainVehicle& front, double respon
 // lateral limits, as rules/pair_geometry judges them). With a long response time, a truck and a
 // lively ego, D_lat reached 3.0 m: every vehicle beside the ego's lane was "laterally unsafe"
 // while both kept their lanes, and lane keeping itself became a finding (docs/fuzzing.md).
+constexpr double kLaneRssClearanceM = 0.3;
 double rss_wide_lane_m(const ScenarioSpec& spec, double fluctuation_margin_m) {
-  double widest_m = spec.ego.width_m, need_m = 0.0;
+  double widest_m = spec.ego.width_m;
   for (const VehicleSpec& v : spec.vehicles) widest_m = std::max(widest_m, v.width_m);
   const auto d_lat_at_rest = [&](double w1, double w2, const Limits& lat) {
     return rss_lateral_m({0.0, 0.0, w1, w2, spec.params.response_time_s, lat.lat_accel_max_mps2,
                           lat.lat_brake_min_mps2, fluctuation_margin_m});
   };
-  need_m = d_lat_at_rest(spec.ego.width_m, widest_m, limits_of(spec.ego.limits));
+  double need_m = d_lat_at_rest(spec.ego.width_m, widest_m, limits_of(spec.ego.limits));
   for (const VehicleSpec& v : spec.vehicles) need_m = std::max(need_m, d_lat_at_rest(v.width_m, widest_m, limits_of(v.limits)));
   return std::max(spec.road.lane_width_m, std::ceil((need_m + kLaneRssClearanceM) / 0.05 - 1e-6) * 0.05);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <ranges>
 #include <sstream>
 
 #include "planner/definition1.h"
@@ -47,10 +48,18 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
       std::optional<Track> follower, leader;
       if (gap.follower) follower = follower_track(*gap.follower, c.merge_duration_s);
       if (gap.leader) leader = leader_track(*gap.leader, 0.0);
-      for (int i = 0; i <= kProgressSpeedSamples; ++i) {
-        const double ve = c.speed_limit_mps * i / kProgressSpeedSamples;
-        if (gap.follower && def1_1_margin_m(c, *gap.follower, ve) < margin) continue;
-        if (gap.leader && def1_2_margin_m(c, *gap.leader, ve) < margin) continue;
+      const auto ve_at = [&](int i) { return c.speed_limit_mps * i / kProgressSpeedSamples; };
+      // Ineq. (1.1)'s margin grows with v_e* and (1.2)'s falls (definition1.h), so the samples
+      // that satisfy both are one run [first, end): found by bisection over the sample indices.
+      const auto samples = std::views::iota(0, kProgressSpeedSamples + 1);
+      const int first = gap.follower ? *std::ranges::partition_point(samples, [&](int i) {
+        return def1_1_margin_m(c, *gap.follower, ve_at(i)) < margin;
+      }) : 0;
+      const int end = gap.leader ? *std::ranges::partition_point(samples, [&](int i) {
+        return def1_2_margin_m(c, *gap.leader, ve_at(i)) >= margin;
+      }) : kProgressSpeedSamples + 1;
+      for (int i = first; i < end; ++i) {
+        const double ve = ve_at(i);
         const SpeedRamp ramp = c.ramp_to(ve);
         const double pc = x0 + ramp.distance_at_m(0.5 * c.merge_duration_s);
         const KappaRange kappa = kappa_range_for(s, pc, x0, x0 + ramp.distance_at_m(c.merge_duration_s), ramp, x0);

@@ -136,8 +136,14 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     const double pc_min = pc_of(iv.lo_mps);
     const double pc_max = std::min(pc_of(v_hi), side_exit_limit_x_m(s));
     if (pc_min > pc_max) { ++n_cross; continue; }
+    // choose_sigmoid asks for each P_c's v_e* once for its kappa range and once per kappa.
+    double memo_pc = std::numeric_limits<double>::quiet_NaN(), memo_v = 0.0;
     const auto v_of_pc = [&](double pc) {
-      return lowest_satisfying([&](double v) { return pc_of(v) - pc; }, iv.lo_mps, v_hi).value_or(v_hi);
+      if (pc != memo_pc) {
+        memo_pc = pc;
+        memo_v = lowest_satisfying([&](double v) { return pc_of(v) - pc; }, iv.lo_mps, v_hi).value_or(v_hi);
+      }
+      return memo_v;
     };
     const double v_e = ctx.ego_speed_mps;
     const double v_traffic = gap_traffic_speed_mps(gap, v_e);
@@ -146,13 +152,13 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       return kappa_range_for(s, pc, ctx.ego_x_m, ctx.ego_x_m + ctx.ramp_to(v).distance_at_m(rho_s), ctx.ramp_to(v),
                              ctx.ego_x_m);
     };
+    std::optional<Track> ft, lt;
+    if (gap.follower) ft = follower_track(*gap.follower, rho_s);
+    if (gap.leader) lt = leader_track(*gap.leader, observed_accel_mps2(w, gap.leader->id));
     const auto cost = [&](double pc, double kappa) {
       const double v = v_of_pc(pc);
       const SpeedRamp ramp = ctx.ramp_to(v);
       const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
-      std::optional<Track> ft, lt;
-      if (gap.follower) ft = follower_track(*gap.follower, rho_s);
-      if (gap.leader) lt = leader_track(*gap.leader, observed_accel_mps2(w, gap.leader->id));
       if (!occupancy_clear(s, ctx.ego_x_m, sig, ramp, rho_s, ft, lt)) return std::numeric_limits<double>::infinity();
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic);

@@ -71,17 +71,24 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, cons
   const double t_lag = s.params.rss.response_time_s;
   const Limits& el = s.ego.limits;
   const double le = s.ego.size.length_m;
-  for (int k = 0; k <= kOccupancySamples; ++k) {
+  // Every instant must be clear, so the order is free: from the middle of the horizon (about P_c
+  // for a merge checked from its decision, where conflicts are likeliest) outward, so that most
+  // rejected candidates are rejected after a few instants.
+  static_assert(kOccupancySamples % 2 == 0, "the outward order below visits 0..kOccupancySamples");
+  constexpr int kMiddle = kOccupancySamples / 2;
+  for (int j = 0; j <= kOccupancySamples; ++j) {
+    const int k = kMiddle + (j % 2 == 1 ? (j + 1) / 2 : -(j / 2));
     const double t = horizon_s * k / kOccupancySamples;
     const double x = ego_x_m + ego.distance_at_m(t);
     const double v = ego.speed_at_mps(t);
-    const double sgm = (sig.y_at_m(x) - sig.offset_m) / sig.width_m;
+    const double y = sig.y_at_m(x);
+    const double sgm = (y - sig.offset_m) / sig.width_m;
     const double lat_speed = v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);
     const double d_lat = rss_lateral_m({0.0, lat_speed, s.ego.size.width_m, s.ego.size.width_m, t_lag,
                                         el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
     // Laterally safe (lane centre Y = 0), with the growing tracking margin.
     const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
-    if (-sig.y_at_m(x) >= d_lat + margin_m) continue;
+    if (-y >= d_lat + margin_m) continue;
     if (follower && x <= sig.pc_m) {
       const double d = rss_longitudinal_m({follower->v_at(t), v, follower->length_m, le, t_lag,
                                            follower->limits.accel_max_mps2, follower->limits.brake_min_mps2,

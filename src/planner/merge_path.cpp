@@ -72,12 +72,11 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, cons
   const Limits& el = s.ego.limits;
   const double le = s.ego.size.length_m;
   // Every instant must be clear, so the order is free: from the middle of the horizon (about P_c
-  // for a merge checked from its decision, where conflicts are likeliest) outward, so that most
-  // rejected candidates are rejected after a few instants.
-  static_assert(kOccupancySamples % 2 == 0, "the outward order below visits 0..kOccupancySamples");
+  // for a merge checked from its decision) back to the start, then on to the end. Rejections
+  // concentrate just before P_c (the follower), so most come after a few instants.
   constexpr int kMiddle = kOccupancySamples / 2;
   for (int j = 0; j <= kOccupancySamples; ++j) {
-    const int k = kMiddle + (j % 2 == 1 ? (j + 1) / 2 : -(j / 2));
+    const int k = j <= kMiddle ? kMiddle - j : j;
     const double t = horizon_s * k / kOccupancySamples;
     const double x = ego_x_m + ego.distance_at_m(t);
     const double v = ego.speed_at_mps(t);

@@ -49,20 +49,13 @@ KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, dou
 }
 
 Track follower_track(const MainLaneVehicle& f, double rho_s) {
-  const double a = f.limits.accel_max_mps2, half = 0.5 * rho_s;
-  return Track{[=](double t) {
-                 const double tau = std::min(t, half);
-                 return f.x_m + f.speed_mps * tau + 0.5 * a * tau * tau + (f.speed_mps + a * tau) * (t - tau);
-               },
-               [=](double t) { return f.speed_mps + a * std::min(t, half); }, f.length_m, f.limits};
+  const double a = f.limits.accel_max_mps2;
+  return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.limits};
 }
 
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
-  if (observed_accel_mps2 >= -kLeaderBrakingMps2)
-    return Track{[=](double t) { return l.x_m + l.speed_mps * t; }, [=](double) { return l.speed_mps; },
-                 l.length_m, l.limits};
-  const SpeedRamp stop{l.speed_mps, 0.0, 1.0, -observed_accel_mps2};
-  return Track{[=](double t) { return l.x_m + stop.distance_at_m(t); }, [=](double t) { return stop.speed_at_mps(t); },
+  const bool braking = observed_accel_mps2 < -kLeaderBrakingMps2;
+  return Track{l.x_m, braking ? SpeedRamp{l.speed_mps, 0.0, 1.0, -observed_accel_mps2} : SpeedRamp{l.speed_mps, l.speed_mps, 1.0, 1.0},
                l.length_m, l.limits};
 }
 

@@ -3,7 +3,6 @@
 // the two agree on what a drivable, comfortable, RSS-clear merge is (docs/planner.md).
 #pragma once
 
-#include <functional>
 #include <optional>
 
 #include "core/scenario.h"
@@ -39,12 +38,14 @@ double kappa_cap_per_m(const Scenario& s);
 KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m);
 
-// A main-lane vehicle's predicted motion during a merge candidate.
+// A main-lane vehicle's predicted motion during a merge candidate: from x0_m, one speed ramp.
 struct Track {
-  std::function<double(double)> x_at;  // position at t after the decision
-  std::function<double(double)> v_at;  // speed at t
+  double x0_m = 0.0;
+  SpeedRamp motion;
   double length_m = 0.0;
   Limits limits;
+  double x_at(double t_s) const { return x0_m + motion.distance_at_m(t_s); }  // t after the decision
+  double v_at(double t_s) const { return motion.speed_at_mps(t_s); }
 };
 
 // The follower accelerates at its a_accel^max until rho/2 and then holds its speed (Def. 1.1).

@@ -258,8 +258,7 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   // The responder follows its cooperative profile; the gap's other vehicle as in Definition 1.
   const double rate = std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9;
   const SpeedRamp responder_ramp{o.speed_mps, vo.vo_star_mps, rate, rate};
-  const Track responder{[=](double t) { return o.x_m + responder_ramp.distance_at_m(t); },
-                        [=](double t) { return responder_ramp.speed_at_mps(t); }, o.length_m, o.limits};
+  const Track responder{o.x_m, responder_ramp, o.length_m, o.limits};
   std::optional<Track> ft, lt;
   if (k == CoopCase::kEgoAhead) {
     ft = responder;

@@ -51,13 +51,16 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
       const auto ve_at = [&](int i) { return c.speed_limit_mps * i / kProgressSpeedSamples; };
       // Ineq. (1.1)'s margin grows with v_e* and (1.2)'s falls (definition1.h), so the samples
       // that satisfy both are one run [first, end): found by bisection over the sample indices.
-      const auto samples = std::views::iota(0, kProgressSpeedSamples + 1);
-      const int first = gap.follower ? *std::ranges::partition_point(samples, [&](int i) {
-        return def1_1_margin_m(c, *gap.follower, ve_at(i)) < margin;
-      }) : 0;
-      const int end = gap.leader ? *std::ranges::partition_point(samples, [&](int i) {
-        return def1_2_margin_m(c, *gap.leader, ve_at(i)) >= margin;
-      }) : kProgressSpeedSamples + 1;
+      // Most gaps fail one inequality at every speed: the end of the run that would satisfy it
+      // is tried first.
+      const int n = kProgressSpeedSamples + 1;
+      const auto fails_11 = [&](int i) { return def1_1_margin_m(c, *gap.follower, ve_at(i)) < margin; };
+      const auto holds_12 = [&](int i) { return def1_2_margin_m(c, *gap.leader, ve_at(i)) >= margin; };
+      const int first = !gap.follower ? 0 : fails_11(n - 1) ? n
+                                          : *std::ranges::partition_point(std::views::iota(0, n - 1), fails_11);
+      if (first == n) continue;
+      const int end = !gap.leader ? n : !holds_12(first) ? first
+                                        : *std::ranges::partition_point(std::views::iota(first + 1, n), holds_12);
       for (int i = first; i < end; ++i) {
         const double ve = ve_at(i);
         const SpeedRamp ramp = c.ramp_to(ve);

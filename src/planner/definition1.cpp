@@ -27,13 +27,11 @@ double SpeedRamp::distance_at_m(double t_s) const {
   return 0.5 * (v0_mps + v_target_mps) * ramp_s + v_target_mps * (t_s - ramp_s);
 }
 
-double SpeedRamp::speed_at_distance_mps(double distance_m) const {
-  const double dv = v_target_mps - v0_mps;
-  if (dv == 0.0) return v0_mps;
-  const double rate = dv >= 0.0 ? accel_mps2 : -brake_mps2;
-  const double ramp_distance_m = (v_target_mps * v_target_mps - v0_mps * v0_mps) / (2.0 * rate);
-  if (!(distance_m < ramp_distance_m)) return v_target_mps;
-  return std::sqrt(std::max(0.0, v0_mps * v0_mps + 2.0 * rate * distance_m));
+double SpeedRamp::speed_squared_at_distance_m2ps2(double distance_m) const {
+  const double v_sq = v0_mps * v0_mps;
+  const double target_sq = v_target_mps * v_target_mps;
+  if (v_target_mps >= v0_mps) return std::min(target_sq, v_sq + 2.0 * accel_mps2 * distance_m);
+  return std::max(target_sq, v_sq - 2.0 * brake_mps2 * distance_m);
 }
 
 SpeedRamp Def1Context::ramp_to(double ve_star_mps) const {

@@ -23,8 +23,9 @@ struct SpeedRamp {
   double brake_mps2 = 0.0;   // > 0
   double speed_at_mps(double t_s) const;
   double distance_at_m(double t_s) const;  // non-decreasing in v_target_mps for every t_s >= 0
-  // Speed once the ramp has covered distance_m (closed form: v^2 = v0^2 +- 2 rate d while ramping).
-  double speed_at_distance_mps(double distance_m) const;
+  // Squared speed once the ramp has covered distance_m (closed form: v^2 = v0^2 +- 2 rate d while
+  // ramping, then v_target^2).
+  double speed_squared_at_distance_m2ps2(double distance_m) const;
 };
 
 // A main-lane vehicle as Definition 1 sees it (its declared limits and current state).

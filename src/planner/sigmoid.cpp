@@ -65,8 +65,7 @@ double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, doub
     const double x = sig.pc_m + kPeakTable.u[i] / sig.kappa_per_m;
     const double sgm = kPeakTable.sgm[i];
     const double ypp = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * sgm * (1.0 - sgm) * std::abs(1.0 - 2.0 * sgm);
-    const double v = ramp.speed_at_distance_mps(std::max(0.0, x - ramp_origin_x_m));
-    peak = std::max(peak, v * v * ypp);
+    peak = std::max(peak, ramp.speed_squared_at_distance_m2ps2(std::max(0.0, x - ramp_origin_x_m)) * ypp);
   }
   return peak;
 }

@@ -109,12 +109,15 @@ TEST(SpeedRamp, ReachesTargetThenHolds) {
   EXPECT_DOUBLE_EQ(up.distance_at_m(5), 75);
   EXPECT_DOUBLE_EQ(up.distance_at_m(6), 95);
   EXPECT_DOUBLE_EQ(up.speed_at_mps(2), 14);
-  EXPECT_DOUBLE_EQ(up.speed_at_distance_mps(75), 20);
+  EXPECT_DOUBLE_EQ(up.speed_squared_at_distance_m2ps2(75), 400);
+  EXPECT_DOUBLE_EQ(up.speed_squared_at_distance_m2ps2(40), 100 + 2 * 2 * 40);
+  EXPECT_DOUBLE_EQ(up.speed_squared_at_distance_m2ps2(500), 400);
   // 20 -> 0 at 4 m/s2: stops after 5 s and 50 m, then stays.
   const SpeedRamp down{20, 0, 2, 4};
   EXPECT_DOUBLE_EQ(down.distance_at_m(5), 50);
   EXPECT_DOUBLE_EQ(down.distance_at_m(9), 50);
-  EXPECT_NEAR(down.speed_at_distance_mps(32), std::sqrt(400 - 2 * 4 * 32), 1e-12);
+  EXPECT_DOUBLE_EQ(down.speed_squared_at_distance_m2ps2(32), 400 - 2 * 4 * 32);
+  EXPECT_DOUBLE_EQ(down.speed_squared_at_distance_m2ps2(80), 0);
 }
 
 TEST(EnumerateGaps, OpenGapsAtBothEndsSortedByPosition) {

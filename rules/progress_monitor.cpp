@@ -45,9 +45,8 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
     for (const double factor : kProgressMergeDurationFactors) {
       const Def1Context c{x0, std::max(speed_of(step.ego), 0.0), s.ego.size.length_m, s.ego.limits,
                           s.params.rss.response_time_s, factor * rho_base, s.road.speed_limit_mps};
-      std::optional<Track> follower, leader;
-      if (gap.follower) follower = follower_track(*gap.follower, c.merge_duration_s);
-      if (gap.leader) leader = leader_track(*gap.leader, 0.0);
+      // The gap's leader is not braking (above); the vehicles ahead of it as seen.
+      const GapTracks tracks = gap_tracks(lane, gap, c.merge_duration_s, [&](int id) { return accel_mps2[id]; });
       const auto ve_at = [&](int i) { return c.speed_limit_mps * i / kProgressSpeedSamples; };
       // Ineq. (1.1)'s margin grows with v_e* and (1.2)'s falls (definition1.h), so the samples
       // that satisfy both are one run [first, end): found by bisection over the sample indices.
@@ -69,7 +68,7 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
         if (!kappa) continue;
         if (pc + exit_after_pc_times_kappa / kappa->second > side_exit_limit_x_m(s) - margin) continue;
         const Sigmoid path{w, kappa->second, pc, -w};
-        if (!occupancy_clear(s, x0, path, ramp, c.merge_duration_s, follower, leader)) continue;
+        if (!occupancy_clear(s, x0, step.ego.y_m, path, ramp, c.merge_duration_s, tracks)) continue;
         return FeasibleMerge{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1,
                              c.merge_duration_s, ve};
       }

@@ -18,6 +18,8 @@ struct Episode {
   int breach = kNobody;
   double response_speed_mps = 0.0;  // lateral: ego speed toward the other at t_b + T
   bool response_speed_set = false;
+  std::size_t rear = 0;       // longitudinal: the pair's rear vehicle (trace index) ...
+  double rear_since_s = 0.0;  // ... and since when: side by side, the order can flip mid-episode
 };
 
 std::size_t pair_count(std::size_t n) { return n * (n - 1) / 2; }
@@ -64,7 +66,19 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
         if (g.lat_unsafe()) acc.record(k, st.time_s, g.gap_m - g.d_lon_m, kNobody, g.d_lon_m, g.gap_m);
         return;
       }
-      if (!e.active) e = Episode{true, st.time_s, was_lon_only && (i == 0 || j == 0), kNobody, 0.0, false};
+      if (!e.active) {
+        // A cut-in: the lateral distance became unsafe last, with the ego moving toward the other
+        // vehicle. An ego that only stops moving away (D_lat grows as its speed away falls to 0)
+        // did not enter: it is where it was, e.g. off-centre in the side lane (docs/rules.md).
+        const bool ego_in_pair = i == 0 || j == 0;
+        const double ego_toward_mps = g.right == 0 ? st.ego.road_vy_mps() : -st.ego.road_vy_mps();
+        e = Episode{true, st.time_s, was_lon_only && ego_in_pair && ego_toward_mps > 0.0, kNobody, 0.0, false,
+                    g.rear, st.time_s};
+      }
+      if (g.rear != e.rear) {
+        e.rear = g.rear;
+        e.rear_since_s = st.time_s;
+      }
       const VehicleState& rear = state_of(st, g.rear);
       std::string why;
       if (e.breach == kNobody) {
@@ -86,13 +100,15 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
           e.breach = kEgoId;
           why = "ego entered the lane of " + describe(s, i == 0 ? j : i) +
                 " at an unsafe longitudinal distance without the right of way";
-        } else if (st.time_s >= e.blame_time_s + T - 1e-9 && speed_of(rear) > stop_speed[g.rear] &&
+        } else if (st.time_s >= std::max(e.blame_time_s, e.rear_since_s) + T - 1e-9 &&
+                   speed_of(rear) > stop_speed[g.rear] &&
                    rear.accel_mps2 > -(limits_of(s, g.rear).brake_min_mps2 - tol)) {
           e.breach = party_of(s, g.rear);
           std::ostringstream os;
           os << describe(s, g.rear) << " did not brake at least b_min "
              << limits_of(s, g.rear).brake_min_mps2 << " m/s2 (applied " << rear.accel_mps2
              << " m/s2) " << T << " s after the situation became dangerous at t = " << e.blame_time_s << " s";
+          if (e.rear_since_s > e.blame_time_s) os << " (the rear vehicle since t = " << e.rear_since_s << " s)";
           why = os.str();
         }
       }

@@ -83,9 +83,7 @@ double def1_2_margin_m(const Def1Context& c, const MainLaneVehicle& leader, doub
 }
 
 std::vector<LaneGap> enumerate_gaps(std::vector<MainLaneVehicle> lane_vehicles) {
-  std::sort(lane_vehicles.begin(), lane_vehicles.end(), [](const MainLaneVehicle& a, const MainLaneVehicle& b) {
-    return a.x_m != b.x_m ? a.x_m < b.x_m : a.id < b.id;
-  });
+  std::sort(lane_vehicles.begin(), lane_vehicles.end(), lane_order_before);
   std::vector<LaneGap> gaps;
   std::optional<MainLaneVehicle> follower;
   for (const MainLaneVehicle& v : lane_vehicles) {

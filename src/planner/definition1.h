@@ -69,6 +69,10 @@ struct LaneGap {
   std::optional<MainLaneVehicle> follower;
   std::optional<MainLaneVehicle> leader;
 };
+// The lane order of enumerate_gaps: by position, then id.
+inline bool lane_order_before(const MainLaneVehicle& a, const MainLaneVehicle& b) {
+  return a.x_m != b.x_m ? a.x_m < b.x_m : a.id < b.id;
+}
 // `lane_vehicles` in any order; returns gaps from the rearmost to the frontmost.
 std::vector<LaneGap> enumerate_gaps(std::vector<MainLaneVehicle> lane_vehicles);
 

@@ -59,8 +59,20 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
                l.length_m, l.limits};
 }
 
-bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, const SpeedRamp& ego, double horizon_s,
-                     const std::optional<Track>& follower, const std::optional<Track>& leader) {
+GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
+                     const std::function<double(int)>& observed_accel_mps2) {
+  GapTracks tracks;
+  for (const MainLaneVehicle& v : lane) {
+    if (gap.follower && !lane_order_before(*gap.follower, v))
+      tracks.followers.push_back(follower_track(v, follower_window_s));
+    if (gap.leader && !lane_order_before(v, *gap.leader))
+      tracks.leaders.push_back(leader_track(v, observed_accel_mps2(v.id)));
+  }
+  return tracks;
+}
+
+bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
+                     double horizon_s, const GapTracks& tracks) {
   const double t_lag = s.params.rss.response_time_s;
   const Limits& el = s.ego.limits;
   const double le = s.ego.size.length_m;
@@ -73,24 +85,27 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, cons
     const double t = horizon_s * k / kOccupancySamples;
     const double x = ego_x_m + ego.distance_at_m(t);
     const double v = ego.speed_at_mps(t);
-    const double y = sig.y_at_m(x);
-    const double sgm = (y - sig.offset_m) / sig.width_m;
+    const double y_path = sig.y_at_m(x);
+    const double sgm = (y_path - sig.offset_m) / sig.width_m;
+    // An ego nearer the lane than the path's start is not assumed to have reached the path yet.
+    const double y = std::max(y_path, ego_y_m);
     const double lat_speed = v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);
     const double d_lat = rss_lateral_m({0.0, lat_speed, s.ego.size.width_m, s.ego.size.width_m, t_lag,
                                         el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
     // Laterally safe (lane centre Y = 0), with the growing tracking margin.
     const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
     if (-y >= d_lat + margin_m) continue;
-    if (follower && x <= sig.pc_m) {
-      const double d = rss_longitudinal_m({follower->v_at(t), v, follower->length_m, le, t_lag,
-                                           follower->limits.accel_max_mps2, follower->limits.brake_min_mps2,
-                                           el.brake_max_mps2});
-      if (x - d < follower->x_at(t)) return false;
+    if (x <= sig.pc_m) {
+      for (const Track& f : tracks.followers) {
+        const double d = rss_longitudinal_m({f.v_at(t), v, f.length_m, le, t_lag, f.limits.accel_max_mps2,
+                                             f.limits.brake_min_mps2, el.brake_max_mps2});
+        if (x - d < f.x_at(t)) return false;
+      }
     }
-    if (leader) {
-      const double d = rss_longitudinal_m({v, leader->v_at(t), le, leader->length_m, t_lag, el.accel_max_mps2,
-                                           el.brake_min_mps2, leader->limits.brake_max_mps2});
-      if (x + d > leader->x_at(t)) return false;
+    for (const Track& l : tracks.leaders) {
+      const double d = rss_longitudinal_m({v, l.v_at(t), le, l.length_m, t_lag, el.accel_max_mps2, el.brake_min_mps2,
+                                           l.limits.brake_max_mps2});
+      if (x + d > l.x_at(t)) return false;
     }
   }
   return true;

@@ -3,7 +3,9 @@
 // the two agree on what a drivable, comfortable, RSS-clear merge is (docs/planner.md).
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <vector>
 
 #include "core/scenario.h"
 #include "planner/definition1.h"
@@ -57,12 +59,27 @@ Track follower_track(const MainLaneVehicle& f, double rho_s);
 inline constexpr double kLeaderBrakingMps2 = 0.5;
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2);
 
+// The vehicles a merge into a gap is checked against: the gap's follower and every target-lane
+// vehicle behind it (followers, follower_track over follower_window_s), its leader and every
+// vehicle ahead of it (leaders, leader_track with each one's observed acceleration). Vehicles of
+// one lane cannot pass each other, but their separate predictions can: a fast leader predicted
+// at constant speed "passes" a slower vehicle ahead of it, and the ego, merging behind the leader,
+// would merge onto that vehicle. So the ego must be clear of each of them (docs/planner.md).
+struct GapTracks {
+  std::vector<Track> followers;
+  std::vector<Track> leaders;
+};
+GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
+                     const std::function<double(int)>& observed_accel_mps2);
+
 // Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
 // rho, docs/planner.md): at every one of kOccupancySamples instants of [0, horizon_s] at which the
 // ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
 // lateral speed on the path) plus a tracking margin, it must also be at least D_lon (RCPP eq. 1)
-// behind the leader and, until it reaches P_c, ahead of the follower: the merge never creates an
-// RSS-dangerous situation with a gap vehicle. Past P_c the ego is in the lane with the right of
+// behind every leader and, until it reaches P_c, ahead of every follower: the merge never creates
+// an RSS-dangerous situation with a lane vehicle. The ego starts at ego_y_m, which may be nearer
+// the lane than the sigmoid's start (an ego off its lane centre): until the path passes that
+// offset, the ego is taken to stay there (it converges to the path, away from the lane). Past P_c the ego is in the lane with the right of
 // way, and keeping D_lon behind it is the follower's duty as the rear vehicle (RSS Def. 1; DESIGN
 // §8), not something the ego's path must foresee for a follower that keeps the speed Def. 1.1
 // allows it to gain. The tracking margin, kOccupancyLateralMarginM, grows with the lateral
@@ -70,7 +87,7 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2);
 inline constexpr int kOccupancySamples = 40;
 inline constexpr double kOccupancyLateralMarginM = 0.75;
 inline constexpr double kOccupancyFullMarginFraction = 0.1;  // full margin from 10 % of W on
-bool occupancy_clear(const Scenario& s, double ego_x_m, const Sigmoid& sig, const SpeedRamp& ego, double horizon_s,
-                     const std::optional<Track>& follower, const std::optional<Track>& leader);
+bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
+                     double horizon_s, const GapTracks& tracks);
 
 }  // namespace mg

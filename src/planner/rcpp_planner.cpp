@@ -113,7 +113,9 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
   std::optional<Def1Plan> best;
   double best_cost = std::numeric_limits<double>::infinity();
   int n_def1 = 0, n_cross = 0, n_sigmoid = 0;
-  for (const LaneGap& gap : enumerate_gaps(target_lane_vehicles(w))) {
+  const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
+  const auto accel_of = [&](int id) { return observed_accel_mps2(w, id); };
+  for (const LaneGap& gap : enumerate_gaps(lane)) {
     const Gap gid{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1};
     const SpeedInterval iv = solve_def1_interval(ctx, gap);
     if (!iv.feasible) { ++n_def1; continue; }
@@ -152,14 +154,12 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       return kappa_range_for(s, pc, ctx.ego_x_m, ctx.ego_x_m + ctx.ramp_to(v).distance_at_m(rho_s), ctx.ramp_to(v),
                              ctx.ego_x_m);
     };
-    std::optional<Track> ft, lt;
-    if (gap.follower) ft = follower_track(*gap.follower, rho_s);
-    if (gap.leader) lt = leader_track(*gap.leader, observed_accel_mps2(w, gap.leader->id));
+    const GapTracks tracks = gap_tracks(lane, gap, rho_s, accel_of);
     const auto cost = [&](double pc, double kappa) {
       const double v = v_of_pc(pc);
       const SpeedRamp ramp = ctx.ramp_to(v);
       const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
-      if (!occupancy_clear(s, ctx.ego_x_m, sig, ramp, rho_s, ft, lt)) return std::numeric_limits<double>::infinity();
+      if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, rho_s, tracks)) return std::numeric_limits<double>::infinity();
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic);
       return def1_cost + field_cost(w, sig, rho_s, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); },
@@ -259,20 +259,20 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   const double rate = std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9;
   const SpeedRamp responder_ramp{o.speed_mps, vo.vo_star_mps, rate, rate};
   const Track responder{o.x_m, responder_ramp, o.length_m, o.limits};
-  std::optional<Track> ft, lt;
+  GapTracks tracks;
   if (k == CoopCase::kEgoAhead) {
-    ft = responder;
-    if (const auto l = neighbour(lane, i, +1)) lt = leader_track(*l, observed_accel_mps2(w, l->id));
+    tracks.followers.push_back(responder);
+    if (const auto l = neighbour(lane, i, +1)) tracks.leaders.push_back(leader_track(*l, observed_accel_mps2(w, l->id)));
   } else {
-    lt = responder;
-    if (const auto f = neighbour(lane, i, -1)) ft = follower_track(*f, 2.0 * t_c);
+    tracks.leaders.push_back(responder);
+    if (const auto f = neighbour(lane, i, -1)) tracks.followers.push_back(follower_track(*f, 2.0 * t_c));
   }
   const auto partner_x = [&](const ObservedVehicle& v, double t) {
     return v.id == o.id ? o.x_m + responder_ramp.distance_at_m(t) : constant_speed_x(v, t);
   };
   const auto cost = [&](double pc_m, double kappa) {
     const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
-    if (!occupancy_clear(s, c.ego_x_m, sig, ramp, c.comm_threshold_s + c.merge_duration_s, ft, lt))
+    if (!occupancy_clear(s, c.ego_x_m, w.ego.y_m, sig, ramp, c.comm_threshold_s + c.merge_duration_s, tracks))
       return std::numeric_limits<double>::infinity();
     return base + field_cost(w, sig, 2.0 * t_c, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); }, partner_x);
   };
@@ -455,17 +455,20 @@ bool RcppPlanner::committed_occupancy_clear(const WorldSnapshot& w) const {
           .value_or(kMaxMergeHorizonS);
   // The follower may still accelerate for what is left of its Def. 1.1 window (rho/2 from T_dec).
   const double follower_window_s = std::max(0.0, d.merge_duration_s - 2.0 * (w.time_s - d.time_s));
-  std::optional<Track> ft, lt, ahead;
-  for (const ObservedVehicle& ov : w.others) {
-    if (ov.id == d.gap->follower_id) ft = follower_track(to_lane_vehicle(ov), follower_window_s);
-    if (ov.id == d.gap->leader_id) lt = leader_track(to_lane_vehicle(ov), ov.state.accel_mps2);
+  const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
+  LaneGap gap;
+  for (const MainLaneVehicle& v : lane) {
+    if (v.id == d.gap->follower_id) gap.follower = v;
+    if (v.id == d.gap->leader_id) gap.leader = v;
   }
-  // The vehicle now nearest ahead in the target lane, when it is not the gap's leader (the
-  // leader left the gap, e.g. a non-compliant one that drove on): the ego must keep D_lon to it too.
-  if (const auto next = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m); next && next->id != d.gap->leader_id)
-    ahead = leader_track(*next, observed_accel_mps2(w, next->id));
-  return occupancy_clear(s, w.ego.x_m, merge_->sigmoid, ramp, horizon_s, ft, lt) &&
-         (!ahead || occupancy_clear(s, w.ego.x_m, merge_->sigmoid, ramp, horizon_s, std::nullopt, ahead));
+  GapTracks tracks = gap_tracks(lane, gap, follower_window_s, [&](int id) { return observed_accel_mps2(w, id); });
+  // The vehicle now nearest ahead in the target lane, when it is not the gap's leader or ahead of
+  // it (the leader left the gap, e.g. a non-compliant one that drove on, or the follower overtook
+  // the ego): the ego must keep D_lon to it too.
+  if (const auto next = leader_ahead_of(lane, w.ego.x_m);
+      next && (!gap.leader || lane_order_before(*next, *gap.leader)))
+    tracks.leaders.push_back(leader_track(*next, observed_accel_mps2(w, next->id)));
+  return occupancy_clear(s, w.ego.x_m, w.ego.y_m, merge_->sigmoid, ramp, horizon_s, tracks);
 }
 
 double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "trace_builder.h"
 
 namespace mg {
@@ -64,6 +66,71 @@ TEST(RssLongitudinalMonitor, FrontBrakingBeyondBmaxIsLiable) {
   const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 3.0, {0.0, 0.0, -9.0}));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, 2);
+}
+
+// Vehicle 1 (lane centre, Y = 0) drives 5 m behind the ego at its speed: longitudinally unsafe
+// (D_lon 45.175 m). The ego, off-centre at Y = -2.03, is laterally unsafe at rest (D_lat 2.0625 m)
+// but safe while it moves away at 0.5 m/s (D_lat = 0.1 + 1.9 + [0.03125 - 0.225]_+ = 2.0 m).
+// At t = 0.3 s its lateral speed becomes `then_mps`: 0 (it stops moving away) or +0.1 (toward).
+Trace stop_moving_away_trace(const Scenario& s, double then_mps) {
+  Trace t = constant_accel_trace(s, 2.0);
+  for (auto& st : t.steps) st.ego.vy_mps = st.time_s < 0.3 - 1e-9 ? -0.5 : then_mps;
+  return t;
+}
+
+Scenario off_centre_beside_rear_vehicle() {
+  Scenario s = base_scenario();
+  s.ego.y_m = -2.03;
+  s.vehicles = {vehicle(1, -5.0, 20.0)};
+  return s;
+}
+
+TEST(RssLongitudinalMonitor, AnEgoThatStopsMovingAwayHasNotCutIn) {
+  // Dangerous from t_b = 0.3 s without a cut-in: the rear vehicle 1 owes b_min from 0.8 s.
+  const Scenario s = off_centre_beside_rear_vehicle();
+  const MonitorOutput out = test::run(monitor_rss_longitudinal, s, stop_moving_away_trace(s, 0.0));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 0.8, 1e-9);
+}
+
+TEST(RssLongitudinalMonitor, AnEgoMovingTowardALongitudinallyUnsafeVehicleCutsIn) {
+  const Scenario s = off_centre_beside_rear_vehicle();
+  const MonitorOutput out = test::run(monitor_rss_longitudinal, s, stop_moving_away_trace(s, 0.1));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 0.3, 1e-9);
+}
+
+// Vehicle 1 (30 m/s) passes the ego (20 m/s, Y = -2.0: laterally unsafe at rest) from 3 m behind:
+// dangerous from t = 0, vehicle 1 is the rear vehicle until it draws level at t = 0.3 s, then the
+// ego is. The ego's obligation to brake starts T = 0.5 s after it became the rear vehicle, at
+// t = 0.8 s, not at t_b + T = 0.5 s.
+Scenario overtaken_beside() {
+  Scenario s = base_scenario();
+  s.ego.y_m = -2.0;
+  s.vehicles = {vehicle(1, -3.0, 30.0)};
+  return s;
+}
+
+Trace ego_brakes_from(const Scenario& s, double from_s) {
+  Trace t = constant_accel_trace(s, 1.5);
+  for (auto& st : t.steps) {
+    const double b = std::max(0.0, st.time_s - from_s);
+    st.ego.accel_mps2 = st.time_s >= from_s - 1e-9 ? -4.0 : 0.0;
+    st.ego.vx_mps = 20.0 - 4.0 * b;
+    st.ego.x_m = 20.0 * st.time_s - 2.0 * b * b;
+  }
+  return t;
+}
+
+TEST(RssLongitudinalMonitor, AVehicleThatBecomesTheRearMidEpisodeHasItsOwnResponseTime) {
+  const Scenario s = overtaken_beside();
+  EXPECT_TRUE(test::run(monitor_rss_longitudinal, s, ego_brakes_from(s, 0.6)).result.holds);
+  const MonitorOutput late = test::run(monitor_rss_longitudinal, s, ego_brakes_from(s, 1.0));
+  ASSERT_FALSE(late.result.holds);
+  EXPECT_EQ(late.result.liable_id, kEgoId);
+  EXPECT_NEAR(*late.result.first_violation_time_s, 0.8, 0.021);
 }
 
 // The ego moves left at 1 m/s beside vehicle 1 (same X: longitudinally unsafe). With the ego

@@ -1,0 +1,76 @@
+#include "planner/merge_path.h"
+
+#include <gtest/gtest.h>
+
+namespace mg {
+namespace {
+
+// Defaults: W = 3.5 m, T = 0.5 s, widths 1.9 m, lengths 4.8 m, a_acc 2, b_min 4, b_max 8 m/s2.
+// At rest D_lat = 0.1 + 1.9 + 2 (0.2 0.5^2 / 2 + 0.1^2 / 1.6) = 2.0625 m.
+Scenario road_only() {
+  Scenario s;
+  s.ego.x_m = 0.0;
+  s.ego.y_m = -s.road.lane_width_m;
+  return s;
+}
+
+MainLaneVehicle lane_vehicle(int id, double x_m, double speed_mps) {
+  return MainLaneVehicle{id, x_m, speed_mps, 4.8, Limits{}};
+}
+
+double no_accel(int) { return 0.0; }
+
+// The ego merges at a constant 20 m/s with P_c at X = 60 m (t = 3 s) on a sharp sigmoid
+// (kappa 0.3/m: within D_lat of the lane centre only for |X - P_c| < ~15 m, t in [2.25, 3.75] s).
+//
+//   t = 3 s:   ego (P_c) 60 m    slow vehicle 2: 5 + 20*3 = 65 m    fast vehicle 1: -10 + 40*3 = 110 m
+//
+// Vehicle 1 is the gap's leader, predicted at 40 m/s: alone it leaves the ego room at P_c. But it
+// starts behind vehicle 2 (20 m/s) in the same lane, so its prediction "passes" vehicle 2, and the
+// ego would merge 5 m behind vehicle 2, far inside D_lon (45.2 m at 20 m/s behind 20 m/s).
+TEST(OccupancyClear, AMergeBehindALeaderIsCheckedAgainstTheVehiclesAheadOfIt) {
+  const Scenario s = road_only();
+  const std::vector<MainLaneVehicle> lane = {lane_vehicle(1, -10.0, 40.0), lane_vehicle(2, 5.0, 20.0)};
+  const LaneGap gap{std::nullopt, lane[0]};
+  const Sigmoid path{3.5, 0.3, 60.0, -3.5};
+  const SpeedRamp ego{20.0, 20.0, 2.0, 4.0};
+
+  const GapTracks tracks = gap_tracks(lane, gap, 6.0, no_accel);
+  ASSERT_EQ(tracks.leaders.size(), 2u);
+  EXPECT_TRUE(tracks.followers.empty());
+  const GapTracks leader_only{{}, {tracks.leaders[0]}};
+  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, 6.0, leader_only));
+  EXPECT_FALSE(occupancy_clear(s, 0.0, -3.5, path, ego, 6.0, tracks));
+}
+
+TEST(OccupancyClear, GapTracksSplitTheLaneAtTheGap) {
+  // Lane order (position, then id): 3 at -50, 1 at 0, 4 at 0, 2 at 40. Gap (follower 1, leader 4).
+  const std::vector<MainLaneVehicle> lane = {lane_vehicle(2, 40.0, 20.0), lane_vehicle(1, 0.0, 20.0),
+                                             lane_vehicle(4, 0.0, 20.0), lane_vehicle(3, -50.0, 20.0)};
+  const GapTracks t = gap_tracks(lane, LaneGap{lane[1], lane[2]}, 4.0, no_accel);
+  ASSERT_EQ(t.followers.size(), 2u);  // 1 and 3
+  ASSERT_EQ(t.leaders.size(), 2u);    // 4 and 2
+  EXPECT_DOUBLE_EQ(t.followers[0].x0_m + t.followers[1].x0_m, -50.0);
+  EXPECT_DOUBLE_EQ(t.leaders[0].x0_m + t.leaders[1].x0_m, 40.0);
+  // Followers accelerate at a_max for rho/2 = 2 s, then hold: 20 -> 24 m/s.
+  EXPECT_DOUBLE_EQ(t.followers[0].v_at(1.0), 22.0);
+  EXPECT_DOUBLE_EQ(t.followers[0].v_at(5.0), 24.0);
+}
+
+// The ego stands at X = 0 with a vehicle passing it at 30 m/s from X = -10 (the gap's leader: the
+// ego merges behind it). The path starts on the side lane's centre (Y = -3.5, 3.5 m from the
+// lane centre > D_lat), so at t = 0 the ego on its path is laterally safe and the vehicle behind
+// it does not matter. An ego that is really at Y = -1.9 (1.9 m < D_lat) is not on its path yet:
+// at t = 0 it is laterally unsafe with a vehicle 10 m behind, not D_lon ahead of it.
+TEST(OccupancyClear, AnEgoNearerTheLaneThanThePathStartIsCheckedWhereItIs) {
+  const Scenario s = road_only();
+  const std::vector<MainLaneVehicle> lane = {lane_vehicle(1, -10.0, 30.0)};
+  const GapTracks tracks = gap_tracks(lane, LaneGap{std::nullopt, lane[0]}, 6.0, no_accel);
+  const Sigmoid path{3.5, 0.3, 30.0, -3.5};
+  const SpeedRamp ego{5.0, 5.0, 2.0, 4.0};
+  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, 6.0, tracks));
+  EXPECT_FALSE(occupancy_clear(s, 0.0, -1.9, path, ego, 6.0, tracks));
+}
+
+}  // namespace
+}  // namespace mg

@@ -30,7 +30,7 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
     const MainVehicle& m = s.vehicles[k - 1];
     if (m.lane != 0) continue;
     const VehicleState& o = state_of(step, k);
-    lane.push_back(MainLaneVehicle{m.id, o.x_m, std::max(speed_of(o), 0.0), m.size.length_m, m.limits});
+    lane.push_back(MainLaneVehicle{m.id, o.x_m, std::max(speed_of(o), 0.0), m.size.length_m, m.size.width_m, m.limits});
     accel_mps2[m.id] = o.accel_mps2;
   }
   const double w = s.road.lane_width_m;

@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "planner/definition1.h"
 #include "rules/monitor.h"
 
 namespace mg {
@@ -12,8 +13,8 @@ namespace mg {
 // Merge durations the rule considers, as multiples of max(rho_m, the shortest comfortable merge):
 // a slow or halted ego needs a longer merge to cover a drivable lane change.
 inline constexpr double kProgressMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
-// v_e* candidates, evenly over [0, speed limit].
-inline constexpr int kProgressSpeedSamples = 48;
+// v_e* candidates, evenly over [0, speed limit]: the planner's shared grid.
+inline constexpr int kProgressSpeedSamples = kDef1SpeedGridSteps;
 
 // Whether some gap of the rightmost main lane admits a Definition 1 merge from the ego's state
 // at `step`: for one of the merge durations, a v_e* in [0, speed limit] satisfies ineq. (1) and

@@ -132,6 +132,13 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
     for (std::size_t j = 1; j < n; ++j) {
       const PairGeometry& g = ctx.pairs.at(k, PairTable::index(n, 0, j));
       Episode& e = episodes[j - 1];
+      // With the ego's centre in the other vehicle's lane the pair is a same-lane pair: its
+      // distance is rss_longitudinal's (a cut-in is judged there), and the ego centring itself in
+      // its lane is not a lateral approach.
+      if (std::abs(g.dy_m) < 0.5 * s.road.lane_width_m) {
+        e.active = false;
+        continue;
+      }
       if (!g.lon_unsafe() || !g.lat_unsafe()) {
         e.active = false;
         if (g.lon_unsafe()) acc.record(k, st.time_s, g.dy_m - g.d_lat_m, kNobody, g.d_lat_m, g.dy_m);

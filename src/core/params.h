@@ -23,7 +23,7 @@ struct PlannerParams {
   double lat_accel_comfort_mps2 = 1.5; // bound on the sigmoid's peak lateral acceleration, (0, 10]
   double kappa_min_per_m = 0.05;       // smallest sigmoid slope considered, (0, kappa_max]
   double kappa_max_per_m = 1.0;        // largest sigmoid slope considered, [kappa_min, 10]
-  int pc_candidates = 15;              // P_c samples scored by the potential field, [1, 200]
+  int pc_candidates = 15;              // v_e* (hence P_c) samples scored by the field, [1, 200]
   int kappa_candidates = 8;            // kappa samples scored by the potential field, [1, 200]
   // Potential field coefficients (RCPP eq. 3-5).
   double pf_road_beta = 0.5;           // beta, road-mark repulsion, [0, 1e6]

@@ -34,6 +34,7 @@ struct MainLaneVehicle {
   double x_m = 0.0;
   double speed_mps = 0.0;
   double length_m = 0.0;
+  double width_m = 0.0;
   Limits limits;
 };
 
@@ -86,6 +87,10 @@ struct SpeedInterval {
 // upper bound; each is found by bisection on its monotone margin to kSpeedTolerance, with the
 // returned ends on the feasible side (so both margins are >= 0 at lo and hi).
 inline constexpr double kSpeedToleranceMps = 1e-7;
+
+// The v_e* grid the planner's search and the progress rule share: speed limit / 48 apart, so that
+// every merge the rule can find, the planner's search tries too (docs/planner.md).
+inline constexpr int kDef1SpeedGridSteps = 48;
 SpeedInterval solve_def1_interval(const Def1Context& c, const LaneGap& gap);
 
 // Generic helpers for the monotone bisections used by Definitions 1 and 2: the smallest

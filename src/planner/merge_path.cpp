@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/rss.h"
 
@@ -50,13 +51,13 @@ KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, dou
 
 Track follower_track(const MainLaneVehicle& f, double rho_s) {
   const double a = f.limits.accel_max_mps2;
-  return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.limits};
+  return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.width_m, f.limits};
 }
 
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
   const bool braking = observed_accel_mps2 < -kLeaderBrakingMps2;
   return Track{l.x_m, braking ? SpeedRamp{l.speed_mps, 0.0, 1.0, -observed_accel_mps2} : SpeedRamp{l.speed_mps, l.speed_mps, 1.0, 1.0},
-               l.length_m, l.limits};
+               l.length_m, l.width_m, l.limits};
 }
 
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
@@ -71,17 +72,61 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
   return tracks;
 }
 
-bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
-                     double horizon_s, const GapTracks& tracks) {
+namespace {
+
+// The ego at x_m with speed v_mps, t_s after the decision, is D_lon (RCPP eq. 1) ahead of every
+// follower (until P_c) and behind every leader it is laterally close to: lateral_room_m is its
+// lateral distance beyond D_lat for a lane vehicle as wide as the ego; a wider one needs half the
+// difference more (eq. 2 grows with the width sum).
+bool longitudinally_clear(const Scenario& s, double t_s, double x_m, double v_mps, double pc_m,
+                          const GapTracks& tracks, double lateral_room_m) {
   const double t_lag = s.params.rss.response_time_s;
   const Limits& el = s.ego.limits;
   const double le = s.ego.size.length_m;
+  const auto close = [&](const Track& o) { return lateral_room_m < 0.5 * (o.width_m - s.ego.size.width_m); };
+  if (x_m <= pc_m) {
+    for (const Track& f : tracks.followers) {
+      if (!close(f)) continue;
+      const double d = rss_longitudinal_m({f.v_at(t_s), v_mps, f.length_m, le, t_lag, f.limits.accel_max_mps2,
+                                           f.limits.brake_min_mps2, el.brake_max_mps2});
+      if (x_m - d < f.x_at(t_s)) return false;
+    }
+  }
+  for (const Track& l : tracks.leaders) {
+    if (!close(l)) continue;
+    const double d = rss_longitudinal_m({v_mps, l.v_at(t_s), le, l.length_m, t_lag, el.accel_max_mps2,
+                                         el.brake_min_mps2, l.limits.brake_max_mps2});
+    if (x_m + d > l.x_at(t_s)) return false;
+  }
+  return true;
+}
+
+// The largest extra lateral distance any of the tracks needs (see longitudinally_clear).
+double widest_extra_m(const Scenario& s, const GapTracks& tracks) {
+  double extra = -std::numeric_limits<double>::infinity();
+  for (const auto* list : {&tracks.followers, &tracks.leaders})
+    for (const Track& o : *list) extra = std::max(extra, 0.5 * (o.width_m - s.ego.size.width_m));
+  return extra;
+}
+
+double ego_lateral_rss_m(const Scenario& s, double lat_speed_mps) {
+  const Limits& el = s.ego.limits;
+  return rss_lateral_m({0.0, lat_speed_mps, s.ego.size.width_m, s.ego.size.width_m, s.params.rss.response_time_s,
+                        el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
+}
+
+constexpr int kMiddleSample = kOccupancySamples / 2;
+
+}  // namespace
+
+bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
+                     double horizon_s, const GapTracks& tracks) {
   // Every instant must be clear, so the order is free: from the middle of the horizon (about P_c
   // for a merge checked from its decision) back to the start, then on to the end. Rejections
   // concentrate just before P_c (the follower), so most come after a few instants.
-  constexpr int kMiddle = kOccupancySamples / 2;
+  const double widest_extra = widest_extra_m(s, tracks);
   for (int j = 0; j <= kOccupancySamples; ++j) {
-    const int k = j <= kMiddle ? kMiddle - j : j;
+    const int k = j <= kMiddleSample ? kMiddleSample - j : j;
     const double t = horizon_s * k / kOccupancySamples;
     const double x = ego_x_m + ego.distance_at_m(t);
     const double v = ego.speed_at_mps(t);
@@ -89,24 +134,12 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
     const double sgm = (y_path - sig.offset_m) / sig.width_m;
     // An ego nearer the lane than the path's start is not assumed to have reached the path yet.
     const double y = std::max(y_path, ego_y_m);
-    const double lat_speed = v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);
-    const double d_lat = rss_lateral_m({0.0, lat_speed, s.ego.size.width_m, s.ego.size.width_m, t_lag,
-                                        el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
+    const double d_lat = ego_lateral_rss_m(s, v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm));
     // Laterally safe (lane centre Y = 0), with the growing tracking margin.
     const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
-    if (-y >= d_lat + margin_m) continue;
-    if (x <= sig.pc_m) {
-      for (const Track& f : tracks.followers) {
-        const double d = rss_longitudinal_m({f.v_at(t), v, f.length_m, le, t_lag, f.limits.accel_max_mps2,
-                                             f.limits.brake_min_mps2, el.brake_max_mps2});
-        if (x - d < f.x_at(t)) return false;
-      }
-    }
-    for (const Track& l : tracks.leaders) {
-      const double d = rss_longitudinal_m({v, l.v_at(t), le, l.length_m, t_lag, el.accel_max_mps2, el.brake_min_mps2,
-                                           l.limits.brake_max_mps2});
-      if (x + d > l.x_at(t)) return false;
-    }
+    const double lateral_room_m = -y - (d_lat + margin_m);
+    if (lateral_room_m >= widest_extra) continue;
+    if (!longitudinally_clear(s, t, x, v, sig.pc_m, tracks, lateral_room_m)) return false;
   }
   return true;
 }

@@ -45,6 +45,7 @@ struct Track {
   double x0_m = 0.0;
   SpeedRamp motion;
   double length_m = 0.0;
+  double width_m = 0.0;
   Limits limits;
   double x_at(double t_s) const { return x0_m + motion.distance_at_m(t_s); }  // t after the decision
   double v_at(double t_s) const { return motion.speed_at_mps(t_s); }
@@ -75,8 +76,9 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
 // Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
 // rho, docs/planner.md): at every one of kOccupancySamples instants of [0, horizon_s] at which the
 // ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
-// lateral speed on the path) plus a tracking margin, it must also be at least D_lon (RCPP eq. 1)
-// behind every leader and, until it reaches P_c, ahead of every follower: the merge never creates
+// lateral speed on the path and each lane vehicle's width) plus a tracking margin, it must also be
+// at least D_lon (RCPP eq. 1) behind that vehicle if it is a leader and, until it reaches P_c,
+// ahead of it if it is a follower: the merge never creates
 // an RSS-dangerous situation with a lane vehicle. The ego starts at ego_y_m, which may be nearer
 // the lane than the sigmoid's start (an ego off its lane centre): until the path passes that
 // offset, the ego is taken to stay there (it converges to the path, away from the lane). Past P_c the ego is in the lane with the right of

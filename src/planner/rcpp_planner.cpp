@@ -18,7 +18,8 @@ namespace {
 constexpr double kPathBehindM = 10.0;
 constexpr double kPathAheadM = 160.0;
 constexpr double kPathStepM = 1.0;
-constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds
+constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds ...
+constexpr double kNearPcBoundPenalty = 1e4;  // ... or pay this (far above any candidate's cost)
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
 constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
@@ -138,43 +139,47 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     const double pc_min = pc_of(iv.lo_mps);
     const double pc_max = std::min(pc_of(v_hi), side_exit_limit_x_m(s));
     if (pc_min > pc_max) { ++n_cross; continue; }
-    // choose_sigmoid asks for each P_c's v_e* once for its kappa range and once per kappa.
-    double memo_pc = std::numeric_limits<double>::quiet_NaN(), memo_v = 0.0;
-    const auto v_of_pc = [&](double pc) {
-      if (pc != memo_pc) {
-        memo_pc = pc;
-        memo_v = lowest_satisfying([&](double v) { return pc_of(v) - pc; }, iv.lo_mps, v_hi).value_or(v_hi);
-      }
-      return memo_v;
-    };
     const double v_e = ctx.ego_speed_mps;
     const double v_traffic = gap_traffic_speed_mps(gap, v_e);
-    const auto kappa_range = [&](double pc) {
-      const double v = v_of_pc(pc);
-      return kappa_range_for(s, pc, ctx.ego_x_m, ctx.ego_x_m + ctx.ramp_to(v).distance_at_m(rho_s), ctx.ramp_to(v),
-                             ctx.ego_x_m);
-    };
     const GapTracks tracks = gap_tracks(lane, gap, rho_s, accel_of);
-    const auto cost = [&](double pc, double kappa) {
-      const double v = v_of_pc(pc);
+    const auto kappa_range = [&](double v) {
       const SpeedRamp ramp = ctx.ramp_to(v);
-      const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
+      return kappa_range_for(s, pc_of(v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(rho_s), ramp, ctx.ego_x_m);
+    };
+    const auto cost = [&](double v, double kappa) {
+      const SpeedRamp ramp = ctx.ramp_to(v);
+      const Sigmoid sig{s.road.lane_width_m, kappa, pc_of(v), -s.road.lane_width_m};
       if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, rho_s, tracks)) return std::numeric_limits<double>::infinity();
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic);
       return def1_cost + field_cost(w, sig, rho_s, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); },
                                     constant_speed_x);
     };
-    // Candidates keep kPcMarginM from both bounds when the interval allows (path-tracking error).
+    // Candidates keep kPcMarginM from both P_c bounds when they can (path-tracking error): one
+    // nearer a bound wins only when nothing else is admissible.
     const double pc_margin = std::min(kPcMarginM, 0.25 * (pc_max - pc_min));
-    const auto choice = choose_sigmoid(pc_min + pc_margin, pc_max - pc_margin, p.pc_candidates, kappa_range,
-                                       p.kappa_candidates, cost);
+    const auto penalised_cost = [&](double v, double kappa) {
+      const double pc = pc_of(v);
+      const bool near_bound = pc < pc_min + pc_margin || pc > pc_max - pc_margin;
+      return cost(v, kappa) + (near_bound ? kNearPcBoundPenalty : 0.0);
+    };
+    // Candidates: pc_candidates values of v_e* evenly over [lo, v_hi], and the speed grid shared
+    // with the progress rule within it. The grid is over v_e*, not P_c: an ego that cannot reach
+    // v_e* by rho/2 has the same P_c for a range of v_e*, which differ after P_c.
+    std::vector<double> speeds = even_grid(iv.lo_mps, v_hi, p.pc_candidates);
+    const double grid_step_mps = ctx.speed_limit_mps / kDef1SpeedGridSteps;
+    for (int i = static_cast<int>(std::ceil(iv.lo_mps / grid_step_mps)); i * grid_step_mps <= v_hi; ++i)
+      speeds.push_back(i * grid_step_mps);
+    std::sort(speeds.begin(), speeds.end());
+    speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+    const auto choice = choose_sigmoid(speeds, kappa_range, p.kappa_candidates, penalised_cost);
     if (!choice) { ++n_sigmoid; continue; }
     if (choice->cost >= best_cost) continue;
     best_cost = choice->cost;
     Def1Plan plan;
-    plan.ve_star_mps = v_of_pc(choice->pc_m);
-    plan.sigmoid = Sigmoid{s.road.lane_width_m, choice->kappa_per_m, choice->pc_m, -s.road.lane_width_m};
+    plan.ve_star_mps = choice->param;
+    const double pc = pc_of(choice->param);
+    plan.sigmoid = Sigmoid{s.road.lane_width_m, choice->kappa_per_m, pc, -s.road.lane_width_m};
     Decision& d = plan.decision;
     d.time_s = w.time_s;
     d.mode = DecisionMode::kDef1Merge;
@@ -184,12 +189,12 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     d.ve_star_mps = plan.ve_star_mps;
     d.pc_min_m = pc_min;
     d.pc_max_m = pc_max;
-    d.pc_m = choice->pc_m;
+    d.pc_m = pc;
     d.kappa_per_m = choice->kappa_per_m;
     d.merge_duration_s = rho_s;
     d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fmt("%.2f", iv.lo_mps) + ", " +
                fmt("%.2f", iv.hi_mps) + "] m/s; merging at v_e* = " + fmt("%.2f", plan.ve_star_mps) +
-               " m/s, P_c = " + fmt("%.1f", choice->pc_m) + " m, kappa = " + fmt("%.3f", choice->kappa_per_m) +
+               " m/s, P_c = " + fmt("%.1f", pc) + " m, kappa = " + fmt("%.3f", choice->kappa_per_m) +
                "/m, rho = " + fmt("%.1f", rho_s) + " s (cost " + fmt("%.2f", choice->cost) + ")";
     best = plan;
   }
@@ -258,7 +263,7 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   // The responder follows its cooperative profile; the gap's other vehicle as in Definition 1.
   const double rate = std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9;
   const SpeedRamp responder_ramp{o.speed_mps, vo.vo_star_mps, rate, rate};
-  const Track responder{o.x_m, responder_ramp, o.length_m, o.limits};
+  const Track responder{o.x_m, responder_ramp, o.length_m, o.width_m, o.limits};
   GapTracks tracks;
   if (k == CoopCase::kEgoAhead) {
     tracks.followers.push_back(responder);
@@ -276,7 +281,7 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
       return std::numeric_limits<double>::infinity();
     return base + field_cost(w, sig, 2.0 * t_c, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); }, partner_x);
   };
-  const auto choice = choose_sigmoid(pc, pc, 1, kappa_range, p.kappa_candidates, cost);
+  const auto choice = choose_sigmoid({pc}, kappa_range, p.kappa_candidates, cost);
   if (!choice) return std::nullopt;
   *cost_out = choice->cost;
   Def2Plan plan;

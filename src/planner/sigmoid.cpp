@@ -9,14 +9,14 @@ namespace {
 
 const double kSixRootThree = 6.0 * std::sqrt(3.0);
 
+}  // namespace
+
 std::vector<double> even_grid(double lo, double hi, int n) {
   if (n <= 1 || hi <= lo) return {0.5 * (lo + hi)};
   std::vector<double> v;
   for (int i = 0; i < n; ++i) v.push_back(i == n - 1 ? hi : lo + (hi - lo) * i / (n - 1));  // ends exact
   return v;
 }
-
-}  // namespace
 
 // RCPP §II-C, f_sig.
 double Sigmoid::y_at_m(double x_m) const {
@@ -93,17 +93,17 @@ std::vector<PathPoint> sample_straight(double y_m, double x_from_m, double x_to_
   return path;
 }
 
-std::optional<SigmoidChoice> choose_sigmoid(double pc_min_m, double pc_max_m, int n_pc,
+std::optional<SigmoidChoice> choose_sigmoid(const std::vector<double>& params,
                                             const std::function<KappaRange(double)>& kappa_range, int n_kappa,
                                             const std::function<double(double, double)>& cost) {
   std::optional<SigmoidChoice> best;
-  for (const double pc : even_grid(pc_min_m, pc_max_m, n_pc)) {
-    const KappaRange range = kappa_range(pc);
+  for (const double param : params) {
+    const KappaRange range = kappa_range(param);
     if (!range || range->first > range->second) continue;
     for (const double kappa : even_grid(range->first, range->second, n_kappa)) {
-      const double c = cost(pc, kappa);
+      const double c = cost(param, kappa);
       if (!std::isfinite(c)) continue;  // inadmissible candidate
-      if (!best || c < best->cost) best = SigmoidChoice{pc, kappa, c};
+      if (!best || c < best->cost) best = SigmoidChoice{param, kappa, c};
     }
   }
   return best;

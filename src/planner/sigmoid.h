@@ -47,19 +47,23 @@ inline constexpr double kSigmoidEndFraction = 0.02;
 std::vector<PathPoint> sample_sigmoid(const Sigmoid& s, double x_from_m, double x_to_m, double step_m);
 std::vector<PathPoint> sample_straight(double y_m, double x_from_m, double x_to_m, double step_m);
 
+// `param` is the candidate parameter that fixes the sigmoid's P_c: P_c itself (Definition 2), or
+// v_e* (Definition 1), whose speed ramp puts P_c where the ego is at rho/2.
 struct SigmoidChoice {
-  double pc_m = 0.0;
+  double param = 0.0;
   double kappa_per_m = 0.0;
   double cost = 0.0;
 };
 
-// Grid search: n_pc values of P_c evenly over [pc_min, pc_max] (the midpoint when n_pc == 1 or
-// the bounds coincide), for each the admissible kappa range from kappa_range(pc) (nullopt: none),
-// n_kappa values evenly over it, each scored by cost(pc, kappa) (a non-finite cost marks an
-// inadmissible candidate). Returns the cheapest (first on
-// ties, so the result is deterministic), nullopt when no candidate is admissible.
+// n values evenly over [lo, hi], both ends exact (the midpoint when n == 1 or hi <= lo).
+std::vector<double> even_grid(double lo, double hi, int n);
+
+// Grid search: for each parameter value the admissible kappa range from kappa_range(param)
+// (nullopt: none), n_kappa values evenly over it, each scored by cost(param, kappa) (a
+// non-finite cost marks an inadmissible candidate). Returns the cheapest (first on ties, so the
+// result is deterministic), nullopt when no candidate is admissible.
 using KappaRange = std::optional<std::pair<double, double>>;
-std::optional<SigmoidChoice> choose_sigmoid(double pc_min_m, double pc_max_m, int n_pc,
+std::optional<SigmoidChoice> choose_sigmoid(const std::vector<double>& params,
                                             const std::function<KappaRange(double)>& kappa_range, int n_kappa,
                                             const std::function<double(double, double)>& cost);
 

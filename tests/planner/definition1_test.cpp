@@ -70,7 +70,7 @@ Limits gen_limits() {
 }
 MainLaneVehicle gen_vehicle(int id, double ego_x) {
   return MainLaneVehicle{id, ego_x + *rc::gen::inRange(-1200, 1200) / 10.0, *rc::gen::inRange(0, 330) / 10.0,
-                         *rc::gen::inRange(30, 120) / 10.0, gen_limits()};
+                         *rc::gen::inRange(30, 120) / 10.0, 1.9, gen_limits()};
 }
 Def1Context gen_context() {
   Def1Context c;
@@ -121,7 +121,7 @@ TEST(SpeedRamp, ReachesTargetThenHolds) {
 }
 
 TEST(EnumerateGaps, OpenGapsAtBothEndsSortedByPosition) {
-  const std::vector<MainLaneVehicle> lane{{7, 50, 20, 4.8, {}}, {3, 10, 20, 4.8, {}}};
+  const std::vector<MainLaneVehicle> lane{{7, 50, 20, 4.8, 1.9, {}}, {3, 10, 20, 4.8, 1.9, {}}};
   const auto gaps = enumerate_gaps(lane);
   ASSERT_EQ(gaps.size(), 3u);
   EXPECT_FALSE(gaps[0].follower);

@@ -50,7 +50,7 @@ CoopContext gen_context() {
 }
 MainLaneVehicle gen_responder(double ego_x) {
   MainLaneVehicle o{1, ego_x + *rc::gen::inRange(-800, 800) / 10.0, *rc::gen::inRange(0, 330) / 10.0,
-                    *rc::gen::inRange(30, 120) / 10.0, {}};
+                    *rc::gen::inRange(30, 120) / 10.0, 1.9, {}};
   o.limits.accel_max_mps2 = *rc::gen::inRange(0, 40) / 10.0;
   o.limits.brake_min_mps2 = *rc::gen::inRange(20, 60) / 10.0;
   o.limits.brake_max_mps2 = o.limits.brake_min_mps2 + *rc::gen::inRange(0, 50) / 10.0;
@@ -65,7 +65,7 @@ TEST(Definition2, HandComputedEgoAheadSpeed) {
   // 50 + 30 - D*(v) >= 25 + 0.75 (20 + v)  <=>  v^2 + 12 v - 478.6 <= 0  ->  v_o* = 16.683 m/s;
   // ineq. (3) itself then holds with margin 40 - 2 v_o* = 6.63 m. Rate limit: 20 - 4*1.5 = 14 <= v_o*.
   const CoopContext c{50, 20, 4.8, {}, 0.5, 4, 1.5, 33.34};
-  const MainLaneVehicle o{1, 25, 20, 4.8, {}};
+  const MainLaneVehicle o{1, 25, 20, 4.8, 1.9, {}};
   const VoStar vo = solve_vo_star(c, o, CoopCase::kEgoAhead);
   ASSERT_TRUE(vo.feasible);
   EXPECT_NEAR(vo.vo_star_mps, (-12 + std::sqrt(144 + 4 * 478.6)) / 2, 1e-5);
@@ -78,7 +78,7 @@ TEST(Definition2, HandComputedEgoBehindSpeed) {
   // D = 4.8 + 7 + 0.25 + 15^2/8 - v^2/16; ineq. (4): 54 + 0.75(20 + v) - D >= 75.5
   // <=> v^2 + 12 v - 746.8 >= 0 -> v_o* = 21.979 m/s <= 20 + 2*1.5 = 23 (rate limit).
   const CoopContext c{50, 20, 4.8, {}, 0.5, 4, 1.5, 33.34};
-  const MainLaneVehicle o{1, 54, 20, 4.8, {}};
+  const MainLaneVehicle o{1, 54, 20, 4.8, 1.9, {}};
   const VoStar vo = solve_vo_star(c, o, CoopCase::kEgoBehind);
   ASSERT_TRUE(vo.feasible);
   EXPECT_NEAR(vo.vo_star_mps, (-12 + std::sqrt(144 + 4 * 746.8)) / 2, 1e-5);

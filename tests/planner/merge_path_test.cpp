@@ -15,7 +15,7 @@ Scenario road_only() {
 }
 
 MainLaneVehicle lane_vehicle(int id, double x_m, double speed_mps) {
-  return MainLaneVehicle{id, x_m, speed_mps, 4.8, Limits{}};
+  return MainLaneVehicle{id, x_m, speed_mps, 4.8, 1.9, Limits{}};
 }
 
 double no_accel(int) { return 0.0; }

@@ -247,7 +247,7 @@ RC_GTEST_PROP(PlannerProperties, ChosenMergeSpeedSatisfiesDefinition1ForItsGap, 
   const Def1Context c{s.ego.x_m, s.ego.speed_mps, s.ego.size.length_m, s.ego.limits,
                       s.params.rss.response_time_s, d.merge_duration_s, s.road.speed_limit_mps};
   for (const MainVehicle& v : s.vehicles) {
-    const MainLaneVehicle o{v.id, v.x_m, v.speed_mps, v.size.length_m, v.limits};
+    const MainLaneVehicle o{v.id, v.x_m, v.speed_mps, v.size.length_m, v.size.width_m, v.limits};
     if (v.id == d.gap->follower_id) RC_ASSERT(def1_1_margin_m(c, o, d.ve_star_mps) >= -1e-9);
     if (v.id == d.gap->leader_id) RC_ASSERT(def1_2_margin_m(c, o, d.ve_star_mps) >= -1e-9);
   }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "trace_builder.h"
 
@@ -165,8 +166,23 @@ TEST(RssLateralMonitor, EgoWithoutRightOfWayThatKeepsMovingTowardIsLiable) {
   EXPECT_EQ(out.result.liable_id, kEgoId);
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.96, 0.021);
   EXPECT_NEAR(out.margin[48], -0.7725, 1e-6);  // step 48: t = 0.96 s
-  // The worst moment is the end, t = 2 s: dy = 1.5 m, margin 1.5 - 3.3125 = -1.8125 m.
-  EXPECT_NEAR(out.result.min_margin, -1.8125, 1e-6);
+  // The worst moment is the last step with the ego still outside vehicle 1's lane (|dy| >= W/2 =
+  // 1.75 m), t = 1.74 s: dy = 1.76 m, margin 1.76 - 3.3125 = -1.5525 m.
+  EXPECT_NEAR(out.result.min_margin, -1.5525, 1e-6);
+}
+
+TEST(RssLateralMonitor, AnEgoCentringItselfInTheLaneOfAVehicleBehindIsJudgedLongitudinally) {
+  // The ego's centre is in lane 0 (Y = -0.3), still moving toward its centre at 0.1 m/s, with
+  // vehicle 1 approaching from 5 m behind (longitudinally unsafe) and no right of way: not a
+  // lateral approach (rss_longitudinal judges the pair).
+  Scenario s = base_scenario();
+  s.ego.y_m = -0.3;
+  s.vehicles = {vehicle(1, -5.0, 25.0)};
+  Trace t = constant_accel_trace(s, 2.0);
+  for (auto& st : t.steps) st.ego.vy_mps = 0.1;
+  const MonitorOutput out = test::run(monitor_rss_lateral, s, t);
+  EXPECT_TRUE(out.result.holds);
+  for (const double m : out.margin) EXPECT_TRUE(std::isnan(m));  // not applicable at any step
 }
 
 TEST(RssLateralMonitor, LateralBrakingAfterResponseTimeHolds) {

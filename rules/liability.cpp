@@ -14,6 +14,13 @@ bool RightOfWay::ego_holds_at(double time_s) const {
   return false;
 }
 
+bool RightOfWay::ego_held_within(double from_s, double to_s) const {
+  for (const auto& [from, to] : ego_holds) {
+    if (from <= to_s && to > from_s) return true;
+  }
+  return false;
+}
+
 double acceptance_time(const Trace& t, int partner_id, double time_s) {
   double when = -1.0;
   for (const auto& e : t.events) {

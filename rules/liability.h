@@ -19,6 +19,8 @@ struct RightOfWay {
   std::vector<std::pair<double, int>> timeline;      // (time_s, holder) at every change
   std::vector<std::pair<double, double>> ego_holds;  // [from, to) intervals
   bool ego_holds_at(double time_s) const;
+  // Whether the ego held it at some instant of [from_s, to_s].
+  bool ego_held_within(double from_s, double to_s) const;
 };
 
 RightOfWay compute_right_of_way(const Scenario& s, const Trace& t);

@@ -33,6 +33,10 @@ TEST(RightOfWay, MainLaneHoldsUntilADef1GapIsEstablished) {
   EXPECT_FALSE(row.ego_holds_at(0.5));
   EXPECT_TRUE(row.ego_holds_at(2.0));
   EXPECT_FALSE(row.ego_holds_at(4.5));
+  EXPECT_FALSE(row.ego_held_within(4.2, 4.5));
+  EXPECT_TRUE(row.ego_held_within(3.5, 4.5));
+  EXPECT_TRUE(row.ego_held_within(0.0, 1.0));
+  EXPECT_FALSE(row.ego_held_within(0.0, 0.9));
 }
 
 TEST(RightOfWay, Def2MergeWithoutAcceptanceGivesNoRightOfWay) {

@@ -103,6 +103,26 @@ TEST(RssLongitudinalMonitor, AnEgoMovingTowardALongitudinallyUnsafeVehicleCutsIn
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.3, 1e-9);
 }
 
+TEST(RssLongitudinalMonitor, AnEgoThatAbortedWithinTheResponseTimeHasNotCutIn) {
+  // As above (moving toward from t = 0.3 s), but the ego held a Def. 1 right of way until it
+  // aborted at t = 0.1 s: at t_b = 0.3 s it is within T = 0.5 s of holding it, so its lateral
+  // motion is no cut-in; vehicle 1, the rear vehicle, owes b_min from 0.8 s.
+  const Scenario s = off_centre_beside_rear_vehicle();
+  Trace t = stop_moving_away_trace(s, 0.1);
+  Decision merge;
+  merge.mode = DecisionMode::kDef1Merge;
+  merge.gap = Gap{1, -1};
+  Decision abort = merge;
+  abort.time_s = 0.1;
+  abort.mode = DecisionMode::kDef1Halt;
+  abort.gap.reset();
+  t.decisions = {merge, abort};
+  const MonitorOutput out = test::run(monitor_rss_longitudinal, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 0.8, 1e-9);
+}
+
 // Vehicle 1 (30 m/s) passes the ego (20 m/s, Y = -2.0: laterally unsafe at rest) from 3 m behind:
 // dangerous from t = 0, vehicle 1 is the rear vehicle until it draws level at t = 0.3 s, then the
 // ego is. The ego's obligation to brake starts T = 0.5 s after it became the rear vehicle, at

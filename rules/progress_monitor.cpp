@@ -68,7 +68,8 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
         if (!kappa) continue;
         if (pc + exit_after_pc_times_kappa / kappa->second > side_exit_limit_x_m(s) - margin) continue;
         const Sigmoid path{w, kappa->second, pc, -w};
-        if (!occupancy_clear(s, x0, step.ego.y_m, path, ramp, c.merge_duration_s, tracks)) continue;
+        if (!occupancy_clear(s, x0, step.ego.y_m, path, ramp, OccupancyInstants::over(c.merge_duration_s), tracks,
+                             kOccupancyPlanningBufferM)) continue;
         return FeasibleMerge{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1,
                              c.merge_duration_s, ve};
       }

@@ -150,6 +150,11 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     if (m < 0.0) {
       const double from_s = dec ? dec->time_s : e.time_s - s.params.planner.merge_duration_s / 2.0;
       int breaker = limit_breaker(ctx, follower, leader, from_s, e.time_s);
+      // The decision's follower may have raced past the ego beyond its a_accel^max and be the
+      // leader at the midpoint: its breach still explains the margin.
+      if (breaker == kNobody && def1 && dec->gap && dec->gap->follower_id >= 0)
+        if (const int k = index_of_party(s, dec->gap->follower_id); k > 0)
+          breaker = limit_breaker(ctx, static_cast<std::size_t>(k), 0, from_s, e.time_s);
       if (breaker == kNobody && worst > 0) breaker = reneging_responder(ctx, worst, e.time_s);
       if (breaker != kNobody)
         liable = breaker;

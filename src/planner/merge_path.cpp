@@ -1,6 +1,7 @@
 #include "planner/merge_path.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -79,7 +80,7 @@ namespace {
 // lateral distance beyond D_lat for a lane vehicle as wide as the ego; a wider one needs half the
 // difference more (eq. 2 grows with the width sum).
 bool longitudinally_clear(const Scenario& s, double t_s, double x_m, double v_mps, double pc_m,
-                          const GapTracks& tracks, double lateral_room_m) {
+                          const GapTracks& tracks, double lateral_room_m, double buffer_m) {
   const double t_lag = s.params.rss.response_time_s;
   const Limits& el = s.ego.limits;
   const double le = s.ego.size.length_m;
@@ -89,14 +90,14 @@ bool longitudinally_clear(const Scenario& s, double t_s, double x_m, double v_mp
       if (!close(f)) continue;
       const double d = rss_longitudinal_m({f.v_at(t_s), v_mps, f.length_m, le, t_lag, f.limits.accel_max_mps2,
                                            f.limits.brake_min_mps2, el.brake_max_mps2});
-      if (x_m - d < f.x_at(t_s)) return false;
+      if (x_m - d - buffer_m < f.x_at(t_s)) return false;
     }
   }
   for (const Track& l : tracks.leaders) {
     if (!close(l)) continue;
     const double d = rss_longitudinal_m({v_mps, l.v_at(t_s), le, l.length_m, t_lag, el.accel_max_mps2,
                                          el.brake_min_mps2, l.limits.brake_max_mps2});
-    if (x_m + d > l.x_at(t_s)) return false;
+    if (x_m + d + buffer_m > l.x_at(t_s)) return false;
   }
   return true;
 }
@@ -115,19 +116,22 @@ double ego_lateral_rss_m(const Scenario& s, double lat_speed_mps) {
                         el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
 }
 
-constexpr int kMiddleSample = kOccupancySamples / 2;
-
 }  // namespace
 
 bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
-                     double horizon_s, const GapTracks& tracks) {
-  // Every instant must be clear, so the order is free: from the middle of the horizon (about P_c
-  // for a merge checked from its decision) back to the start, then on to the end. Rejections
-  // concentrate just before P_c (the follower), so most come after a few instants.
+                     const OccupancyInstants& when, const GapTracks& tracks, double buffer_m) {
+  assert(when.step_s > 0.0);
+  // The instants k step - elapsed within [0, horizon]: k from k_first to k_last.
+  const int k_first = static_cast<int>(std::ceil(when.elapsed_s / when.step_s - 1e-9));
+  const int k_last = static_cast<int>(std::floor((when.horizon_s + when.elapsed_s) / when.step_s + 1e-9));
+  // Every instant must be clear, so the order is free: from the middle of the decision's horizon
+  // (about P_c) back to the first instant, then on to the last. Rejections concentrate just before
+  // P_c (the follower), so most come after a few instants.
+  const int k_middle = std::clamp(kOccupancySamples / 2, k_first, std::max(k_first, k_last));
   const double widest_extra = widest_extra_m(s, tracks);
-  for (int j = 0; j <= kOccupancySamples; ++j) {
-    const int k = j <= kMiddleSample ? kMiddleSample - j : j;
-    const double t = horizon_s * k / kOccupancySamples;
+  for (int j = 0; j <= k_last - k_first; ++j) {
+    const int k = j <= k_middle - k_first ? k_middle - j : k_first + j;
+    const double t = std::max(0.0, k * when.step_s - when.elapsed_s);
     const double x = ego_x_m + ego.distance_at_m(t);
     const double v = ego.speed_at_mps(t);
     const double y_path = sig.y_at_m(x);
@@ -139,7 +143,7 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
     const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
     const double lateral_room_m = -y - (d_lat + margin_m);
     if (lateral_room_m >= widest_extra) continue;
-    if (!longitudinally_clear(s, t, x, v, sig.pc_m, tracks, lateral_room_m)) return false;
+    if (!longitudinally_clear(s, t, x, v, sig.pc_m, tracks, lateral_room_m, buffer_m)) return false;
   }
   return true;
 }

@@ -74,7 +74,7 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
                      const std::function<double(int)>& observed_accel_mps2);
 
 // Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
-// rho, docs/planner.md): at every one of kOccupancySamples instants of [0, horizon_s] at which the
+// rho, docs/planner.md): at every one of kOccupancySamples instants of [0, rho] at which the
 // ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
 // lateral speed on the path and each lane vehicle's width) plus a tracking margin, it must also be
 // at least D_lon (RCPP eq. 1) behind that vehicle if it is a leader and, until it reaches P_c,
@@ -89,7 +89,21 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
 inline constexpr int kOccupancySamples = 40;
 inline constexpr double kOccupancyLateralMarginM = 0.75;
 inline constexpr double kOccupancyFullMarginFraction = 0.1;  // full margin from 10 % of W on
+// buffer_m is added to every D_lon: a new merge is planned with kOccupancyPlanningBufferM, so
+// that its re-check every cycle (with none) does not fail at the first small deviation of the
+// ego or the traffic from the prediction and abort a merge that has only just begun.
+inline constexpr double kOccupancyPlanningBufferM = 1.5;
+// The instants a check visits: k step_s - elapsed_s (k = 0, 1, ...) that lie in [0, horizon_s],
+// in seconds from now. A new candidate: over(rho), rho / kOccupancySamples apart. A committed
+// merge's re-check keeps its decision's instants (elapsed_s since the decision), so that it agrees
+// with the decision while the world goes as predicted, and only a real deviation aborts.
+struct OccupancyInstants {
+  double step_s = 0.0;
+  double elapsed_s = 0.0;
+  double horizon_s = 0.0;
+  static OccupancyInstants over(double horizon_s) { return {horizon_s / kOccupancySamples, 0.0, horizon_s}; }
+};
 bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
-                     double horizon_s, const GapTracks& tracks);
+                     const OccupancyInstants& when, const GapTracks& tracks, double buffer_m);
 
 }  // namespace mg

@@ -149,7 +149,9 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     const auto cost = [&](double v, double kappa) {
       const SpeedRamp ramp = ctx.ramp_to(v);
       const Sigmoid sig{s.road.lane_width_m, kappa, pc_of(v), -s.road.lane_width_m};
-      if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, rho_s, tracks)) return std::numeric_limits<double>::infinity();
+      if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, OccupancyInstants::over(rho_s), tracks,
+                           kOccupancyPlanningBufferM))
+        return std::numeric_limits<double>::infinity();
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic);
       return def1_cost + field_cost(w, sig, rho_s, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); },
@@ -277,7 +279,9 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   };
   const auto cost = [&](double pc_m, double kappa) {
     const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
-    if (!occupancy_clear(s, c.ego_x_m, w.ego.y_m, sig, ramp, c.comm_threshold_s + c.merge_duration_s, tracks))
+    // No planning buffer: the responder's cooperative profile is built to leave exactly D*_lon.
+    if (!occupancy_clear(s, c.ego_x_m, w.ego.y_m, sig, ramp,
+                         OccupancyInstants::over(c.comm_threshold_s + c.merge_duration_s), tracks, 0.0))
       return std::numeric_limits<double>::infinity();
     return base + field_cost(w, sig, 2.0 * t_c, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); }, partner_x);
   };
@@ -467,13 +471,16 @@ bool RcppPlanner::committed_occupancy_clear(const WorldSnapshot& w) const {
     if (v.id == d.gap->leader_id) gap.leader = v;
   }
   GapTracks tracks = gap_tracks(lane, gap, follower_window_s, [&](int id) { return observed_accel_mps2(w, id); });
-  // The vehicle now nearest ahead in the target lane, when it is not the gap's leader or ahead of
-  // it (the leader left the gap, e.g. a non-compliant one that drove on, or the follower overtook
-  // the ego): the ego must keep D_lon to it too.
+  // The vehicle now nearest ahead in the target lane, when it lies inside the gap (the leader
+  // left it, e.g. a non-compliant one that drove on): the ego must keep D_lon to it too. Not the
+  // gap's follower: an ego merging ahead of a vehicle it has not passed yet is not behind it.
   if (const auto next = leader_ahead_of(lane, w.ego.x_m);
-      next && (!gap.leader || lane_order_before(*next, *gap.leader)))
+      next && (!gap.leader || lane_order_before(*next, *gap.leader)) &&
+      (!gap.follower || lane_order_before(*gap.follower, *next)))
     tracks.leaders.push_back(leader_track(*next, observed_accel_mps2(w, next->id)));
-  return occupancy_clear(s, w.ego.x_m, w.ego.y_m, merge_->sigmoid, ramp, horizon_s, tracks);
+  const double elapsed_s = w.time_s - d.time_s;
+  const OccupancyInstants when{OccupancyInstants::over(d.merge_duration_s).step_s, elapsed_s, horizon_s};
+  return occupancy_clear(s, w.ego.x_m, w.ego.y_m, merge_->sigmoid, ramp, when, tracks, 0.0);
 }
 
 double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {

@@ -7,7 +7,7 @@
 
 namespace mg {
 
-inline constexpr double kSpeedGainPerS = 2.0;  // proportional gain on the speed error
+inline constexpr double kSpeedGainPerS = 5.0;  // proportional gain on the speed error
 
 // Acceleration request: k (v_target - v), |a| <= accel_limit_mps2, then inside
 // [-brake_max, accel_max]. Under a proper response (RSS override, paper Fig. 1) the ego brakes

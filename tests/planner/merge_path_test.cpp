@@ -39,8 +39,8 @@ TEST(OccupancyClear, AMergeBehindALeaderIsCheckedAgainstTheVehiclesAheadOfIt) {
   ASSERT_EQ(tracks.leaders.size(), 2u);
   EXPECT_TRUE(tracks.followers.empty());
   const GapTracks leader_only{{}, {tracks.leaders[0]}};
-  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, 6.0, leader_only));
-  EXPECT_FALSE(occupancy_clear(s, 0.0, -3.5, path, ego, 6.0, tracks));
+  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(6.0), leader_only, 0.0));
+  EXPECT_FALSE(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(6.0), tracks, 0.0));
 }
 
 TEST(OccupancyClear, GapTracksSplitTheLaneAtTheGap) {
@@ -68,8 +68,8 @@ TEST(OccupancyClear, AnEgoNearerTheLaneThanThePathStartIsCheckedWhereItIs) {
   const GapTracks tracks = gap_tracks(lane, LaneGap{std::nullopt, lane[0]}, 6.0, no_accel);
   const Sigmoid path{3.5, 0.3, 30.0, -3.5};
   const SpeedRamp ego{5.0, 5.0, 2.0, 4.0};
-  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, 6.0, tracks));
-  EXPECT_FALSE(occupancy_clear(s, 0.0, -1.9, path, ego, 6.0, tracks));
+  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(6.0), tracks, 0.0));
+  EXPECT_FALSE(occupancy_clear(s, 0.0, -1.9, path, ego, OccupancyInstants::over(6.0), tracks, 0.0));
 }
 
 }  // namespace

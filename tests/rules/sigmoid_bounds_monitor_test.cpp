@@ -45,6 +45,26 @@ TEST(SigmoidBoundsMonitor, FollowerThatOveracceleratedBeforeTheMidpointIsLiable)
   EXPECT_EQ(out.result.liable_id, 1);
 }
 
+TEST(SigmoidBoundsMonitor, AFollowerThatRacedPastTheEgoBeyondItsAmaxIsLiable) {
+  // The merge decided at t = 0 goes ahead of vehicle 1 (3 m behind, 20 m/s). It accelerates at
+  // 10 m/s2 > a_max 2 and at the midpoint (t = 1 s) is 2 m ahead of the ego: the leader there,
+  // inside the ego's safe distance, because of its own breach.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -3.0, 20.0)};
+  Trace t = with_midpoint(constant_accel_trace(s, 2.0, {0.0, 10.0}));
+  Decision d;
+  d.mode = DecisionMode::kDef1Merge;
+  d.gap = Gap{1, -1};
+  d.pc_min_m = 0.0;
+  d.pc_m = 20.0;
+  d.pc_max_m = 40.0;
+  d.merge_duration_s = 2.0;
+  t.decisions.push_back(d);
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+}
+
 // A Def. 1 merge decided at t = 0 (P_c inside its bounds) for the gap behind vehicle 1.
 Trace with_def1_decision(Trace t) {
   Decision d;

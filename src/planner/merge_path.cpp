@@ -75,34 +75,35 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
 
 namespace {
 
-// The ego at x_m with speed v_mps, t_s after the decision, is D_lon (RCPP eq. 1) ahead of every
-// follower (until P_c) and behind every leader it is laterally close to: lateral_room_m is its
-// lateral distance beyond D_lat for a lane vehicle as wide as the ego; a wider one needs half the
-// difference more (eq. 2 grows with the width sum).
-bool longitudinally_clear(const Scenario& s, double t_s, double x_m, double v_mps, double pc_m,
-                          const GapTracks& tracks, double lateral_room_m, double buffer_m) {
+// The ego at x_m with speed v_mps, t_s after the decision, must be D_lon (RCPP eq. 1) ahead of
+// every follower (until P_c) and behind every leader it is laterally close to. Closeness is
+// measured by the lateral room, the ego's lateral distance beyond D_lat for a lane vehicle as
+// wide as the ego; a wider one needs half the width difference more (eq. 2 grows with the width
+// sum). Returns the largest such extra over the vehicles the ego is not D_lon clear of (-inf
+// when it is clear of all): the instant is blocked when the lateral room is below it.
+double blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, double pc_m, const GapTracks& tracks,
+                       double buffer_m) {
   const double t_lag = s.params.rss.response_time_s;
   const Limits& el = s.ego.limits;
   const double le = s.ego.size.length_m;
-  const auto close = [&](const Track& o) { return lateral_room_m < 0.5 * (o.width_m - s.ego.size.width_m); };
+  double below = -std::numeric_limits<double>::infinity();
+  const auto block = [&](const Track& o) { below = std::max(below, 0.5 * (o.width_m - s.ego.size.width_m)); };
   if (x_m <= pc_m) {
     for (const Track& f : tracks.followers) {
-      if (!close(f)) continue;
       const double d = rss_longitudinal_m({f.v_at(t_s), v_mps, f.length_m, le, t_lag, f.limits.accel_max_mps2,
                                            f.limits.brake_min_mps2, el.brake_max_mps2});
-      if (x_m - d - buffer_m < f.x_at(t_s)) return false;
+      if (x_m - d - buffer_m < f.x_at(t_s)) block(f);
     }
   }
   for (const Track& l : tracks.leaders) {
-    if (!close(l)) continue;
     const double d = rss_longitudinal_m({v_mps, l.v_at(t_s), le, l.length_m, t_lag, el.accel_max_mps2,
                                          el.brake_min_mps2, l.limits.brake_max_mps2});
-    if (x_m + d + buffer_m > l.x_at(t_s)) return false;
+    if (x_m + d + buffer_m > l.x_at(t_s)) block(l);
   }
-  return true;
+  return below;
 }
 
-// The largest extra lateral distance any of the tracks needs (see longitudinally_clear).
+// The largest extra lateral distance any of the tracks needs (see blocked_below_m).
 double widest_extra_m(const Scenario& s, const GapTracks& tracks) {
   double extra = -std::numeric_limits<double>::infinity();
   for (const auto* list : {&tracks.followers, &tracks.leaders})
@@ -119,7 +120,7 @@ double ego_lateral_rss_m(const Scenario& s, double lat_speed_mps) {
 }  // namespace
 
 bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
-                     const OccupancyInstants& when, const GapTracks& tracks, double buffer_m) {
+                     const OccupancyInstants& when, const GapTracks& tracks, double buffer_m, OccupancyMemo* memo) {
   assert(when.step_s > 0.0);
   // The instants k step - elapsed within [0, horizon]: k from k_first to k_last.
   const int k_first = static_cast<int>(std::ceil(when.elapsed_s / when.step_s - 1e-9));
@@ -143,7 +144,10 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
     const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
     const double lateral_room_m = -y - (d_lat + margin_m);
     if (lateral_room_m >= widest_extra) continue;
-    if (!longitudinally_clear(s, t, x, v, sig.pc_m, tracks, lateral_room_m, buffer_m)) return false;
+    double* memo_slot = memo && k <= kOccupancySamples ? &memo->blocked_below_m[static_cast<std::size_t>(k)] : nullptr;
+    if (memo_slot && std::isnan(*memo_slot)) *memo_slot = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
+    if (lateral_room_m < (memo_slot ? *memo_slot : blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m)))
+      return false;
   }
   return true;
 }

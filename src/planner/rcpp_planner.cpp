@@ -146,11 +146,17 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       const SpeedRamp ramp = ctx.ramp_to(v);
       return kappa_range_for(s, pc_of(v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(rho_s), ramp, ctx.ego_x_m);
     };
+    OccupancyMemo memo;  // shared by the kappa candidates of one v_e* (choose_sigmoid's inner loop)
+    double memo_v = std::numeric_limits<double>::quiet_NaN();
     const auto cost = [&](double v, double kappa) {
+      if (v != memo_v) {
+        memo = OccupancyMemo{};
+        memo_v = v;
+      }
       const SpeedRamp ramp = ctx.ramp_to(v);
       const Sigmoid sig{s.road.lane_width_m, kappa, pc_of(v), -s.road.lane_width_m};
       if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, OccupancyInstants::over(rho_s), tracks,
-                           kOccupancyPlanningBufferM))
+                           kOccupancyPlanningBufferM, &memo))
         return std::numeric_limits<double>::infinity();
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic);
@@ -323,8 +329,8 @@ bool can_still_halt(const WorldSnapshot& w) {
   return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
 }
 
-// The side lane's centre; from off it (after an aborted merge, or a start off-centre) a logistic
-// path back to it, as sharp as the comfort bound at the ego's speed and the trackability cap
+// The side lane's centre; from nearer the main lane (after an aborted merge, or a start
+// off-centre) a logistic path back to it, as sharp as the comfort bound at the ego's speed and the trackability cap
 // allow: a straight target line would make the tracker snap back (sideslip beyond the rule's
 // bound at merge speeds).
 constexpr double kReturnPathMinOffsetM = 0.05;
@@ -333,6 +339,10 @@ std::vector<PathPoint> side_lane_path(const WorldSnapshot& w) {
   const double to_centre_m = s.road.side_lane_y_m() - w.ego.y_m;
   const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + kPathAheadM;
   if (std::abs(to_centre_m) < kReturnPathMinOffsetM) return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
+  // An ego farther from the main lane than the side lane's centre holds its offset: moving toward
+  // the main lane only to centre itself can make it laterally unsafe with a vehicle there (with a
+  // long response time, D_lat grows with that lateral speed).
+  if (to_centre_m > 0.0) return sample_straight(w.ego.y_m, from_x, to_x, kPathStepM);
   const double kappa = std::min(
       kappa_cap_per_m(s),
       kappa_comfort_max_per_m(ego_speed_mps(w), std::abs(to_centre_m), s.params.planner.lat_accel_comfort_mps2));

@@ -139,12 +139,15 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     const double pc_min = pc_of(iv.lo_mps);
     const double pc_max = std::min(pc_of(v_hi), side_exit_limit_x_m(s));
     if (pc_min > pc_max) { ++n_cross; continue; }
+    // P_c(v) is monotone in v, but only up to rounding: a candidate at v_hi must not land a
+    // rounding error outside [pc_min, pc_max] (a campaign finding: P_c "outside" by 1e-13 m).
+    const auto pc_at = [&](double v) { return std::clamp(pc_of(v), pc_min, pc_max); };
     const double v_e = ctx.ego_speed_mps;
     const double v_traffic = gap_traffic_speed_mps(gap, v_e);
     const GapTracks tracks = gap_tracks(lane, gap, rho_s, accel_of);
     const auto kappa_range = [&](double v) {
       const SpeedRamp ramp = ctx.ramp_to(v);
-      return kappa_range_for(s, pc_of(v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(rho_s), ramp, ctx.ego_x_m);
+      return kappa_range_for(s, pc_at(v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(rho_s), ramp, ctx.ego_x_m);
     };
     OccupancyMemo memo;  // shared by the kappa candidates of one v_e* (choose_sigmoid's inner loop)
     double memo_v = std::numeric_limits<double>::quiet_NaN();
@@ -154,7 +157,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
         memo_v = v;
       }
       const SpeedRamp ramp = ctx.ramp_to(v);
-      const Sigmoid sig{s.road.lane_width_m, kappa, pc_of(v), -s.road.lane_width_m};
+      const Sigmoid sig{s.road.lane_width_m, kappa, pc_at(v), -s.road.lane_width_m};
       if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, OccupancyInstants::over(rho_s), tracks,
                            kOccupancyPlanningBufferM, &memo))
         return std::numeric_limits<double>::infinity();
@@ -167,7 +170,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     // nearer a bound wins only when nothing else is admissible.
     const double pc_margin = std::min(kPcMarginM, 0.25 * (pc_max - pc_min));
     const auto penalised_cost = [&](double v, double kappa) {
-      const double pc = pc_of(v);
+      const double pc = pc_at(v);
       const bool near_bound = pc < pc_min + pc_margin || pc > pc_max - pc_margin;
       return cost(v, kappa) + (near_bound ? kNearPcBoundPenalty : 0.0);
     };
@@ -186,7 +189,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     best_cost = choice->cost;
     Def1Plan plan;
     plan.ve_star_mps = choice->param;
-    const double pc = pc_of(choice->param);
+    const double pc = pc_at(choice->param);
     plan.sigmoid = Sigmoid{s.road.lane_width_m, choice->kappa_per_m, pc, -s.road.lane_width_m};
     Decision& d = plan.decision;
     d.time_s = w.time_s;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <ranges>
 #include <sstream>
 
 #include "planner/definition1.h"
@@ -11,6 +10,20 @@
 #include "planner/sigmoid.h"
 
 namespace mg {
+namespace {
+
+// The first index in [lo, hi) where pred is false, pred being true on a prefix; hi if none.
+// (std::ranges::partition_point over an iota_view does not compile with clang and libstdc++ 12.)
+template <class Pred>
+int first_index_where_not(int lo, int hi, Pred pred) {
+  while (lo < hi) {
+    const int mid = lo + (hi - lo) / 2;
+    if (pred(mid)) lo = mid + 1; else hi = mid;
+  }
+  return lo;
+}
+
+}  // namespace
 
 // Ineq. (1.1) and (1.2), the merge path's admissibility and the occupancy check are the planner's
 // own pure functions (planner/definition1.h, planner/merge_path.h), so the rule and the planner
@@ -56,10 +69,10 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
       const auto fails_11 = [&](int i) { return def1_1_margin_m(c, *gap.follower, ve_at(i)) < margin; };
       const auto holds_12 = [&](int i) { return def1_2_margin_m(c, *gap.leader, ve_at(i)) >= margin; };
       const int first = !gap.follower ? 0 : fails_11(n - 1) ? n
-                                          : *std::ranges::partition_point(std::views::iota(0, n - 1), fails_11);
+                                          : first_index_where_not(0, n - 1, fails_11);
       if (first == n) continue;
       const int end = !gap.leader ? n : !holds_12(first) ? first
-                                        : *std::ranges::partition_point(std::views::iota(first + 1, n), holds_12);
+                                        : first_index_where_not(first + 1, n, holds_12);
       for (int i = first; i < end; ++i) {
         const double ve = ve_at(i);
         const SpeedRamp ramp = c.ramp_to(ve);

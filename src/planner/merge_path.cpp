@@ -57,8 +57,9 @@ Track follower_track(const MainLaneVehicle& f, double rho_s) {
 
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
   const bool braking = observed_accel_mps2 < -kLeaderBrakingMps2;
-  return Track{l.x_m, braking ? SpeedRamp{l.speed_mps, 0.0, 1.0, -observed_accel_mps2} : SpeedRamp{l.speed_mps, l.speed_mps, 1.0, 1.0},
-               l.length_m, l.width_m, l.limits};
+  const SpeedRamp motion = braking ? SpeedRamp{l.speed_mps, 0.0, 1.0, -observed_accel_mps2}
+                                   : SpeedRamp{l.speed_mps, l.speed_mps, 1.0, 1.0};
+  return Track{l.x_m, motion, l.length_m, l.width_m, l.limits};
 }
 
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,

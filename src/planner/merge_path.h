@@ -80,10 +80,10 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
 // ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
 // lateral speed on the path and each lane vehicle's width) plus a tracking margin, it must also be
 // at least D_lon (RCPP eq. 1) behind that vehicle if it is a leader and, until it reaches P_c,
-// ahead of it if it is a follower: the merge never creates
-// an RSS-dangerous situation with a lane vehicle. The ego starts at ego_y_m, which may be nearer
-// the lane than the sigmoid's start (an ego off its lane centre): until the path passes that
-// offset, the ego is taken to stay there (it converges to the path, away from the lane). Past P_c the ego is in the lane with the right of
+// ahead of it if it is a follower: the merge never creates an RSS-dangerous situation with a lane
+// vehicle. The ego starts at ego_y_m, which may be nearer the lane than the sigmoid's start (an
+// ego off its lane centre): until the path passes that offset, the ego is taken to stay there (it
+// converges to the path, away from the lane). Past P_c the ego is in the lane with the right of
 // way, and keeping D_lon behind it is the follower's duty as the rear vehicle (RSS Def. 1; DESIGN
 // §8), not something the ego's path must foresee for a follower that keeps the speed Def. 1.1
 // allows it to gain. The tracking margin, kOccupancyLateralMarginM, grows with the lateral

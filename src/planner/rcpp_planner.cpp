@@ -278,7 +278,8 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   GapTracks tracks;
   if (k == CoopCase::kEgoAhead) {
     tracks.followers.push_back(responder);
-    if (const auto l = neighbour(lane, i, +1)) tracks.leaders.push_back(leader_track(*l, observed_accel_mps2(w, l->id)));
+    if (const auto l = neighbour(lane, i, +1))
+      tracks.leaders.push_back(leader_track(*l, observed_accel_mps2(w, l->id)));
   } else {
     tracks.leaders.push_back(responder);
     if (const auto f = neighbour(lane, i, -1)) tracks.followers.push_back(follower_track(*f, 2.0 * t_c));

@@ -11,7 +11,8 @@ double ego_speed_mps(const WorldSnapshot& w) { return std::max(0.0, w.ego.road_v
 double ego_lat_speed_mps(const WorldSnapshot& w) { return w.ego.road_vy_mps(); }
 
 MainLaneVehicle to_lane_vehicle(const ObservedVehicle& o) {
-  return MainLaneVehicle{o.id, o.state.x_m, std::max(0.0, o.state.road_vx_mps()), o.size.length_m, o.size.width_m, o.limits};
+  return MainLaneVehicle{o.id, o.state.x_m, std::max(0.0, o.state.road_vx_mps()),
+                         o.size.length_m, o.size.width_m, o.limits};
 }
 
 std::vector<MainLaneVehicle> target_lane_vehicles(const WorldSnapshot& w) {

@@ -62,7 +62,8 @@ RC_GTEST_PROP(Sigmoid, ChosenCandidateLiesWithinBounds, ()) {
   const double k_hi = k_lo + *rc::gen::inRange(0, 100) / 1000.0;
   const double pc_pref = *rc::gen::inRange(0, 2000) / 10.0;
   const auto choice = choose_sigmoid(
-      even_grid(pc_min, pc_max, *rc::gen::inRange(1, 20)), [&](double) -> KappaRange { return std::make_pair(k_lo, k_hi); },
+      even_grid(pc_min, pc_max, *rc::gen::inRange(1, 20)),
+      [&](double) -> KappaRange { return std::make_pair(k_lo, k_hi); },
       *rc::gen::inRange(1, 10), [&](double pc, double kappa) { return std::abs(pc - pc_pref) + kappa; });
   RC_ASSERT(choice.has_value());
   RC_ASSERT(choice->param >= pc_min && choice->param <= pc_max);

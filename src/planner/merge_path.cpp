@@ -145,10 +145,11 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
     const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
     const double lateral_room_m = -y - (d_lat + margin_m);
     if (lateral_room_m >= widest_extra) continue;
-    double* memo_slot = memo && k <= kOccupancySamples ? &memo->blocked_below_m[static_cast<std::size_t>(k)] : nullptr;
-    if (memo_slot && std::isnan(*memo_slot)) *memo_slot = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
-    if (lateral_room_m < (memo_slot ? *memo_slot : blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m)))
-      return false;
+    const bool memoised = memo && k <= kOccupancySamples;
+    double below = memoised ? memo->blocked_below_m[static_cast<std::size_t>(k)] : std::nan("");
+    if (std::isnan(below)) below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
+    if (memoised) memo->blocked_below_m[static_cast<std::size_t>(k)] = below;
+    if (lateral_room_m < below) return false;
   }
   return true;
 }

@@ -149,6 +149,9 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       const SpeedRamp ramp = ctx.ramp_to(v);
       return kappa_range_for(s, pc_at(v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(rho_s), ramp, ctx.ego_x_m);
     };
+    // Candidates keep kPcMarginM from both P_c bounds when they can (path-tracking error): one
+    // nearer a bound pays kNearPcBoundPenalty, so it wins only when nothing else is admissible.
+    const double pc_margin = std::min(kPcMarginM, 0.25 * (pc_max - pc_min));
     OccupancyMemo memo;  // shared by the kappa candidates of one v_e* (choose_sigmoid's inner loop)
     double memo_v = std::numeric_limits<double>::quiet_NaN();
     const auto cost = [&](double v, double kappa) {
@@ -157,22 +160,17 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
         memo_v = v;
       }
       const SpeedRamp ramp = ctx.ramp_to(v);
-      const Sigmoid sig{s.road.lane_width_m, kappa, pc_at(v), -s.road.lane_width_m};
+      const double pc = pc_at(v);
+      const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
       if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, OccupancyInstants::over(rho_s), tracks,
                            kOccupancyPlanningBufferM, &memo))
         return std::numeric_limits<double>::infinity();
+      const bool near_bound = pc < pc_min + pc_margin || pc > pc_max - pc_margin;
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
-                               p.cost_traffic_speed_weight * std::abs(v - v_traffic);
+                               p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
+                               (near_bound ? kNearPcBoundPenalty : 0.0);
       return def1_cost + field_cost(w, sig, rho_s, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); },
                                     constant_speed_x);
-    };
-    // Candidates keep kPcMarginM from both P_c bounds when they can (path-tracking error): one
-    // nearer a bound wins only when nothing else is admissible.
-    const double pc_margin = std::min(kPcMarginM, 0.25 * (pc_max - pc_min));
-    const auto penalised_cost = [&](double v, double kappa) {
-      const double pc = pc_at(v);
-      const bool near_bound = pc < pc_min + pc_margin || pc > pc_max - pc_margin;
-      return cost(v, kappa) + (near_bound ? kNearPcBoundPenalty : 0.0);
     };
     // Candidates: pc_candidates values of v_e* evenly over [lo, v_hi], and the speed grid shared
     // with the progress rule within it. The grid is over v_e*, not P_c: an ego that cannot reach
@@ -183,7 +181,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       speeds.push_back(i * grid_step_mps);
     std::sort(speeds.begin(), speeds.end());
     speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
-    const auto choice = choose_sigmoid(speeds, kappa_range, p.kappa_candidates, penalised_cost);
+    const auto choice = choose_sigmoid(speeds, kappa_range, p.kappa_candidates, cost);
     if (!choice) { ++n_sigmoid; continue; }
     if (choice->cost >= best_cost) continue;
     best_cost = choice->cost;

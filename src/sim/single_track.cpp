@@ -18,6 +18,9 @@ double wheelbase_m(const EgoDynamics& d) { return d.cg_to_front_m + d.cg_to_rear
 // what the longitudinal dynamics deliver.
 DynState dynamic_derivative(const DynState& s, double steer_rad, double accel_mps2, const EgoDynamics& d) {
   const double psi = s[2], vx = std::max(s[3], 0.1), vy = s[4], r = s[5];
+  // Driving straight along X (every lateral quantity exactly zero): no tyre force, and the
+  // general expression below evaluates to exactly this, without its five trigonometric calls.
+  if (psi == 0.0 && vy == 0.0 && r == 0.0 && steer_rad == 0.0) return {s[3], 0.0, 0.0, accel_mps2, 0.0, 0.0};
   const double alpha_f = steer_rad - std::atan2(vy + d.cg_to_front_m * r, vx);
   const double alpha_r = -std::atan2(vy - d.cg_to_rear_m * r, vx);
   const double fyf = d.cornering_front_npr * alpha_f;

@@ -9,31 +9,6 @@
 
 namespace mg {
 
-double SpeedRamp::speed_at_mps(double t_s) const {
-  if (v_target_mps >= v0_mps) return std::min(v_target_mps, v0_mps + accel_mps2 * t_s);
-  return std::max(v_target_mps, v0_mps - brake_mps2 * t_s);
-}
-
-double SpeedRamp::distance_at_m(double t_s) const {
-  const double dv = v_target_mps - v0_mps;
-  if (dv == 0.0) return v0_mps * t_s;
-  const double rate = dv >= 0.0 ? accel_mps2 : brake_mps2;
-  const double ramp_s = std::abs(dv) / rate;
-  if (t_s <= ramp_s) {  // still changing speed
-    const double signed_rate = dv >= 0.0 ? rate : -rate;
-    return v0_mps * t_s + 0.5 * signed_rate * t_s * t_s;
-  }
-  // Ramp completed: average speed during the ramp, then v_target.
-  return 0.5 * (v0_mps + v_target_mps) * ramp_s + v_target_mps * (t_s - ramp_s);
-}
-
-double SpeedRamp::speed_squared_at_distance_m2ps2(double distance_m) const {
-  const double v_sq = v0_mps * v0_mps;
-  const double target_sq = v_target_mps * v_target_mps;
-  if (v_target_mps >= v0_mps) return std::min(target_sq, v_sq + 2.0 * accel_mps2 * distance_m);
-  return std::max(target_sq, v_sq - 2.0 * brake_mps2 * distance_m);
-}
-
 SpeedRamp Def1Context::ramp_to(double ve_star_mps) const {
   return SpeedRamp{ego_speed_mps, ve_star_mps, ego_limits.accel_max_mps2, ego_limits.brake_min_mps2};
 }

@@ -7,6 +7,8 @@
 // brake_min downward) and every inequality uses the position and speed it really reaches.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -21,12 +23,38 @@ struct SpeedRamp {
   double v_target_mps = 0.0;
   double accel_mps2 = 0.0;   // > 0
   double brake_mps2 = 0.0;   // > 0
+  // Defined inline below: the planner's searches evaluate them millions of times a second.
   double speed_at_mps(double t_s) const;
   double distance_at_m(double t_s) const;  // non-decreasing in v_target_mps for every t_s >= 0
   // Squared speed once the ramp has covered distance_m (closed form: v^2 = v0^2 +- 2 rate d while
-  // ramping, then v_target^2).
+  // ramping, then v_target^2); between v0^2 and v_target^2 for distance_m >= 0.
   double speed_squared_at_distance_m2ps2(double distance_m) const;
 };
+
+inline double SpeedRamp::speed_at_mps(double t_s) const {
+  if (v_target_mps >= v0_mps) return std::min(v_target_mps, v0_mps + accel_mps2 * t_s);
+  return std::max(v_target_mps, v0_mps - brake_mps2 * t_s);
+}
+
+inline double SpeedRamp::distance_at_m(double t_s) const {
+  const double dv = v_target_mps - v0_mps;
+  if (dv == 0.0) return v0_mps * t_s;
+  const double rate = dv >= 0.0 ? accel_mps2 : brake_mps2;
+  const double ramp_s = std::abs(dv) / rate;
+  if (t_s <= ramp_s) {  // still changing speed
+    const double signed_rate = dv >= 0.0 ? rate : -rate;
+    return v0_mps * t_s + 0.5 * signed_rate * t_s * t_s;
+  }
+  // Ramp completed: average speed during the ramp, then v_target.
+  return 0.5 * (v0_mps + v_target_mps) * ramp_s + v_target_mps * (t_s - ramp_s);
+}
+
+inline double SpeedRamp::speed_squared_at_distance_m2ps2(double distance_m) const {
+  const double v_sq = v0_mps * v0_mps;
+  const double target_sq = v_target_mps * v_target_mps;
+  if (v_target_mps >= v0_mps) return std::min(target_sq, v_sq + 2.0 * accel_mps2 * distance_m);
+  return std::max(target_sq, v_sq - 2.0 * brake_mps2 * distance_m);
+}
 
 // A main-lane vehicle as Definition 1 sees it (its declared limits and current state).
 struct MainLaneVehicle {

@@ -1,5 +1,6 @@
 #include "planner/sigmoid.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -60,11 +61,15 @@ const PeakSampleTable kPeakTable;
 }  // namespace
 
 double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, double ramp_origin_x_m) {
+  // The squared speed never exceeds the ramp's larger end, so a sample whose curvature term times
+  // that cannot beat the peak so far is skipped (the result is the same).
+  const double v_sq_max = std::max(ramp.v0_mps * ramp.v0_mps, ramp.v_target_mps * ramp.v_target_mps);
   double peak = 0.0;
   for (int i = 0; i <= kPeakSamples; ++i) {
-    const double x = sig.pc_m + kPeakTable.u[i] / sig.kappa_per_m;
     const double sgm = kPeakTable.sgm[i];
     const double ypp = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * sgm * (1.0 - sgm) * std::abs(1.0 - 2.0 * sgm);
+    if (v_sq_max * ypp <= peak) continue;
+    const double x = sig.pc_m + kPeakTable.u[i] / sig.kappa_per_m;
     peak = std::max(peak, ramp.speed_squared_at_distance_m2ps2(std::max(0.0, x - ramp_origin_x_m)) * ypp);
   }
   return peak;

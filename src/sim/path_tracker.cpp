@@ -11,26 +11,37 @@ namespace {
 
 double wrap_angle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
+// Along a straight stretch parallel to X (the side lane's or a main lane's centre), where most of
+// an episode is driven, these are exact without the libm calls: hypot(x, 0) = |x| and
+// atan2(0, x) = 0 for x > 0 (C Annex F).
+double segment_length(const PathPoint& a, const PathPoint& b) {
+  const double dx = b.x_m - a.x_m, dy = b.y_m - a.y_m;
+  return dy == 0.0 ? std::abs(dx) : std::hypot(dx, dy);
+}
+
 // The point at signed arc distance ds from parameter t of segment i, walking along the
 // polyline; beyond an end, the end segment extends straight.
 PathPoint point_along(const std::vector<PathPoint>& p, std::size_t i, double t, double ds) {
-  double seg_len = std::hypot(p[i + 1].x_m - p[i].x_m, p[i + 1].y_m - p[i].y_m);
+  double seg_len = segment_length(p[i], p[i + 1]);
   double at = t * seg_len + ds;  // arc position within segment i
   while (at > seg_len && i + 2 < p.size()) {
     at -= seg_len;
     ++i;
-    seg_len = std::hypot(p[i + 1].x_m - p[i].x_m, p[i + 1].y_m - p[i].y_m);
+    seg_len = segment_length(p[i], p[i + 1]);
   }
   while (at < 0.0 && i > 0) {
     --i;
-    seg_len = std::hypot(p[i + 1].x_m - p[i].x_m, p[i + 1].y_m - p[i].y_m);
+    seg_len = segment_length(p[i], p[i + 1]);
     at += seg_len;
   }
   const double u = seg_len > 0.0 ? at / seg_len : 0.0;
   return {p[i].x_m + u * (p[i + 1].x_m - p[i].x_m), p[i].y_m + u * (p[i + 1].y_m - p[i].y_m)};
 }
 
-double chord_heading(const PathPoint& a, const PathPoint& b) { return std::atan2(b.y_m - a.y_m, b.x_m - a.x_m); }
+double chord_heading(const PathPoint& a, const PathPoint& b) {
+  const double dx = b.x_m - a.x_m, dy = b.y_m - a.y_m;
+  return dy == 0.0 && dx > 0.0 ? dy : std::atan2(dy, dx);
+}
 
 }  // namespace
 
@@ -73,13 +84,15 @@ PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, d
 
 double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleState& ego, const EgoDynamics& d,
                             const PathTrackerGains& gains) {
-  const double front_x = ego.x_m + d.cg_to_front_m * std::cos(ego.yaw_rad);
-  const double front_y = ego.y_m + d.cg_to_front_m * std::sin(ego.yaw_rad);
+  const bool along_x = ego.yaw_rad == 0.0;  // cos and sin exactly 1 and 0
+  const double front_x = ego.x_m + d.cg_to_front_m * (along_x ? 1.0 : std::cos(ego.yaw_rad));
+  const double front_y = ego.y_m + d.cg_to_front_m * (along_x ? ego.yaw_rad : std::sin(ego.yaw_rad));
   const double speed = std::max(ego.vx_mps, 0.0);
   const double preview = std::max(gains.preview_min_m, gains.preview_time_s * speed);
   const PathProjection proj = project_on_path(path, front_x, front_y, preview);
   const double heading_error = wrap_angle(proj.heading_rad - ego.yaw_rad);
-  const double cross_term = std::atan2(-gains.cross_track_gain * proj.cross_track_m, gains.softening_mps + speed);
+  const double cross_pull = -gains.cross_track_gain * proj.cross_track_m;
+  const double cross_term = cross_pull == 0.0 ? cross_pull : std::atan2(cross_pull, gains.softening_mps + speed);
   const double path_yaw_rate = speed * proj.curvature_per_m;
   // Feed-forward: the steady-state steering of the linear single-track model for the path's
   // curvature, delta = kappa (L + K v^2).

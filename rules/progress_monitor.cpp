@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <sstream>
 
 #include "planner/definition1.h"
@@ -38,14 +37,19 @@ int first_index_where_not(int lo, int hi, Pred pred) {
 std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceStep& step, double margin,
                                                double leader_braking_mps2) {
   std::vector<MainLaneVehicle> lane;  // rightmost main lane
-  std::map<int, double> accel_mps2;   // id -> current acceleration
+  std::vector<std::pair<int, double>> accel_by_id;  // id, current acceleration
   for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
     const MainVehicle& m = s.vehicles[k - 1];
     if (m.lane != 0) continue;
     const VehicleState& o = state_of(step, k);
     lane.push_back(MainLaneVehicle{m.id, o.x_m, std::max(speed_of(o), 0.0), m.size.length_m, m.size.width_m, m.limits});
-    accel_mps2[m.id] = o.accel_mps2;
+    accel_by_id.emplace_back(m.id, o.accel_mps2);
   }
+  const auto accel_mps2 = [&](int id) {
+    for (const auto& [i, a] : accel_by_id)
+      if (i == id) return a;
+    return 0.0;
+  };
   const double w = s.road.lane_width_m;
   const double exit_after_pc_times_kappa = ln_ratio(side_lane_exit_fraction(s.ego.size.width_m, w));
   const double rho_base = std::max(s.params.planner.merge_duration_s,
@@ -54,12 +58,10 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
   for (const LaneGap& gap : enumerate_gaps(lane)) {
     // Def. 1.2 rests on the leader holding its speed; a leader seen braking offers no Def. 1 gap
     // until it stops braking (it may be braking for slower traffic ahead of it).
-    if (gap.leader && accel_mps2[gap.leader->id] < -leader_braking_mps2) continue;
+    if (gap.leader && accel_mps2(gap.leader->id) < -leader_braking_mps2) continue;
     for (const double factor : kProgressMergeDurationFactors) {
       const Def1Context c{x0, std::max(speed_of(step.ego), 0.0), s.ego.size.length_m, s.ego.limits,
                           s.params.rss.response_time_s, factor * rho_base, s.road.speed_limit_mps};
-      // The gap's leader is not braking (above); the vehicles ahead of it as seen.
-      const GapTracks tracks = gap_tracks(lane, gap, c.merge_duration_s, [&](int id) { return accel_mps2[id]; });
       const auto ve_at = [&](int i) { return c.speed_limit_mps * i / kProgressSpeedSamples; };
       // Ineq. (1.1)'s margin grows with v_e* and (1.2)'s falls (definition1.h), so the samples
       // that satisfy both are one run [first, end): found by bisection over the sample indices.
@@ -73,6 +75,9 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
       if (first == n) continue;
       const int end = !gap.leader ? n : !holds_12(first) ? first
                                         : first_index_where_not(first + 1, n, holds_12);
+      if (first == end) continue;
+      // The gap's leader is not braking (above); the vehicles ahead of it as seen.
+      const GapTracks tracks = gap_tracks(lane, gap, c.merge_duration_s, accel_mps2);
       for (int i = first; i < end; ++i) {
         const double ve = ve_at(i);
         const SpeedRamp ramp = c.ramp_to(ve);

@@ -65,6 +65,8 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
                      const std::function<double(int)>& observed_accel_mps2) {
   GapTracks tracks;
+  tracks.followers.reserve(lane.size());
+  tracks.leaders.reserve(lane.size());
   for (const MainLaneVehicle& v : lane) {
     if (gap.follower && !lane_order_before(*gap.follower, v))
       tracks.followers.push_back(follower_track(v, follower_window_s));

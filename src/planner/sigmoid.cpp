@@ -13,9 +13,8 @@ const double kSixRootThree = 6.0 * std::sqrt(3.0);
 }  // namespace
 
 std::vector<double> even_grid(double lo, double hi, int n) {
-  if (n <= 1 || hi <= lo) return {0.5 * (lo + hi)};
   std::vector<double> v;
-  for (int i = 0; i < n; ++i) v.push_back(i == n - 1 ? hi : lo + (hi - lo) * i / (n - 1));  // ends exact
+  for (int i = 0; i < even_grid_size(lo, hi, n); ++i) v.push_back(even_grid_at(lo, hi, n, i));
   return v;
 }
 
@@ -107,7 +106,8 @@ std::optional<SigmoidChoice> choose_sigmoid(const std::vector<double>& params,
   for (const double param : params) {
     const KappaRange range = kappa_range(param);
     if (!range || range->first > range->second) continue;
-    for (const double kappa : even_grid(range->first, range->second, n_kappa)) {
+    for (int i = 0; i < even_grid_size(range->first, range->second, n_kappa); ++i) {
+      const double kappa = even_grid_at(range->first, range->second, n_kappa, i);
       const double c = cost(param, kappa);
       if (!std::isfinite(c)) continue;  // inadmissible candidate
       if (!best || c < best->cost) best = SigmoidChoice{param, kappa, c};

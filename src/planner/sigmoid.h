@@ -55,8 +55,14 @@ struct SigmoidChoice {
   double cost = 0.0;
 };
 
-// n values evenly over [lo, hi], both ends exact (the midpoint when n == 1 or hi <= lo).
+// n values evenly over [lo, hi], both ends exact (the midpoint when n == 1 or hi <= lo):
+// even_grid_size of them, value i being even_grid_at.
 std::vector<double> even_grid(double lo, double hi, int n);
+inline int even_grid_size(double lo, double hi, int n) { return n <= 1 || hi <= lo ? 1 : n; }
+inline double even_grid_at(double lo, double hi, int n, int i) {
+  if (n <= 1 || hi <= lo) return 0.5 * (lo + hi);
+  return i == n - 1 ? hi : lo + (hi - lo) * i / (n - 1);
+}
 
 // Grid search: for each parameter value the admissible kappa range from kappa_range(param)
 // (nullopt: none), n_kappa values evenly over it, each scored by cost(param, kappa) (a

@@ -81,6 +81,7 @@ class Run {
     const double dt = s_.params.sim.step_s;
     const long long cycle = std::max(1LL, std::llround(s_.params.sim.planner_cycle_s / dt));
     const long long n_steps = std::llround(s_.params.sim.horizon_s / dt);
+    trace_.steps.reserve(static_cast<std::size_t>(n_steps) + 1);
     detector_.update(0.0, ego_, trace_.events);
     for (long long k = 0;; ++k) {
       const double t = static_cast<double>(k) * dt;
@@ -170,7 +171,8 @@ class Run {
 
   void advance(double t, double dt) {
     // Every driver decides on the states at t before anyone moves.
-    std::vector<double> accel(others_.size());
+    std::vector<double>& accel = accel_scratch_;
+    accel.resize(others_.size());
     for (std::size_t i = 0; i < others_.size(); ++i) {
       DriverInput in;
       in.time_s = t;
@@ -197,6 +199,7 @@ class Run {
   std::vector<MainLaneDriver> drivers_;
   std::vector<bool> was_non_compliant_;
   std::vector<V2vMessage> inbox_;
+  std::vector<double> accel_scratch_;  // advance()'s, kept to avoid an allocation every step
   PlanOutput plan_;
   Trace trace_;
 };

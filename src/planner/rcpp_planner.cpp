@@ -16,8 +16,11 @@ namespace mg {
 namespace {
 
 constexpr double kPathBehindM = 10.0;
-constexpr double kPathAheadM = 160.0;
 constexpr double kPathStepM = 1.0;
+// The path reaches kPathBehindM plus kPathAheadS of driving beyond where the ego can get before
+// the next cycle's path replaces it: far more than a tracker's preview (sampling 160 m every cycle
+// was a tenth of a run).
+constexpr double kPathAheadS = 1.0;
 constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds ...
 constexpr double kNearPcBoundPenalty = 1e4;  // ... or pay this (far above any candidate's cost)
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
@@ -37,6 +40,13 @@ std::string fmt(const char* f, double a) {
 std::string gap_name(const Gap& g) {
   const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
   return "gap (follower " + id(g.follower_id) + ", leader " + id(g.leader_id) + ")";
+}
+
+double path_ahead_m(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const double cycle_s = s.params.sim.planner_cycle_s;
+  const double reach_speed_mps = std::max(0.0, ego_speed_mps(w)) + s.ego.limits.accel_max_mps2 * cycle_s;
+  return kPathBehindM + reach_speed_mps * (cycle_s + kPathAheadS);
 }
 
 Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
@@ -339,7 +349,7 @@ constexpr double kReturnPathMinOffsetM = 0.05;
 std::vector<PathPoint> side_lane_path(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
   const double to_centre_m = s.road.side_lane_y_m() - w.ego.y_m;
-  const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + kPathAheadM;
+  const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + path_ahead_m(w);
   if (std::abs(to_centre_m) < kReturnPathMinOffsetM) return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
   // An ego farther from the main lane than the side lane's centre holds its offset: moving toward
   // the main lane only to centre itself can make it laterally unsafe with a vehicle there (with a
@@ -515,7 +525,7 @@ double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
 PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
   PlanOutput out;
-  out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM, kPathStepM);
+  out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + path_ahead_m(w), kPathStepM);
   const double target = merge_target_speed_mps(w);
   out.target_speed_mps = target;
   out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
@@ -532,7 +542,7 @@ PlanOutput RcppPlanner::keep_main_lane(const WorldSnapshot& w) {
   const double lane_w = s.road.lane_width_m;
   const double lane_y = std::max(0.0, std::round(w.ego.y_m / lane_w)) * lane_w;
   PlanOutput out;
-  out.path = sample_straight(lane_y, w.ego.x_m - kPathBehindM, w.ego.x_m + kPathAheadM, kPathStepM);
+  out.path = sample_straight(lane_y, w.ego.x_m - kPathBehindM, w.ego.x_m + path_ahead_m(w), kPathStepM);
   double target = s.road.speed_limit_mps;
   std::string reason = "lane keeping at the speed limit";
   for (const ObservedVehicle& o : w.others) {  // nearest vehicle ahead in the ego's lane

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <charconv>
 #include <functional>
 #include <limits>
 
@@ -31,10 +31,12 @@ constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committ
 constexpr double kMergeRetryAfterAbortS = 1.0;
 constexpr double kLongerMergeEveryS = 0.5;
 
-std::string fmt(const char* f, double a) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, a);
-  return buf;
+// v with `decimals` digits after the point: printf's "%.*f" (std::to_chars is specified to print
+// the same), without its cost; the decision reasons are formatted every cycle.
+std::string fixed(double v, int decimals) {
+  char buf[400];  // the largest double in fixed notation has 309 digits
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  return std::string(buf, r.ptr);
 }
 
 std::string gap_name(const Gap& g) {
@@ -211,10 +213,10 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     d.pc_m = pc;
     d.kappa_per_m = choice->kappa_per_m;
     d.merge_duration_s = rho_s;
-    d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fmt("%.2f", iv.lo_mps) + ", " +
-               fmt("%.2f", iv.hi_mps) + "] m/s; merging at v_e* = " + fmt("%.2f", plan.ve_star_mps) +
-               " m/s, P_c = " + fmt("%.1f", pc) + " m, kappa = " + fmt("%.3f", choice->kappa_per_m) +
-               "/m, rho = " + fmt("%.1f", rho_s) + " s (cost " + fmt("%.2f", choice->cost) + ")";
+    d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fixed(iv.lo_mps, 2) + ", " +
+               fixed(iv.hi_mps, 2) + "] m/s; merging at v_e* = " + fixed(plan.ve_star_mps, 2) +
+               " m/s, P_c = " + fixed(pc, 1) + " m, kappa = " + fixed(choice->kappa_per_m, 3) +
+               "/m, rho = " + fixed(rho_s, 1) + " s (cost " + fixed(choice->cost, 2) + ")";
     best = plan;
   }
   if (!best && why)
@@ -326,9 +328,9 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   d.ve_star_mps = v_after;
   d.reason = std::string(k == CoopCase::kEgoAhead ? "Def. 2.1 (ego ahead)" : "Def. 2.2 (ego behind)") +
              ": no Def. 1 gap; asking vehicle " + std::to_string(o.id) + " for v_o* = " +
-             fmt("%.2f", vo.vo_star_mps) + " m/s (now " + fmt("%.2f", o.speed_mps) + "), P_c = " + fmt("%.1f", pc) +
-             " m, D*_lon = " + fmt("%.1f", vo.d_lon_star_m) + " m" +
-             (k == CoopCase::kEgoBehind ? "; ego brakes at b_min to " + fmt("%.2f", v_after) + " m/s" : "");
+             fixed(vo.vo_star_mps, 2) + " m/s (now " + fixed(o.speed_mps, 2) + "), P_c = " + fixed(pc, 1) +
+             " m, D*_lon = " + fixed(vo.d_lon_star_m, 1) + " m" +
+             (k == CoopCase::kEgoBehind ? "; ego brakes at b_min to " + fixed(v_after, 2) + " m/s" : "");
   return plan;
 }
 
@@ -388,7 +390,7 @@ std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations 
     if ((factor == 1.0) != (durations == MergeDurations::kRhoM)) continue;
     std::string this_why;
     if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why)) return plan;
-    if (why) *why += (why->empty() ? "" : "; ") + ("rho = " + fmt("%.1f", factor * rho_base_s) + " s: ") + this_why;
+    if (why) *why += (why->empty() ? "" : "; ") + ("rho = " + fixed(factor * rho_base_s, 1) + " s: ") + this_why;
   }
   return std::nullopt;
 }
@@ -531,7 +533,7 @@ PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
   out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
   out.decision = merge_->decision;
   if (merge_->decision.time_s != w.time_s)
-    out.decision.reason = "following the merge decided at t = " + fmt("%.2f", merge_->decision.time_s) +
+    out.decision.reason = "following the merge decided at t = " + fixed(merge_->decision.time_s, 2) +
                           " s: " + merge_->decision.reason;
   out.decision.time_s = w.time_s;
   return out;
@@ -602,7 +604,7 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     out.decision.time_s = w.time_s;
     out.decision.mode = DecisionMode::kDef1Halt;
     out.decision.reason = note + "holding the side lane after an aborted merge until t = " +
-                          fmt("%.2f", no_merge_before_s_) + " s, then re-evaluating";
+                          fixed(no_merge_before_s_, 2) + " s, then re-evaluating";
     return out;
   }
   std::string why;
@@ -652,7 +654,7 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     out.decision = pending_->plan.decision;
     if (out.outbox.empty())
       out.decision.reason = "waiting for vehicle " + std::to_string(pending_->plan.partner.id) + " until t = " +
-                            fmt("%.2f", pending_->deadline_s) + " s: " + out.decision.reason;
+                            fixed(pending_->deadline_s, 2) + " s: " + out.decision.reason;
     out.decision.time_s = w.time_s;
     return out;
   }
@@ -661,7 +663,7 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kDef1Halt;
   out.decision.reason = note + "Def. 1.3: no feasible gap (" + why + "); braking to halt by x = " +
-                        fmt("%.1f", halt_x) + " m and re-evaluating";
+                        fixed(halt_x, 1) + " m and re-evaluating";
   return out;
 }
 
@@ -676,9 +678,9 @@ void RcppPlanner::apply_override(const WorldSnapshot& w, PlanOutput& out) const 
   out.accel_limit_mps2 = std::max(out.accel_limit_mps2, s.ego.limits.brake_max_mps2);
   out.decision.mode = DecisionMode::kProperResponse;
   out.decision.reason = "RSS proper response: vehicle " + std::to_string(danger->vehicle_id) + " ahead at " +
-                        fmt("%.1f", danger->lon_distance_m) + " m < D_lon " + fmt("%.1f", danger->d_lon_m) +
-                        " m and lateral " + fmt("%.2f", danger->lat_distance_m) + " m < D_lat " +
-                        fmt("%.2f", danger->d_lat_m) + " m; braking at least b_min (" + out.decision.reason + ")";
+                        fixed(danger->lon_distance_m, 1) + " m < D_lon " + fixed(danger->d_lon_m, 1) +
+                        " m and lateral " + fixed(danger->lat_distance_m, 2) + " m < D_lat " +
+                        fixed(danger->d_lat_m, 2) + " m; braking at least b_min (" + out.decision.reason + ")";
 }
 
 }  // namespace mg

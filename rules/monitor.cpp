@@ -45,14 +45,6 @@ MonitorOutput MarginAccumulator::finish() {
 
 int party_of(const Scenario& s, std::size_t k) { return k == 0 ? kEgoId : s.vehicles[k - 1].id; }
 
-const VehicleSize& size_of(const Scenario& s, std::size_t k) {
-  return k == 0 ? s.ego.size : s.vehicles[k - 1].size;
-}
-
-const Limits& limits_of(const Scenario& s, std::size_t k) {
-  return k == 0 ? s.ego.limits : s.vehicles[k - 1].limits;
-}
-
 int index_of_party(const Scenario& s, int party_id) {
   if (party_id == kEgoId) return 0;
   const int i = s.index_of(party_id);

@@ -53,8 +53,12 @@ inline const VehicleState& state_of(const TraceStep& s, std::size_t k) {
   return k == 0 ? s.ego : s.others[k - 1];
 }
 int party_of(const Scenario& s, std::size_t k);
-const VehicleSize& size_of(const Scenario& s, std::size_t k);
-const Limits& limits_of(const Scenario& s, std::size_t k);
+inline const VehicleSize& size_of(const Scenario& s, std::size_t k) {
+  return k == 0 ? s.ego.size : s.vehicles[k - 1].size;
+}
+inline const Limits& limits_of(const Scenario& s, std::size_t k) {
+  return k == 0 ? s.ego.limits : s.vehicles[k - 1].limits;
+}
 // Index k of a party id (0 for the ego), or -1.
 int index_of_party(const Scenario& s, int party_id);
 // Index of the trace step nearest to time_s.

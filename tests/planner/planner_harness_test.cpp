@@ -114,8 +114,12 @@ void expect_sane(const Scenario& s, const Rollout& r, const std::string& where) 
         ASSERT_GT(out.path[i].x_m, out.path[i - 1].x_m);  // path monotone in X
       }
     }
-    EXPECT_LE(out.path.front().x_m, ego.x_m);                 // covers the current position
-    EXPECT_GE(out.path.back().x_m, ego.x_m + 100.0);          // and enough ahead
+    EXPECT_LE(out.path.front().x_m, ego.x_m);  // covers the current position
+    // ... and enough ahead to be tracked until the next cycle's path: where the ego can get by
+    // then, plus 10 m and half a second for the tracker's lookahead.
+    const double cycle_s = s.params.sim.planner_cycle_s;
+    const double reach_speed_mps = std::max(0.0, ego.road_vx_mps()) + s.ego.limits.accel_max_mps2 * cycle_s;
+    EXPECT_GE(out.path.back().x_m, ego.x_m + 10.0 + reach_speed_mps * (cycle_s + 0.5));
     ASSERT_TRUE(std::isfinite(out.target_speed_mps));
     EXPECT_GE(out.target_speed_mps, 0.0);
     EXPECT_LE(out.target_speed_mps, s.road.speed_limit_mps + 1e-9);

@@ -60,16 +60,20 @@ const PeakSampleTable kPeakTable;
 }  // namespace
 
 double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, double ramp_origin_x_m) {
-  // The squared speed never exceeds the ramp's larger end, so a sample whose curvature term times
-  // that cannot beat the peak so far is skipped (the result is the same).
-  const double v_sq_max = std::max(ramp.v0_mps * ramp.v0_mps, ramp.v_target_mps * ramp.v_target_mps);
+  // The squared speed is monotone along the path (one ramp), so the samples are visited from the
+  // fast end: each one's squared speed bounds every later one's, and a sample whose curvature term
+  // times that bound cannot beat the peak so far is skipped (the result is the same).
+  const bool slowing = ramp.v_target_mps < ramp.v0_mps;
+  double v_sq_bound = std::max(ramp.v0_mps * ramp.v0_mps, ramp.v_target_mps * ramp.v_target_mps);
   double peak = 0.0;
-  for (int i = 0; i <= kPeakSamples; ++i) {
+  for (int n = 0; n <= kPeakSamples; ++n) {
+    const int i = slowing ? n : kPeakSamples - n;
     const double sgm = kPeakTable.sgm[i];
     const double ypp = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * sgm * (1.0 - sgm) * std::abs(1.0 - 2.0 * sgm);
-    if (v_sq_max * ypp <= peak) continue;
+    if (v_sq_bound * ypp <= peak) continue;
     const double x = sig.pc_m + kPeakTable.u[i] / sig.kappa_per_m;
-    peak = std::max(peak, ramp.speed_squared_at_distance_m2ps2(std::max(0.0, x - ramp_origin_x_m)) * ypp);
+    v_sq_bound = ramp.speed_squared_at_distance_m2ps2(std::max(0.0, x - ramp_origin_x_m));
+    peak = std::max(peak, v_sq_bound * ypp);
   }
   return peak;
 }

@@ -54,13 +54,12 @@ PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t
 PairTable::PairTable(const Scenario& s, const Trace& t) {
   const std::size_t n = s.vehicles.size() + 1;
   pairs_ = n * (n - 1) / 2;
-  geometry_.resize(t.steps.size() * pairs_);
+  geometry_.reserve(t.steps.size() * pairs_);
   std::vector<Kinematics> k(n);
   for (std::size_t step = 0; step < t.steps.size(); ++step) {
     for (std::size_t v = 0; v < n; ++v) k[v] = kinematics_of(state_of(t.steps[step], v));
-    std::size_t p = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t j = i + 1; j < n; ++j) geometry_[step * pairs_ + p++] = geometry_of(s, k[i], k[j], i, j);
+      for (std::size_t j = i + 1; j < n; ++j) geometry_.push_back(geometry_of(s, k[i], k[j], i, j));
     }
   }
 }

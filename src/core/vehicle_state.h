@@ -1,6 +1,8 @@
 // Kinematic state of one vehicle in the road frame (DESIGN §2).
 #pragma once
 
+#include <cmath>
+
 namespace mg {
 
 struct VehicleState {
@@ -14,9 +16,16 @@ struct VehicleState {
   double steer_rad = 0.0;        // ego only
   bool operator==(const VehicleState&) const = default;
 
-  // Road-frame velocity components.
-  double road_vx_mps() const;
-  double road_vy_mps() const;
+  // Road-frame velocity components. Heading exactly along X (every main-lane vehicle, the ego on a
+  // straight stretch) needs no trigonometry: cos(+-0) = 1 and sin(+-0) = +-0, so the same value.
+  double road_vx_mps() const {
+    if (yaw_rad == 0.0) return vx_mps - vy_mps * yaw_rad;
+    return vx_mps * std::cos(yaw_rad) - vy_mps * std::sin(yaw_rad);
+  }
+  double road_vy_mps() const {
+    if (yaw_rad == 0.0) return vx_mps * yaw_rad + vy_mps;
+    return vx_mps * std::sin(yaw_rad) + vy_mps * std::cos(yaw_rad);
+  }
 };
 
 }  // namespace mg

@@ -16,22 +16,22 @@ double wheelbase_m(const EgoDynamics& d) { return d.cg_to_front_m + d.cg_to_rear
 // Linear single-track model: lateral tyre forces F = C * alpha; the longitudinal command is
 // the body-frame acceleration itself (v_x' = a), so the speed controller's command is exactly
 // what the longitudinal dynamics deliver.
-DynState dynamic_derivative(const DynState& s, double steer_rad, double accel_mps2, const EgoDynamics& d) {
+DynState dynamic_derivative(const DynState& s, double steer_rad, double cos_steer, double accel_mps2,
+                            const EgoDynamics& d) {
   const double psi = s[2], vx = std::max(s[3], 0.1), vy = s[4], r = s[5];
   // Driving straight along X (every lateral quantity exactly zero): no tyre force, and the
-  // general expression below evaluates to exactly this, without its five trigonometric calls.
+  // general expression below evaluates to exactly this, without its four trigonometric calls.
   if (psi == 0.0 && vy == 0.0 && r == 0.0 && steer_rad == 0.0) return {s[3], 0.0, 0.0, accel_mps2, 0.0, 0.0};
   const double alpha_f = steer_rad - std::atan2(vy + d.cg_to_front_m * r, vx);
   const double alpha_r = -std::atan2(vy - d.cg_to_rear_m * r, vx);
   const double fyf = d.cornering_front_npr * alpha_f;
   const double fyr = d.cornering_rear_npr * alpha_r;
-  const double cos_d = std::cos(steer_rad);
   return {s[3] * std::cos(psi) - vy * std::sin(psi),
           s[3] * std::sin(psi) + vy * std::cos(psi),
           r,
           accel_mps2,
-          (fyf * cos_d + fyr) / d.mass_kg - r * vx,
-          (d.cg_to_front_m * fyf * cos_d - d.cg_to_rear_m * fyr) / d.yaw_inertia_kgm2};
+          (fyf * cos_steer + fyr) / d.mass_kg - r * vx,
+          (d.cg_to_front_m * fyf * cos_steer - d.cg_to_rear_m * fyr) / d.yaw_inertia_kgm2};
 }
 
 DynState axpy(const DynState& s, double h, const DynState& k) {
@@ -54,11 +54,12 @@ DynState step_dynamic(const VehicleState& v, double steer_rad, double accel_mps2
   DynState s{v.x_m, v.y_m, v.yaw_rad, v.vx_mps, v.vy_mps, v.yaw_rate_radps};
   const int n = dynamic_substeps(d, v.vx_mps, dt_s);
   const double h = dt_s / n;
+  const double cos_steer = std::cos(steer_rad);  // the steering angle holds over the step
   for (int i = 0; i < n; ++i) {
-    const DynState k1 = dynamic_derivative(s, steer_rad, accel_mps2, d);
-    const DynState k2 = dynamic_derivative(axpy(s, h / 2, k1), steer_rad, accel_mps2, d);
-    const DynState k3 = dynamic_derivative(axpy(s, h / 2, k2), steer_rad, accel_mps2, d);
-    const DynState k4 = dynamic_derivative(axpy(s, h, k3), steer_rad, accel_mps2, d);
+    const DynState k1 = dynamic_derivative(s, steer_rad, cos_steer, accel_mps2, d);
+    const DynState k2 = dynamic_derivative(axpy(s, h / 2, k1), steer_rad, cos_steer, accel_mps2, d);
+    const DynState k3 = dynamic_derivative(axpy(s, h / 2, k2), steer_rad, cos_steer, accel_mps2, d);
+    const DynState k4 = dynamic_derivative(axpy(s, h, k3), steer_rad, cos_steer, accel_mps2, d);
     for (std::size_t j = 0; j < s.size(); ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
     s[3] = std::max(s[3], 0.0);
   }

@@ -14,28 +14,6 @@ MarginAccumulator::MarginAccumulator(std::string_view rule_id, std::size_t steps
   out_.margin.assign(steps, kNotApplicable);
 }
 
-bool MarginAccumulator::record(std::size_t step, double time_s, double margin, int party,
-                               double required, double actual) {
-  if (step < out_.margin.size()) {
-    double& m = out_.margin[step];
-    m = std::isnan(m) ? margin : std::min(m, margin);
-  }
-  RuleResult& r = out_.result;
-  if (margin < r.min_margin) {
-    r.min_margin = margin;
-    r.min_margin_time_s = time_s;
-    r.required_value = required;
-    r.actual_value = actual;
-  }
-  if (margin < 0.0 && !r.first_violation_time_s) {
-    r.first_violation_time_s = time_s;
-    r.liable_id = party;
-    r.holds = false;
-    return true;
-  }
-  return false;
-}
-
 MonitorOutput MarginAccumulator::finish() {
   if (std::isinf(out_.result.min_margin) && out_.result.detail.empty()) {
     out_.result.detail = "not applicable in this trace";

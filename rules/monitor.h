@@ -3,6 +3,8 @@
 // margin per trace step (NaN where the rule does not apply) and a RuleResult.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -39,7 +41,26 @@ class MarginAccumulator {
   // Records a margin at a step. Returns true when this is the rule's first violation (the
   // caller may then set the detail line).
   bool record(std::size_t step, double time_s, double margin, int party, double required,
-              double actual);
+              double actual) {
+    if (step < out_.margin.size()) {
+      double& m = out_.margin[step];
+      m = std::isnan(m) ? margin : std::min(m, margin);
+    }
+    RuleResult& r = out_.result;
+    if (margin < r.min_margin) {
+      r.min_margin = margin;
+      r.min_margin_time_s = time_s;
+      r.required_value = required;
+      r.actual_value = actual;
+    }
+    if (margin < 0.0 && !r.first_violation_time_s) {
+      r.first_violation_time_s = time_s;
+      r.liable_id = party;
+      r.holds = false;
+      return true;
+    }
+    return false;
+  }
   void set_detail(std::string detail) { out_.result.detail = std::move(detail); }
   bool violated() const { return out_.result.first_violation_time_s.has_value(); }
   MonitorOutput finish();

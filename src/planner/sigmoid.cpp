@@ -46,13 +46,16 @@ constexpr int kPeakSamples = 40;
 constexpr double kPeakSpan = 4.0;
 // The samples of peak_lat_accel_along_mps2 sit at fixed u = kappa (x - P_c), so the logistic
 // values there do not depend on the sigmoid: computed once (the exp was a tenth of a std-4 run).
+// curvature: sgm (1 - sgm) |1 - 2 sgm|, y'' / (W kappa^2).
 struct PeakSampleTable {
   double u[kPeakSamples + 1];
   double sgm[kPeakSamples + 1];
+  double curvature[kPeakSamples + 1];
   PeakSampleTable() {
     for (int i = 0; i <= kPeakSamples; ++i) {
       u[i] = kPeakSpan * (2.0 * i / kPeakSamples - 1.0);
       sgm[i] = 1.0 / (1.0 + std::exp(-u[i]));
+      curvature[i] = sgm[i] * (1.0 - sgm[i]) * std::abs(1.0 - 2.0 * sgm[i]);
     }
   }
 };
@@ -62,12 +65,15 @@ const PeakSampleTable kPeakTable;
 double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, double ramp_origin_x_m) {
   // The squared speed is monotone along the path (one ramp), so the samples are visited from the
   // fast end: each one's squared speed bounds every later one's, and a sample whose curvature term
-  // times that bound cannot beat the peak so far is skipped (the result is the same).
+  // times that bound cannot beat the peak so far is skipped (the result is the same). The test
+  // runs first on the tabulated curvature with a relative slack far above the rounding of y''.
   const bool slowing = ramp.v_target_mps < ramp.v0_mps;
   double v_sq_bound = std::max(ramp.v0_mps * ramp.v0_mps, ramp.v_target_mps * ramp.v_target_mps);
+  const double w_kappa_sq = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * (1.0 + 1e-9);
   double peak = 0.0;
   for (int n = 0; n <= kPeakSamples; ++n) {
     const int i = slowing ? n : kPeakSamples - n;
+    if (v_sq_bound * w_kappa_sq * kPeakTable.curvature[i] <= peak) continue;
     const double sgm = kPeakTable.sgm[i];
     const double ypp = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * sgm * (1.0 - sgm) * std::abs(1.0 - 2.0 * sgm);
     if (v_sq_bound * ypp <= peak) continue;

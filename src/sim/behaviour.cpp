@@ -32,8 +32,8 @@ double safe_distance_behind(double speed_mps, double own_length_m, const Limits&
 
 }  // namespace
 
-std::optional<Leader> find_leader(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
-                                  const VehicleState& ego, bool include_ego) {
+Leaders find_leaders(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
+                     const VehicleState& ego) {
   assert(index < others.size() && others.size() == s.vehicles.size());
   const MainVehicle& self = s.vehicles[index];
   const double x = others[index].x_m;
@@ -47,12 +47,13 @@ std::optional<Leader> find_leader(const Scenario& s, const std::vector<VehicleSt
     if (j == index || s.vehicles[j].lane != self.lane) continue;
     consider(s.vehicles[j].id, others[j].x_m, others[j].vx_mps, s.vehicles[j].size, s.vehicles[j].limits);
   }
-  if (include_ego) {
-    const double half_overlap = 0.5 * (s.road.lane_width_m + s.ego.size.width_m);
-    if (std::abs(ego.y_m - lane_centre_y(s.road, self.lane)) < half_overlap)
-      consider(0, ego.x_m, std::max(ego.road_vx_mps(), 0.0), s.ego.size, s.ego.limits);
-  }
-  return best;
+  Leaders leaders;
+  leaders.main_only = best;
+  const double half_overlap = 0.5 * (s.road.lane_width_m + s.ego.size.width_m);
+  if (std::abs(ego.y_m - lane_centre_y(s.road, self.lane)) < half_overlap)
+    consider(0, ego.x_m, std::max(ego.road_vx_mps(), 0.0), s.ego.size, s.ego.limits);
+  leaders.with_ego = best;
+  return leaders;
 }
 
 double idm_accel_mps2(double speed_mps, double desired_speed_mps, const std::optional<Leader>& leader,

@@ -22,11 +22,15 @@ struct Leader {
   double brake_max_mps2 = 0.0;    // the leader's declared a_brake^max
 };
 
-// Who the main-lane vehicle `index` follows: the nearest vehicle ahead on its lane; the ego
-// counts once its box overlaps the lane laterally (the merged or merging ego), unless
-// `include_ego` is false.
-std::optional<Leader> find_leader(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
-                                  const VehicleState& ego, bool include_ego);
+// Who the main-lane vehicle `index` follows: the nearest vehicle ahead on its lane (main_only)
+// and, once the ego's box overlaps the lane laterally (the merged or merging ego), the nearer of
+// that and the ego (with_ego).
+struct Leaders {
+  std::optional<Leader> with_ego;
+  std::optional<Leader> main_only;
+};
+Leaders find_leaders(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
+                     const VehicleState& ego);
 
 // Intelligent Driver Model (Treiber et al., 2000): a [1 - (v/v0)^4 - (s*/s)^2],
 // s* = s0 + max(0, v T + v dv / (2 sqrt(a b))), s = bumper gap; a = max(accel_max, 0.5).

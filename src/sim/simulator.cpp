@@ -177,8 +177,9 @@ class Run {
       DriverInput in;
       in.time_s = t;
       in.speed_mps = others_[i].vx_mps;
-      in.leader = find_leader(s_, others_, i, ego_, true);
-      in.leader_main_only = find_leader(s_, others_, i, ego_, false);
+      const Leaders leaders = find_leaders(s_, others_, i, ego_);
+      in.leader = leaders.with_ego;
+      in.leader_main_only = leaders.main_only;
       in.ego_in_lane = std::abs(ego_.y_m - s_.vehicles[i].lane * s_.road.lane_width_m) < kInLaneOffsetM;
       accel[i] = drivers_[i].accel_mps2(in);
       note_non_compliance(i, t);

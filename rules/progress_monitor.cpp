@@ -55,6 +55,7 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
   const double rho_base = std::max(s.params.planner.merge_duration_s,
                                    shortest_comfortable_merge_s(w, s.params.planner.lat_accel_comfort_mps2));
   const double x0 = step.ego.x_m;
+  OccupancyMemo memo;  // only for its hint: the speeds scanned mostly fail at the same instant
   for (const LaneGap& gap : enumerate_gaps(lane)) {
     // Def. 1.2 rests on the leader holding its speed; a leader seen braking offers no Def. 1 gap
     // until it stops braking (it may be braking for slower traffic ahead of it).
@@ -86,8 +87,9 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
         if (!kappa) continue;
         if (pc + exit_after_pc_times_kappa / kappa->second > side_exit_limit_x_m(s) - margin) continue;
         const Sigmoid path{w, kappa->second, pc, -w};
+        memo.forget_ramp();
         if (!occupancy_clear(s, x0, step.ego.y_m, path, ramp, OccupancyInstants::over(c.merge_duration_s), tracks,
-                             kOccupancyPlanningBufferM)) continue;
+                             kOccupancyPlanningBufferM, &memo)) continue;
         return FeasibleMerge{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1,
                              c.merge_duration_s, ve};
       }

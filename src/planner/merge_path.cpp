@@ -133,8 +133,7 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
   // P_c (the follower), so most come after a few instants.
   const int k_middle = std::clamp(kOccupancySamples / 2, k_first, std::max(k_first, k_last));
   const double widest_extra = widest_extra_m(s, tracks);
-  for (int j = 0; j <= k_last - k_first; ++j) {
-    const int k = j <= k_middle - k_first ? k_middle - j : k_first + j;
+  const auto blocked_at = [&](int k) {
     const double t = std::max(0.0, k * when.step_s - when.elapsed_s);
     const double x = ego_x_m + ego.distance_at_m(t);
     const double v = ego.speed_at_mps(t);
@@ -146,12 +145,22 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
     // Laterally safe (lane centre Y = 0), with the growing tracking margin.
     const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
     const double lateral_room_m = -y - (d_lat + margin_m);
-    if (lateral_room_m >= widest_extra) continue;
+    if (lateral_room_m >= widest_extra) return false;
     const bool memoised = memo && k <= kOccupancySamples;
     double below = memoised ? memo->blocked_below_m[static_cast<std::size_t>(k)] : std::nan("");
     if (std::isnan(below)) below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
     if (memoised) memo->blocked_below_m[static_cast<std::size_t>(k)] = below;
-    if (lateral_room_m < below) return false;
+    return lateral_room_m < below;
+  };
+  const int hint = memo && memo->last_blocked_k >= k_first && memo->last_blocked_k <= k_last ? memo->last_blocked_k : -1;
+  if (hint >= 0 && blocked_at(hint)) return false;
+  for (int j = 0; j <= k_last - k_first; ++j) {
+    const int k = j <= k_middle - k_first ? k_middle - j : k_first + j;
+    if (k == hint) continue;  // clear, just checked
+    if (blocked_at(k)) {
+      if (memo) memo->last_blocked_k = k;
+      return false;
+    }
   }
   return true;
 }

@@ -105,12 +105,17 @@ struct OccupancyInstants {
   double horizon_s = 0.0;
   static OccupancyInstants over(double horizon_s) { return {horizon_s / kOccupancySamples, 0.0, horizon_s}; }
 };
-// Per instant k of a check, the lateral room below which the ego is not D_lon clear of some lane
-// vehicle: it depends on the ego's speed profile, the instants and the tracks, not on kappa, so
-// the kappa candidates of one v_e* share it (NaN: not computed yet). Optional.
+// Optional state shared by consecutive checks, which changes their cost, never their result:
+// - per instant k, the lateral room below which the ego is not D_lon clear of some lane vehicle:
+//   it depends on the ego's speed profile, the instants and the tracks, not on kappa, so the kappa
+//   candidates of one v_e* share it (NaN: not computed yet; forget_ramp() for another profile);
+// - the instant that blocked the last failed check, visited first by the next one: neighbouring
+//   candidates mostly fail at the same instant.
 struct OccupancyMemo {
   std::array<double, kOccupancySamples + 1> blocked_below_m;
-  OccupancyMemo() { blocked_below_m.fill(std::numeric_limits<double>::quiet_NaN()); }
+  int last_blocked_k = -1;
+  OccupancyMemo() { forget_ramp(); }
+  void forget_ramp() { blocked_below_m.fill(std::numeric_limits<double>::quiet_NaN()); }
 };
 bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
                      const OccupancyInstants& when, const GapTracks& tracks, double buffer_m,

@@ -168,7 +168,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     double memo_v = std::numeric_limits<double>::quiet_NaN();
     const auto cost = [&](double v, double kappa) {
       if (v != memo_v) {
-        memo = OccupancyMemo{};
+        memo.forget_ramp();
         memo_v = v;
       }
       const SpeedRamp ramp = ctx.ramp_to(v);

@@ -1,6 +1,7 @@
 #include "planner/merge_path.h"
 
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 namespace mg {
 namespace {
@@ -70,6 +71,35 @@ TEST(OccupancyClear, AnEgoNearerTheLaneThanThePathStartIsCheckedWhereItIs) {
   const SpeedRamp ego{5.0, 5.0, 2.0, 4.0};
   EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(6.0), tracks, 0.0));
   EXPECT_FALSE(occupancy_clear(s, 0.0, -1.9, path, ego, OccupancyInstants::over(6.0), tracks, 0.0));
+}
+
+
+// The memo (per-instant D_lon blocking shared by the kappa candidates of one speed profile, and
+// the hint that visits the last blocking instant first) saves work only: over a run of checks
+// like the planner's (several speed profiles, several kappa each, one memo throughout) every
+// answer equals the plain check's.
+RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswer, ()) {
+  const Scenario s = road_only();
+  std::vector<MainLaneVehicle> lane;
+  const int n = *rc::gen::inRange(1, 4);
+  for (int i = 0; i < n; ++i)
+    lane.push_back(lane_vehicle(i + 1, *rc::gen::inRange(-800, 1200) / 10.0, *rc::gen::inRange(0, 350) / 10.0));
+  const std::vector<LaneGap> gaps = enumerate_gaps(lane);
+  const LaneGap gap = gaps[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(gaps.size())))];
+  const double rho_s = *rc::gen::inRange(20, 120) / 10.0;
+  const GapTracks tracks = gap_tracks(lane, gap, rho_s, no_accel);
+  const double v0 = *rc::gen::inRange(0, 300) / 10.0;
+  OccupancyMemo memo;
+  for (int speed = 0; speed < 3; ++speed) {
+    const SpeedRamp ego{v0, *rc::gen::inRange(0, 300) / 10.0, 2.0, 4.0};
+    const double pc_m = ego.distance_at_m(0.5 * rho_s);
+    memo.forget_ramp();
+    for (int k = 0; k < 4; ++k) {
+      const Sigmoid path{3.5, *rc::gen::inRange(5, 150) / 100.0, pc_m, -3.5};
+      const bool plain = occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(rho_s), tracks, 1.5);
+      RC_ASSERT(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(rho_s), tracks, 1.5, &memo) == plain);
+    }
+  }
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // candidate search.
 #include "planner/sigmoid.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -44,6 +45,25 @@ TEST(Sigmoid, PeakLateralAccelerationMatchesNumericCurvature) {
     max_ypp = std::max(max_ypp, std::abs(s.y_at_m(x + h) - 2 * s.y_at_m(x) + s.y_at_m(x - h)) / (h * h));
   EXPECT_NEAR(sigmoid_peak_lat_accel_mps2(20, 3.5, 0.1), 400 * max_ypp, 1e-3);
   EXPECT_NEAR(sigmoid_peak_lat_accel_mps2(20, 3.5, 0.1), 1.3472, 1e-4);
+}
+
+// peak_lat_accel_along_mps2 skips samples that cannot beat the peak so far (docs/performance.md):
+// it must return exactly the maximum over all 41 samples, whatever the ramp (speeding up, slowing
+// down, to a stop) and wherever it starts relative to the sigmoid.
+RC_GTEST_PROP(Sigmoid, PeakLateralAccelerationIsTheMaximumOverEverySample, ()) {
+  const Sigmoid sig = gen_sigmoid();
+  const SpeedRamp ramp{*rc::gen::inRange(0, 400) / 10.0, *rc::gen::inRange(0, 400) / 10.0,
+                       *rc::gen::inRange(1, 50) / 10.0, *rc::gen::inRange(1, 90) / 10.0};
+  const double origin_x_m = sig.pc_m + *rc::gen::inRange(-3000, 1000) / 10.0;
+  double full = 0.0;
+  for (int i = 0; i <= 40; ++i) {  // the samples: u = kappa (x - P_c) from -4 to 4, every 0.2
+    const double u = 4.0 * (2.0 * i / 40 - 1.0);
+    const double sgm = 1.0 / (1.0 + std::exp(-u));
+    const double x = sig.pc_m + u / sig.kappa_per_m;
+    const double ypp = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * sgm * (1.0 - sgm) * std::abs(1.0 - 2.0 * sgm);
+    full = std::max(full, ramp.speed_squared_at_distance_m2ps2(std::max(0.0, x - origin_x_m)) * ypp);
+  }
+  RC_ASSERT(peak_lat_accel_along_mps2(sig, ramp, origin_x_m) == full);
 }
 
 RC_GTEST_PROP(Sigmoid, ComfortBoundIsTheLargestComfortableKappa, ()) {

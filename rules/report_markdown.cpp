@@ -1,18 +1,16 @@
 #include "rules/report_markdown.h"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
+#include "core/fixed_text.h"
 #include "rules/rule_catalog.h"
 
 namespace mg {
 
 std::string format_number(double v, int decimals) {
   if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
+  return fixed_text(v, decimals);
 }
 
 namespace {

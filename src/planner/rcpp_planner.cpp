@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <charconv>
 #include <functional>
 #include <limits>
 
+#include "core/fixed_text.h"
 #include "core/rss.h"
 #include "planner/merge_path.h"
 #include "planner/potential_field.h"
@@ -17,10 +17,6 @@ namespace {
 
 constexpr double kPathBehindM = 10.0;
 constexpr double kPathStepM = 1.0;
-// The path reaches kPathBehindM plus kPathAheadS of driving beyond where the ego can get before
-// the next cycle's path replaces it: far more than a tracker's preview (sampling 160 m every cycle
-// was a tenth of a run).
-constexpr double kPathAheadS = 1.0;
 constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds ...
 constexpr double kNearPcBoundPenalty = 1e4;  // ... or pay this (far above any candidate's cost)
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
@@ -31,24 +27,9 @@ constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committ
 constexpr double kMergeRetryAfterAbortS = 1.0;
 constexpr double kLongerMergeEveryS = 0.5;
 
-// v with `decimals` digits after the point: printf's "%.*f" (std::to_chars is specified to print
-// the same), without its cost; the decision reasons are formatted every cycle.
-std::string fixed(double v, int decimals) {
-  char buf[400];  // the largest double in fixed notation has 309 digits
-  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-  return std::string(buf, r.ptr);
-}
-
 std::string gap_name(const Gap& g) {
   const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
   return "gap (follower " + id(g.follower_id) + ", leader " + id(g.leader_id) + ")";
-}
-
-double path_ahead_m(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
-  const double cycle_s = s.params.sim.planner_cycle_s;
-  const double reach_speed_mps = std::max(0.0, ego_speed_mps(w)) + s.ego.limits.accel_max_mps2 * cycle_s;
-  return kPathBehindM + reach_speed_mps * (cycle_s + kPathAheadS);
 }
 
 Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
@@ -213,10 +194,10 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     d.pc_m = pc;
     d.kappa_per_m = choice->kappa_per_m;
     d.merge_duration_s = rho_s;
-    d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fixed(iv.lo_mps, 2) + ", " +
-               fixed(iv.hi_mps, 2) + "] m/s; merging at v_e* = " + fixed(plan.ve_star_mps, 2) +
-               " m/s, P_c = " + fixed(pc, 1) + " m, kappa = " + fixed(choice->kappa_per_m, 3) +
-               "/m, rho = " + fixed(rho_s, 1) + " s (cost " + fixed(choice->cost, 2) + ")";
+    d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fixed_text(iv.lo_mps, 2) + ", " +
+               fixed_text(iv.hi_mps, 2) + "] m/s; merging at v_e* = " + fixed_text(plan.ve_star_mps, 2) +
+               " m/s, P_c = " + fixed_text(pc, 1) + " m, kappa = " + fixed_text(choice->kappa_per_m, 3) +
+               "/m, rho = " + fixed_text(rho_s, 1) + " s (cost " + fixed_text(choice->cost, 2) + ")";
     best = plan;
   }
   if (!best && why)
@@ -328,9 +309,9 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   d.ve_star_mps = v_after;
   d.reason = std::string(k == CoopCase::kEgoAhead ? "Def. 2.1 (ego ahead)" : "Def. 2.2 (ego behind)") +
              ": no Def. 1 gap; asking vehicle " + std::to_string(o.id) + " for v_o* = " +
-             fixed(vo.vo_star_mps, 2) + " m/s (now " + fixed(o.speed_mps, 2) + "), P_c = " + fixed(pc, 1) +
-             " m, D*_lon = " + fixed(vo.d_lon_star_m, 1) + " m" +
-             (k == CoopCase::kEgoBehind ? "; ego brakes at b_min to " + fixed(v_after, 2) + " m/s" : "");
+             fixed_text(vo.vo_star_mps, 2) + " m/s (now " + fixed_text(o.speed_mps, 2) + "), P_c = " + fixed_text(pc, 1) +
+             " m, D*_lon = " + fixed_text(vo.d_lon_star_m, 1) + " m" +
+             (k == CoopCase::kEgoBehind ? "; ego brakes at b_min to " + fixed_text(v_after, 2) + " m/s" : "");
   return plan;
 }
 
@@ -351,7 +332,7 @@ constexpr double kReturnPathMinOffsetM = 0.05;
 std::vector<PathPoint> side_lane_path(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
   const double to_centre_m = s.road.side_lane_y_m() - w.ego.y_m;
-  const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + path_ahead_m(w);
+  const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + tracked_path_ahead_m(w);
   if (std::abs(to_centre_m) < kReturnPathMinOffsetM) return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
   // An ego farther from the main lane than the side lane's centre holds its offset: moving toward
   // the main lane only to centre itself can make it laterally unsafe with a vehicle there (with a
@@ -390,7 +371,7 @@ std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations 
     if ((factor == 1.0) != (durations == MergeDurations::kRhoM)) continue;
     std::string this_why;
     if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why)) return plan;
-    if (why) *why += (why->empty() ? "" : "; ") + ("rho = " + fixed(factor * rho_base_s, 1) + " s: ") + this_why;
+    if (why) *why += (why->empty() ? "" : "; ") + ("rho = " + fixed_text(factor * rho_base_s, 1) + " s: ") + this_why;
   }
   return std::nullopt;
 }
@@ -527,13 +508,13 @@ double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
 PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
   PlanOutput out;
-  out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + path_ahead_m(w), kPathStepM);
+  out.path = sample_sigmoid(merge_->sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kPathStepM);
   const double target = merge_target_speed_mps(w);
   out.target_speed_mps = target;
   out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
   out.decision = merge_->decision;
   if (merge_->decision.time_s != w.time_s)
-    out.decision.reason = "following the merge decided at t = " + fixed(merge_->decision.time_s, 2) +
+    out.decision.reason = "following the merge decided at t = " + fixed_text(merge_->decision.time_s, 2) +
                           " s: " + merge_->decision.reason;
   out.decision.time_s = w.time_s;
   return out;
@@ -544,7 +525,7 @@ PlanOutput RcppPlanner::keep_main_lane(const WorldSnapshot& w) {
   const double lane_w = s.road.lane_width_m;
   const double lane_y = std::max(0.0, std::round(w.ego.y_m / lane_w)) * lane_w;
   PlanOutput out;
-  out.path = sample_straight(lane_y, w.ego.x_m - kPathBehindM, w.ego.x_m + path_ahead_m(w), kPathStepM);
+  out.path = sample_straight(lane_y, w.ego.x_m - kPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kPathStepM);
   double target = s.road.speed_limit_mps;
   std::string reason = "lane keeping at the speed limit";
   for (const ObservedVehicle& o : w.others) {  // nearest vehicle ahead in the ego's lane
@@ -604,7 +585,7 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     out.decision.time_s = w.time_s;
     out.decision.mode = DecisionMode::kDef1Halt;
     out.decision.reason = note + "holding the side lane after an aborted merge until t = " +
-                          fixed(no_merge_before_s_, 2) + " s, then re-evaluating";
+                          fixed_text(no_merge_before_s_, 2) + " s, then re-evaluating";
     return out;
   }
   std::string why;
@@ -654,7 +635,7 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     out.decision = pending_->plan.decision;
     if (out.outbox.empty())
       out.decision.reason = "waiting for vehicle " + std::to_string(pending_->plan.partner.id) + " until t = " +
-                            fixed(pending_->deadline_s, 2) + " s: " + out.decision.reason;
+                            fixed_text(pending_->deadline_s, 2) + " s: " + out.decision.reason;
     out.decision.time_s = w.time_s;
     return out;
   }
@@ -663,7 +644,7 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kDef1Halt;
   out.decision.reason = note + "Def. 1.3: no feasible gap (" + why + "); braking to halt by x = " +
-                        fixed(halt_x, 1) + " m and re-evaluating";
+                        fixed_text(halt_x, 1) + " m and re-evaluating";
   return out;
 }
 
@@ -678,9 +659,9 @@ void RcppPlanner::apply_override(const WorldSnapshot& w, PlanOutput& out) const 
   out.accel_limit_mps2 = std::max(out.accel_limit_mps2, s.ego.limits.brake_max_mps2);
   out.decision.mode = DecisionMode::kProperResponse;
   out.decision.reason = "RSS proper response: vehicle " + std::to_string(danger->vehicle_id) + " ahead at " +
-                        fixed(danger->lon_distance_m, 1) + " m < D_lon " + fixed(danger->d_lon_m, 1) +
-                        " m and lateral " + fixed(danger->lat_distance_m, 2) + " m < D_lat " +
-                        fixed(danger->d_lat_m, 2) + " m; braking at least b_min (" + out.decision.reason + ")";
+                        fixed_text(danger->lon_distance_m, 1) + " m < D_lon " + fixed_text(danger->d_lon_m, 1) +
+                        " m and lateral " + fixed_text(danger->lat_distance_m, 2) + " m < D_lat " +
+                        fixed_text(danger->d_lat_m, 2) + " m; braking at least b_min (" + out.decision.reason + ")";
 }
 
 }  // namespace mg

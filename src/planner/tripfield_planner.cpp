@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "core/fixed_text.h"
 #include "planner/definition1.h"
 #include "planner/potential_field.h"
 #include "planner/world_view.h"
@@ -13,7 +13,6 @@ namespace {
 
 constexpr double kStepM = 2.0;
 constexpr double kBehindM = 10.0;
-constexpr double kAheadM = 160.0;
 constexpr double kGradientDeltaM = 0.05;  // central difference for dU/dY
 constexpr double kLookaheadS = 1.0;       // speed adaptation looks this far ahead
 
@@ -33,17 +32,21 @@ struct FieldModel {
     return u;
   }
 
-  double total(double x, double y, double t) const {
+  // The lane attraction's growth toward the side lane's end (a function of x alone).
+  double urgency(double x) const {
+    const Road& road = w->scenario->road;
+    return 1.0 + k->end_urgency_gain * std::exp(-std::max(0.0, road.side_lane_end_x_m - x) / k->end_urgency_length_m);
+  }
+
+  double total(double x, double y, double t, double urgency_at_x) const {
     const Scenario& s = *w->scenario;
     const Road& road = s.road;
     const bool side_lane_here = x >= road.side_lane_start_x_m && x <= road.side_lane_end_x_m;
     const double right_y = side_lane_here ? -1.5 * road.lane_width_m : -0.5 * road.lane_width_m;
     const double left_y = (road.main_lanes - 0.5) * road.lane_width_m;
-    const double urgency = 1.0 + k->end_urgency_gain * std::exp(-std::max(0.0, road.side_lane_end_x_m - x) /
-                                                                  k->end_urgency_length_m);
     return road_mark_potential(y, right_y, false, s.ego.size.width_m, s.params.planner.pf_road_beta) +
            road_mark_potential(y, left_y, true, s.ego.size.width_m, s.params.planner.pf_road_beta) +
-           obstacles(x, y, t) + 0.5 * k->lane_attraction * urgency * y * y;
+           obstacles(x, y, t) + 0.5 * k->lane_attraction * urgency_at_x * y * y;
   }
 };
 
@@ -68,10 +71,13 @@ PlanOutput TripFieldPlanner::plan(const WorldSnapshot& w) {
   PlanOutput out;
   out.path.push_back({w.ego.x_m - kBehindM, w.ego.y_m});
   double y = w.ego.y_m;
-  for (double x = w.ego.x_m; x <= w.ego.x_m + kAheadM; x += kStepM) {
+  // Each point follows from the ones before it, so a shorter path is the same path, cut.
+  const double ahead_m = tracked_path_ahead_m(w);
+  for (double x = w.ego.x_m; x <= w.ego.x_m + ahead_m; x += kStepM) {
     out.path.push_back({x, y});
     const double t = (x - w.ego.x_m) / v_path;
-    const double grad = (field.total(x, y + kGradientDeltaM, t) - field.total(x, y - kGradientDeltaM, t)) /
+    const double urgency = field.urgency(x);
+    const double grad = (field.total(x, y + kGradientDeltaM, t, urgency) - field.total(x, y - kGradientDeltaM, t, urgency)) /
                         (2.0 * kGradientDeltaM);
     const double dy = std::clamp(-k_.gradient_step * grad * kStepM, -k_.max_slope * kStepM, k_.max_slope * kStepM);
     y = std::clamp(y + dy, y_min, y_max);
@@ -94,11 +100,8 @@ PlanOutput TripFieldPlanner::plan(const WorldSnapshot& w) {
   out.accel_limit_mps2 = target >= v_e ? s.ego.limits.accel_max_mps2 : brake;
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kPotentialField;
-  char buf[160];
-  std::snprintf(buf, sizeof buf,
-                "TriPField-style baseline: path follows the field gradient; obstacle field ahead %.2f, target %.2f m/s",
-                u_ahead, target);
-  out.decision.reason = buf;
+  out.decision.reason = "TriPField-style baseline: path follows the field gradient; obstacle field ahead " +
+                        fixed_text(u_ahead, 2) + ", target " + fixed_text(target, 2) + " m/s";
   return out;
 }
 

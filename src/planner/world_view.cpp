@@ -10,6 +10,13 @@ namespace mg {
 double ego_speed_mps(const WorldSnapshot& w) { return std::max(0.0, w.ego.road_vx_mps()); }
 double ego_lat_speed_mps(const WorldSnapshot& w) { return w.ego.road_vy_mps(); }
 
+double tracked_path_ahead_m(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const double cycle_s = s.params.sim.planner_cycle_s;
+  const double reach_speed_mps = ego_speed_mps(w) + s.ego.limits.accel_max_mps2 * cycle_s;
+  return 10.0 + reach_speed_mps * (cycle_s + 1.0);
+}
+
 MainLaneVehicle to_lane_vehicle(const ObservedVehicle& o) {
   return MainLaneVehicle{o.id, o.state.x_m, std::max(0.0, o.state.road_vx_mps()),
                          o.size.length_m, o.size.width_m, o.limits};

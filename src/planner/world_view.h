@@ -13,6 +13,12 @@ namespace mg {
 double ego_speed_mps(const WorldSnapshot& w);      // road-frame longitudinal speed, >= 0
 double ego_lat_speed_mps(const WorldSnapshot& w);  // road-frame lateral speed (+Y left)
 
+// How far ahead of the ego a planned path reaches: 10 m plus one second of driving beyond where
+// the ego can get before the next cycle's path replaces it (its speed plus a_max for a cycle), far
+// more than a tracker's preview. Planners once sampled 160 m every cycle: a tenth of a run, and
+// half of the baseline's.
+double tracked_path_ahead_m(const WorldSnapshot& w);
+
 MainLaneVehicle to_lane_vehicle(const ObservedVehicle& o);
 // Vehicles whose centre lies in the rightmost main lane (|Y| < W/2), sorted by x then id.
 std::vector<MainLaneVehicle> target_lane_vehicles(const WorldSnapshot& w);

@@ -1,10 +1,10 @@
 #include "sim/paper_report.h"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/fixed_text.h"
 #include "core/atomic_file.h"
 #include "planner/planner.h"
 #include "sim/simulator.h"
@@ -34,9 +34,7 @@ const PaperRun& run_of(const PaperExperiment& e, const std::string& planner) {
 
 std::string fmt(double v, int decimals = 2) {
   if (!std::isfinite(v)) return "n/a";
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
+  return fixed_text(v, decimals);
 }
 
 std::string fmt(const std::optional<double>& v, int decimals = 2) { return v ? fmt(*v, decimals) : "n/a"; }

@@ -71,8 +71,9 @@ PlanOutput TripFieldPlanner::plan(const WorldSnapshot& w) {
   PlanOutput out;
   out.path.push_back({w.ego.x_m - kBehindM, w.ego.y_m});
   double y = w.ego.y_m;
-  // Each point follows from the ones before it, so a shorter path is the same path, cut.
-  const double ahead_m = tracked_path_ahead_m(w);
+  // Each point follows from the ones before it, so a shorter path is the same path, cut (one step
+  // past tracked_path_ahead_m).
+  const double ahead_m = tracked_path_ahead_m(w) + kStepM;
   for (double x = w.ego.x_m; x <= w.ego.x_m + ahead_m; x += kStepM) {
     out.path.push_back({x, y});
     const double t = (x - w.ego.x_m) / v_path;

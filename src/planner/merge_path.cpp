@@ -41,8 +41,12 @@ KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, dou
                               half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
   const double kappa_cap = kappa_cap_per_m(s);
   if (lo > kappa_cap) return std::nullopt;
+  // The search needs the margin's sign only: a flat sigmoid is comfortable by the bound alone (a
+  // lower bound of the margin, then >= 0), without the speed profile.
   const auto comfort_margin = [&](double kappa) {
     const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
+    const double by_bound = p.lat_accel_comfort_mps2 - peak_lat_accel_bound_mps2(sig, ramp);
+    if (by_bound >= 0.0) return by_bound;
     return p.lat_accel_comfort_mps2 - peak_lat_accel_along_mps2(sig, ramp, ramp_origin_x_m);
   };
   const auto hi = highest_satisfying(comfort_margin, lo, kappa_cap, 1e-5);

@@ -46,19 +46,23 @@ constexpr int kPeakSamples = 40;
 constexpr double kPeakSpan = 4.0;
 // The samples of peak_lat_accel_along_mps2 sit at fixed u = kappa (x - P_c), so the logistic
 // values there do not depend on the sigmoid: computed once (the exp was a tenth of a std-4 run).
-// curvature: sgm (1 - sgm) |1 - 2 sgm|, y'' / (W kappa^2).
+// curvature: sgm (1 - sgm) |1 - 2 sgm|, y'' / (W kappa^2); max_curvature, the largest.
 struct PeakSampleTable {
   double u[kPeakSamples + 1];
   double sgm[kPeakSamples + 1];
   double curvature[kPeakSamples + 1];
+  double max_curvature = 0.0;
   PeakSampleTable() {
     for (int i = 0; i <= kPeakSamples; ++i) {
       u[i] = kPeakSpan * (2.0 * i / kPeakSamples - 1.0);
       sgm[i] = 1.0 / (1.0 + std::exp(-u[i]));
       curvature[i] = sgm[i] * (1.0 - sgm[i]) * std::abs(1.0 - 2.0 * sgm[i]);
+      max_curvature = std::max(max_curvature, curvature[i]);
     }
   }
 };
+// Relative slack on bounds computed from the tabulated curvature instead of y'' itself.
+constexpr double kCurvatureSlack = 1e-9;
 const PeakSampleTable kPeakTable;
 }  // namespace
 
@@ -69,7 +73,7 @@ double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, doub
   // runs first on the tabulated curvature with a relative slack far above the rounding of y''.
   const bool slowing = ramp.v_target_mps < ramp.v0_mps;
   double v_sq_bound = std::max(ramp.v0_mps * ramp.v0_mps, ramp.v_target_mps * ramp.v_target_mps);
-  const double w_kappa_sq = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * (1.0 + 1e-9);
+  const double w_kappa_sq = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * (1.0 + kCurvatureSlack);
   double peak = 0.0;
   for (int n = 0; n <= kPeakSamples; ++n) {
     const int i = slowing ? n : kPeakSamples - n;
@@ -82,6 +86,11 @@ double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, doub
     peak = std::max(peak, v_sq_bound * ypp);
   }
   return peak;
+}
+
+double peak_lat_accel_bound_mps2(const Sigmoid& sig, const SpeedRamp& ramp) {
+  const double v_sq_max = std::max(ramp.v0_mps * ramp.v0_mps, ramp.v_target_mps * ramp.v_target_mps);
+  return v_sq_max * sig.width_m * sig.kappa_per_m * sig.kappa_per_m * kPeakTable.max_curvature * (1.0 + kCurvatureSlack);
 }
 
 namespace {

@@ -37,6 +37,9 @@ double shortest_comfortable_merge_s(double width_m, double lat_accel_mps2);
 // ramp_origin_x_m): max of v(x)^2 |y''(x)| over points within +-4/kappa of P_c, y'' = W kappa^2
 // s(1-s)(1-2s) for the logistic s (RCPP §II-C; equals sigmoid_peak_lat_accel_mps2 at fixed v).
 double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, double ramp_origin_x_m);
+// A bound that is never below it, wherever the ramp starts: the ramp's top speed at the sharpest
+// sample (with a relative slack far above rounding). Increasing in kappa.
+double peak_lat_accel_bound_mps2(const Sigmoid& sig, const SpeedRamp& ramp);
 
 // Fraction of W within which the path counts as "at" a lane centre: the sigmoid starts within
 // kSigmoidEndFraction of the side lane at the ego (so the path is continuous with the ego's

@@ -64,6 +64,8 @@ RC_GTEST_PROP(Sigmoid, PeakLateralAccelerationIsTheMaximumOverEverySample, ()) {
     full = std::max(full, ramp.speed_squared_at_distance_m2ps2(std::max(0.0, x - origin_x_m)) * ypp);
   }
   RC_ASSERT(peak_lat_accel_along_mps2(sig, ramp, origin_x_m) == full);
+  // The profile-free bound the comfort search uses to skip flat sigmoids is never below it.
+  RC_ASSERT(peak_lat_accel_bound_mps2(sig, ramp) >= full);
 }
 
 RC_GTEST_PROP(Sigmoid, ComfortBoundIsTheLargestComfortableKappa, ()) {

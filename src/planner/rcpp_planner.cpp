@@ -51,15 +51,19 @@ double observed_accel_mps2(const WorldSnapshot& w, int id) {
   return 0.0;
 }
 
-// Potential field cost of a candidate path (docs/planner.md): the mean of RCPP eq. (3)-(5) over
-// kFieldSamples instants of [0, duration_s], the ego at ego_x_at(t) on the sigmoid, every other
-// vehicle at other_x_at(o, t), sigma from the RSS distances at the decision instant.
-double field_cost(const WorldSnapshot& w, const Sigmoid& sig, double duration_s,
-                  const std::function<double(double)>& ego_x_at,
-                  const std::function<double(const ObservedVehicle&, double)>& other_x_at) {
+// The potential field of RCPP eq. (3)-(5) at kFieldSamples + 1 instants of [0, duration_s] (docs/
+// planner.md): every other vehicle at other_x_at(o, t), sigma from the RSS distances at the
+// decision instant. It does not depend on the candidate path: one timeline serves every candidate
+// of a search.
+struct FieldTimeline {
+  double duration_s = 0.0;
+  std::vector<FieldScene> scenes;  // scenes[k] at t = duration_s k / kFieldSamples
+};
+
+FieldTimeline field_timeline(const WorldSnapshot& w, double duration_s,
+                             const std::function<double(const ObservedVehicle&, double)>& other_x_at) {
   const Scenario& s = *w.scenario;
   const double v_e = ego_speed_mps(w);
-  FieldScene scene{&s.road, s.ego.size.width_m, {}, 0.0, LaneCentreMode::kMerging};
   std::vector<std::pair<double, double>> d_lat_lon;
   for (const ObservedVehicle& o : w.others) {
     const double v_o = std::max(0.0, o.state.road_vx_mps());
@@ -74,15 +78,28 @@ double field_cost(const WorldSnapshot& w, const Sigmoid& sig, double duration_s,
                                         s.params.rss.fluctuation_margin_m});
     d_lat_lon.emplace_back(d_lat, d_lon);
   }
-  double sum = 0.0;
+  FieldTimeline field{duration_s, {}};
+  field.scenes.reserve(kFieldSamples + 1);
   for (int k = 0; k <= kFieldSamples; ++k) {
     const double t = duration_s * k / kFieldSamples;
-    scene.obstacles.clear();
+    FieldScene scene{&s.road, s.ego.size.width_m, {}, 0.0, LaneCentreMode::kMerging};
     for (std::size_t i = 0; i < w.others.size(); ++i)
       scene.obstacles.push_back(obstacle_field_from_rss(other_x_at(w.others[i], t), w.others[i].state.y_m,
                                                         d_lat_lon[i].first, d_lat_lon[i].second));
-    const double x = ego_x_at(t);
-    sum += field_potential(scene, s.params.planner, x, sig.y_at_m(x));
+    field.scenes.push_back(std::move(scene));
+  }
+  return field;
+}
+
+// Potential field cost of a candidate path: the mean over the timeline's instants of the
+// potential at the ego, at ego_x_at(t) on the sigmoid.
+template <class EgoXAt>
+double field_cost(const WorldSnapshot& w, const FieldTimeline& field, const Sigmoid& sig, EgoXAt ego_x_at) {
+  const PlannerParams& p = w.scenario->params.planner;
+  double sum = 0.0;
+  for (int k = 0; k <= kFieldSamples; ++k) {
+    const double x = ego_x_at(field.duration_s * k / kFieldSamples);
+    sum += field_potential(field.scenes[static_cast<std::size_t>(k)], p, x, sig.y_at_m(x));
   }
   return sum / (kFieldSamples + 1);
 }
@@ -109,6 +126,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
   int n_def1 = 0, n_cross = 0, n_sigmoid = 0;
   const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
   const auto accel_of = [&](int id) { return observed_accel_mps2(w, id); };
+  std::optional<FieldTimeline> field_at_rho;  // built when the first candidate needs it
   for (const LaneGap& gap : enumerate_gaps(lane)) {
     const Gap gid{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1};
     const SpeedInterval iv = solve_def1_interval(ctx, gap);
@@ -162,8 +180,8 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
                                (near_bound ? kNearPcBoundPenalty : 0.0);
-      return def1_cost + field_cost(w, sig, rho_s, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); },
-                                    constant_speed_x);
+      if (!field_at_rho) field_at_rho = field_timeline(w, rho_s, constant_speed_x);
+      return def1_cost + field_cost(w, *field_at_rho, sig, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); });
     };
     // Candidates: pc_candidates values of v_e* evenly over [lo, v_hi], and the speed grid shared
     // with the progress rule within it. The grid is over v_e*, not P_c: an ego that cannot reach
@@ -278,13 +296,15 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   const auto partner_x = [&](const ObservedVehicle& v, double t) {
     return v.id == o.id ? o.x_m + responder_ramp.distance_at_m(t) : constant_speed_x(v, t);
   };
+  std::optional<FieldTimeline> field;  // built when the first candidate needs it
   const auto cost = [&](double pc_m, double kappa) {
     const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
     // No planning buffer: the responder's cooperative profile is built to leave exactly D*_lon.
     if (!occupancy_clear(s, c.ego_x_m, w.ego.y_m, sig, ramp,
                          OccupancyInstants::over(c.comm_threshold_s + c.merge_duration_s), tracks, 0.0))
       return std::numeric_limits<double>::infinity();
-    return base + field_cost(w, sig, 2.0 * t_c, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); }, partner_x);
+    if (!field) field = field_timeline(w, 2.0 * t_c, partner_x);
+    return base + field_cost(w, *field, sig, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); });
   };
   const auto choice = choose_sigmoid({pc}, kappa_range, p.kappa_candidates, cost);
   if (!choice) return std::nullopt;

@@ -38,11 +38,16 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
                                                double leader_braking_mps2) {
   std::vector<MainLaneVehicle> lane;  // rightmost main lane
   std::vector<std::pair<int, double>> accel_by_id;  // id, current acceleration
+  std::vector<Track> beside;                        // the other main lanes
   for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
     const MainVehicle& m = s.vehicles[k - 1];
-    if (m.lane != 0) continue;
     const VehicleState& o = state_of(step, k);
-    lane.push_back(MainLaneVehicle{m.id, o.x_m, std::max(speed_of(o), 0.0), m.size.length_m, m.size.width_m, m.limits});
+    const MainLaneVehicle v{m.id, o.x_m, std::max(speed_of(o), 0.0), m.size.length_m, m.size.width_m, m.limits};
+    if (m.lane != 0) {
+      beside.push_back(beside_track(v, m.lane * s.road.lane_width_m, o.accel_mps2));
+      continue;
+    }
+    lane.push_back(v);
     accel_by_id.emplace_back(m.id, o.accel_mps2);
   }
   const auto accel_mps2 = [&](int id) {
@@ -78,7 +83,8 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
                                         : first_index_where_not(first + 1, n, holds_12);
       if (first == end) continue;
       // The gap's leader is not braking (above); the vehicles ahead of it as seen.
-      const GapTracks tracks = gap_tracks(lane, gap, c.merge_duration_s, accel_mps2);
+      GapTracks tracks = gap_tracks(lane, gap, c.merge_duration_s, accel_mps2);
+      tracks.beside = beside;
       for (int i = first; i < end; ++i) {
         const double ve = ve_at(i);
         const SpeedRamp ramp = c.ramp_to(ve);

@@ -66,6 +66,13 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
   return Track{l.x_m, motion, l.length_m, l.width_m, l.limits};
 }
 
+Track beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2) {
+  assert(lane_y_m > 0.0);
+  Track t = leader_track(v, observed_accel_mps2);
+  t.lane_y_m = lane_y_m;
+  return t;
+}
+
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
                      const std::function<double(int)>& observed_accel_mps2) {
   GapTracks tracks;
@@ -107,14 +114,22 @@ double blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, 
                                          el.brake_min_mps2, l.limits.brake_max_mps2});
     if (x_m + d + buffer_m > l.x_at(t_s)) block(l);
   }
+  // Another lane's vehicle ahead of the ego: its lane centre is lane_y_m farther away.
+  for (const Track& o : tracks.beside) {
+    const double x_o = o.x_at(t_s);
+    if (x_o <= x_m) continue;
+    const double d = rss_longitudinal_m({v_mps, o.v_at(t_s), le, o.length_m, t_lag, el.accel_max_mps2,
+                                         el.brake_min_mps2, o.limits.brake_max_mps2});
+    if (x_m + d + buffer_m > x_o) below = std::max(below, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m);
+  }
   return below;
 }
 
 // The largest extra lateral distance any of the tracks needs (see blocked_below_m).
 double widest_extra_m(const Scenario& s, const GapTracks& tracks) {
   double extra = -std::numeric_limits<double>::infinity();
-  for (const auto* list : {&tracks.followers, &tracks.leaders})
-    for (const Track& o : *list) extra = std::max(extra, 0.5 * (o.width_m - s.ego.size.width_m));
+  for (const auto* list : {&tracks.followers, &tracks.leaders, &tracks.beside})
+    for (const Track& o : *list) extra = std::max(extra, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m);
   return extra;
 }
 

@@ -42,13 +42,15 @@ double kappa_cap_per_m(const Scenario& s);
 KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m);
 
-// A main-lane vehicle's predicted motion during a merge candidate: from x0_m, one speed ramp.
+// A main-lane vehicle's predicted motion during a merge candidate: from x0_m, one speed ramp, on
+// the lane centred at lane_y_m (0: the merge's target lane).
 struct Track {
   double x0_m = 0.0;
   SpeedRamp motion;
   double length_m = 0.0;
   double width_m = 0.0;
   Limits limits;
+  double lane_y_m = 0.0;
   double x_at(double t_s) const { return x0_m + motion.distance_at_m(t_s); }  // t after the decision
   double v_at(double t_s) const { return motion.speed_at_mps(t_s); }
 };
@@ -68,20 +70,29 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2);
 // one lane cannot pass each other, but their separate predictions can: a fast leader predicted
 // at constant speed "passes" a slower vehicle ahead of it, and the ego, merging behind the leader,
 // would merge onto that vehicle. So the ego must be clear of each of them (docs/planner.md).
+// beside: the vehicles of the other main lanes (lane_y_m > 0). The merge brings the ego toward
+// them too, and with a long response time or a weak lateral brake its lateral speed alone can
+// make D_lat reach across a lane: a vehicle there that the ego is not D_lon behind is then an
+// RSS-dangerous situation with the ego as the rear vehicle, whose proper response (braking)
+// leaves the planned merge (a campaign finding, docs/planner.md). Predicted like leaders.
 struct GapTracks {
   std::vector<Track> followers;
   std::vector<Track> leaders;
+  std::vector<Track> beside;
 };
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
                      const std::function<double(int)>& observed_accel_mps2);
+// A vehicle of another main lane, centred at lane_y_m > 0, for GapTracks::beside.
+Track beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2);
 
 // Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
 // rho, docs/planner.md): at every one of kOccupancySamples instants of [0, rho] at which the
 // ego on its sigmoid is laterally closer to the main lane centre than D_lat (RCPP eq. 2, with its
 // lateral speed on the path and each lane vehicle's width) plus a tracking margin, it must also be
 // at least D_lon (RCPP eq. 1) behind that vehicle if it is a leader and, until it reaches P_c,
-// ahead of it if it is a follower: the merge never creates an RSS-dangerous situation with a lane
-// vehicle. The ego starts at ego_y_m, which may be nearer the lane than the sigmoid's start (an
+// ahead of it if it is a follower; and laterally D_lat (plus the margin) from the centre of
+// another lane unless D_lon behind each vehicle ahead of it there: the merge never creates an
+// RSS-dangerous situation with a main-lane vehicle. The ego starts at ego_y_m, which may be nearer the lane than the sigmoid's start (an
 // ego off its lane centre): until the path passes that offset, the ego is taken to stay there (it
 // converges to the path, away from the lane). Past P_c the ego is in the lane with the right of
 // way, and keeping D_lon behind it is the follower's duty as the rear vehicle (RSS Def. 1; DESIGN

@@ -51,6 +51,18 @@ double observed_accel_mps2(const WorldSnapshot& w, int id) {
   return 0.0;
 }
 
+// The vehicles of the other main lanes, for the occupancy check (GapTracks::beside).
+std::vector<Track> beside_tracks(const WorldSnapshot& w) {
+  const double lane_w = w.scenario->road.lane_width_m;
+  std::vector<Track> tracks;
+  for (const ObservedVehicle& o : w.others) {
+    const double lane_y_m = std::round(o.state.y_m / lane_w) * lane_w;
+    if (lane_y_m < 0.5 * lane_w) continue;  // the target lane
+    tracks.push_back(beside_track(to_lane_vehicle(o), lane_y_m, o.state.accel_mps2));
+  }
+  return tracks;
+}
+
 // The potential field of RCPP eq. (3)-(5) at kFieldSamples + 1 instants of [0, duration_s] (docs/
 // planner.md): every other vehicle at other_x_at(o, t), sigma from the RSS distances at the
 // decision instant. It does not depend on the candidate path: one timeline serves every candidate
@@ -126,6 +138,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
   int n_def1 = 0, n_cross = 0, n_sigmoid = 0;
   const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
   const auto accel_of = [&](int id) { return observed_accel_mps2(w, id); };
+  const std::vector<Track> beside = beside_tracks(w);
   std::optional<FieldTimeline> field_at_rho;  // built when the first candidate needs it
   for (const LaneGap& gap : enumerate_gaps(lane)) {
     const Gap gid{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1};
@@ -155,7 +168,8 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     const auto pc_at = [&](double v) { return std::clamp(pc_of(v), pc_min, pc_max); };
     const double v_e = ctx.ego_speed_mps;
     const double v_traffic = gap_traffic_speed_mps(gap, v_e);
-    const GapTracks tracks = gap_tracks(lane, gap, rho_s, accel_of);
+    GapTracks tracks = gap_tracks(lane, gap, rho_s, accel_of);
+    tracks.beside = beside;
     const auto kappa_range = [&](double v) {
       const SpeedRamp ramp = ctx.ramp_to(v);
       return kappa_range_for(s, pc_at(v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(rho_s), ramp, ctx.ego_x_m);
@@ -285,6 +299,7 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   const SpeedRamp responder_ramp{o.speed_mps, vo.vo_star_mps, rate, rate};
   const Track responder{o.x_m, responder_ramp, o.length_m, o.width_m, o.limits};
   GapTracks tracks;
+  tracks.beside = beside_tracks(w);
   if (k == CoopCase::kEgoAhead) {
     tracks.followers.push_back(responder);
     if (const auto l = neighbour(lane, i, +1))
@@ -496,6 +511,7 @@ bool RcppPlanner::committed_occupancy_clear(const WorldSnapshot& w) const {
     if (v.id == d.gap->leader_id) gap.leader = v;
   }
   GapTracks tracks = gap_tracks(lane, gap, follower_window_s, [&](int id) { return observed_accel_mps2(w, id); });
+  tracks.beside = beside_tracks(w);
   // The vehicle now nearest ahead in the target lane, when it lies inside the gap (the leader
   // left it, e.g. a non-compliant one that drove on): the ego must keep D_lon to it too. Not the
   // gap's follower: an ego merging ahead of a vehicle it has not passed yet is not behind it.

@@ -39,7 +39,7 @@ TEST(OccupancyClear, AMergeBehindALeaderIsCheckedAgainstTheVehiclesAheadOfIt) {
   const GapTracks tracks = gap_tracks(lane, gap, 6.0, no_accel);
   ASSERT_EQ(tracks.leaders.size(), 2u);
   EXPECT_TRUE(tracks.followers.empty());
-  const GapTracks leader_only{{}, {tracks.leaders[0]}};
+  const GapTracks leader_only{{}, {tracks.leaders[0]}, {}};
   EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(6.0), leader_only, 0.0));
   EXPECT_FALSE(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(6.0), tracks, 0.0));
 }
@@ -74,6 +74,29 @@ TEST(OccupancyClear, AnEgoNearerTheLaneThanThePathStartIsCheckedWhereItIs) {
 }
 
 
+// Ego at 25 m/s, P_c at X = 50 m (t = 2 s, rho = 4 s); a vehicle in the next lane over (centre
+// Y = 3.5) starts 90 m ahead at 20 m/s, so at P_c it is 80 m ahead, not D_lon (88.9 m with
+// T = 0.8 s) ahead. With a weak lateral brake (0.8 m/s2) the ego's lateral speed at P_c on a
+// kappa = 0.08 sigmoid (25 * 3.5 * 0.08 / 4 = 1.75 m/s) makes D_lat 5.8 m, more than the 5.25 m
+// to that lane's centre: an RSS-dangerous situation with the ego as the rear vehicle (a campaign
+// finding: the ego's proper response then left its merge). A flat sigmoid (kappa 0.03: 0.66 m/s,
+// D_lat 3.1 m) stays clear.
+TEST(OccupancyClear, AMergeKeepsDLatFromAVehicleAheadInTheNextLane) {
+  Scenario s = road_only();
+  s.params.rss.response_time_s = 0.8;
+  s.ego.limits.lat_brake_min_mps2 = 0.8;
+  const SpeedRamp ego{25.0, 25.0, 2.0, 4.0};
+  GapTracks tracks;  // an empty target lane
+  const Sigmoid sharp{3.5, 0.08, 50.0, -3.5}, flat{3.5, 0.03, 50.0, -3.5};
+  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0));
+  tracks.beside.push_back(beside_track(lane_vehicle(2, 90.0, 20.0), 3.5, 0.0));
+  EXPECT_FALSE(occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0));
+  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, flat, ego, OccupancyInstants::over(4.0), tracks, 0.0));
+  // Behind the ego it is the rear vehicle of any such situation: no constraint on the merge.
+  tracks.beside = {beside_track(lane_vehicle(2, -30.0, 20.0), 3.5, 0.0)};
+  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0));
+}
+
 // The memo (per-instant D_lon blocking shared by the kappa candidates of one speed profile, and
 // the hint that visits the last blocking instant first) saves work only: over a run of checks
 // like the planner's (several speed profiles, several kappa each, one memo throughout) every
@@ -87,7 +110,11 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswer, ()) {
   const std::vector<LaneGap> gaps = enumerate_gaps(lane);
   const LaneGap gap = gaps[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(gaps.size())))];
   const double rho_s = *rc::gen::inRange(20, 120) / 10.0;
-  const GapTracks tracks = gap_tracks(lane, gap, rho_s, no_accel);
+  GapTracks tracks = gap_tracks(lane, gap, rho_s, no_accel);
+  const int n_beside = *rc::gen::inRange(0, 3);
+  for (int i = 0; i < n_beside; ++i)
+    tracks.beside.push_back(beside_track(
+        lane_vehicle(10 + i, *rc::gen::inRange(-800, 1200) / 10.0, *rc::gen::inRange(0, 350) / 10.0), 3.5, 0.0));
   const double v0 = *rc::gen::inRange(0, 300) / 10.0;
   OccupancyMemo memo;
   for (int speed = 0; speed < 3; ++speed) {

@@ -90,10 +90,11 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
 namespace {
 
 // The ego at x_m with speed v_mps, t_s after the decision, must be D_lon (RCPP eq. 1) ahead of
-// every follower (until P_c) and behind every leader it is laterally close to. Closeness is
-// measured by the lateral room, the ego's lateral distance beyond D_lat for a lane vehicle as
-// wide as the ego; a wider one needs half the width difference more (eq. 2 grows with the width
-// sum). Returns the largest such extra over the vehicles the ego is not D_lon clear of (-inf
+// every follower (until P_c) and behind every leader, and every vehicle ahead in another lane,
+// it is laterally close to. Closeness is measured by the lateral room, the ego's lateral distance
+// beyond D_lat to the target lane's centre for a vehicle as wide as the ego; a wider one needs
+// half the width difference more (eq. 2 grows with the width sum), one in another lane lane_y_m
+// less. Returns the largest such extra over the vehicles the ego is not D_lon clear of (-inf
 // when it is clear of all): the instant is blocked when the lateral room is below it.
 double blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, double pc_m, const GapTracks& tracks,
                        double buffer_m) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <charconv>
+#include <system_error>
 #include <string>
 
 namespace mg {
@@ -10,6 +11,7 @@ namespace mg {
 inline std::string fixed_text(double v, int decimals) {
   char buf[400];  // the largest double in fixed notation has 309 digits before the point
   const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+  if (r.ec != std::errc()) return "?";  // more decimals than any caller asks for
   return std::string(buf, r.ptr);
 }
 

@@ -20,7 +20,7 @@ struct PathTrackerGains {
   // sideslip atan(l_r tan(delta) / L) equals this, below the rules' sideslip bound (0.05 rad).
   // Without it, Stanley's cross-track term at low speed (atan(k e / (k_soft + v))) steers up to
   // ~0.1 rad for a 0.3 m offset, i.e. a kinematic sideslip of ~0.06 rad right after a start.
-  double sideslip_max_rad = 0.04;
+  double sideslip_max_rad = 0.035;
 };
 
 // Signed lateral error of a point against a polyline (positive: point left of the path) and the

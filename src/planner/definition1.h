@@ -29,6 +29,8 @@ struct SpeedRamp {
   // Squared speed once the ramp has covered distance_m (closed form: v^2 = v0^2 +- 2 rate d while
   // ramping, then v_target^2); between v0^2 and v_target^2 for distance_m >= 0.
   double speed_squared_at_distance_m2ps2(double distance_m) const;
+  // The larger of v0^2 and v_target^2: no squared speed of the ramp exceeds it.
+  double top_speed_squared_m2ps2() const { return std::max(v0_mps * v0_mps, v_target_mps * v_target_mps); }
 };
 
 inline double SpeedRamp::speed_at_mps(double t_s) const {

@@ -102,7 +102,16 @@ double blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, 
   const Limits& el = s.ego.limits;
   const double le = s.ego.size.length_m;
   double below = -std::numeric_limits<double>::infinity();
-  const auto block = [&](const Track& o) { below = std::max(below, 0.5 * (o.width_m - s.ego.size.width_m)); };
+  // A wider vehicle needs half the width difference more, one in another lane lane_y_m less.
+  const auto block = [&](const Track& o) {
+    below = std::max(below, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m);
+  };
+  // Not D_lon behind o: the ego as the rear vehicle (RCPP eq. 1).
+  const auto too_close_behind = [&](const Track& o) {
+    const double d = rss_longitudinal_m({v_mps, o.v_at(t_s), le, o.length_m, t_lag, el.accel_max_mps2,
+                                         el.brake_min_mps2, o.limits.brake_max_mps2});
+    return x_m + d + buffer_m > o.x_at(t_s);
+  };
   if (x_m <= pc_m) {
     for (const Track& f : tracks.followers) {
       const double d = rss_longitudinal_m({f.v_at(t_s), v_mps, f.length_m, le, t_lag, f.limits.accel_max_mps2,
@@ -110,19 +119,11 @@ double blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, 
       if (x_m - d - buffer_m < f.x_at(t_s)) block(f);
     }
   }
-  for (const Track& l : tracks.leaders) {
-    const double d = rss_longitudinal_m({v_mps, l.v_at(t_s), le, l.length_m, t_lag, el.accel_max_mps2,
-                                         el.brake_min_mps2, l.limits.brake_max_mps2});
-    if (x_m + d + buffer_m > l.x_at(t_s)) block(l);
-  }
-  // Another lane's vehicle ahead of the ego: its lane centre is lane_y_m farther away.
-  for (const Track& o : tracks.beside) {
-    const double x_o = o.x_at(t_s);
-    if (x_o <= x_m) continue;
-    const double d = rss_longitudinal_m({v_mps, o.v_at(t_s), le, o.length_m, t_lag, el.accel_max_mps2,
-                                         el.brake_min_mps2, o.limits.brake_max_mps2});
-    if (x_m + d + buffer_m > x_o) below = std::max(below, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m);
-  }
+  for (const Track& l : tracks.leaders)
+    if (too_close_behind(l)) block(l);
+  // Another lane's vehicle constrains the merge only while it is ahead of the ego.
+  for (const Track& o : tracks.beside)
+    if (o.x_at(t_s) > x_m && too_close_behind(o)) block(o);
   return below;
 }
 

@@ -72,7 +72,7 @@ double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, doub
   // times that bound cannot beat the peak so far is skipped (the result is the same). The test
   // runs first on the tabulated curvature with a relative slack far above the rounding of y''.
   const bool slowing = ramp.v_target_mps < ramp.v0_mps;
-  double v_sq_bound = std::max(ramp.v0_mps * ramp.v0_mps, ramp.v_target_mps * ramp.v_target_mps);
+  double v_sq_bound = ramp.top_speed_squared_m2ps2();
   const double w_kappa_sq = sig.width_m * sig.kappa_per_m * sig.kappa_per_m * (1.0 + kCurvatureSlack);
   double peak = 0.0;
   for (int n = 0; n <= kPeakSamples; ++n) {
@@ -89,8 +89,7 @@ double peak_lat_accel_along_mps2(const Sigmoid& sig, const SpeedRamp& ramp, doub
 }
 
 double peak_lat_accel_bound_mps2(const Sigmoid& sig, const SpeedRamp& ramp) {
-  const double v_sq_max = std::max(ramp.v0_mps * ramp.v0_mps, ramp.v_target_mps * ramp.v_target_mps);
-  return v_sq_max * sig.width_m * sig.kappa_per_m * sig.kappa_per_m * kPeakTable.max_curvature * (1.0 + kCurvatureSlack);
+  return ramp.top_speed_squared_m2ps2() * sig.width_m * sig.kappa_per_m * sig.kappa_per_m * kPeakTable.max_curvature * (1.0 + kCurvatureSlack);
 }
 
 namespace {

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <sstream>
+
+#include "core/fixed_text.h"
 
 namespace mg::svg {
 namespace {
@@ -13,19 +14,13 @@ constexpr int kMarginLeft = 72, kMarginRight = 16, kMarginTop = 34, kMarginBotto
 constexpr int kGridTitleHeight = 36;
 
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
+std::string num(double v) { return fixed_text(v, 2); }
 
 std::string tick_label(double v, double step) {
-  char buf[32];
   int decimals = 0;  // as many as the step needs: 2.5 -> 1, 0.02 -> 2
   for (double scaled = step; decimals < 6 && std::abs(scaled - std::round(scaled)) > 1e-6 * scaled; scaled *= 10.0)
     ++decimals;
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < step * 1e-9 ? 0.0 : v);
-  return buf;
+  return fixed_text(std::abs(v) < step * 1e-9 ? 0.0 : v, decimals);
 }
 
 Range data_range(const Plot& p, bool x_axis) {

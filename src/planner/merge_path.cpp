@@ -20,13 +20,20 @@ double side_exit_limit_x_m(const Scenario& s) {
   return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - kSideExitMarginM;
 }
 
-double kappa_cap_per_m(const Scenario& s) {
+double path_curvature_cap_per_m(const Scenario& s) {
   const EgoDynamics& dyn = s.ego.dynamics;
   const double wheelbase_m = dyn.cg_to_front_m + dyn.cg_to_rear_m;
-  const double curvature_max = std::min(std::tan(dyn.steer_max_rad) / (2.0 * wheelbase_m),
-                                        std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
+  return std::min(std::tan(dyn.steer_max_rad) / (2.0 * wheelbase_m), std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
+}
+
+double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
+  const double wheelbase_m = d.cg_to_front_m + d.cg_to_rear_m;
+  return d.cg_to_rear_m - d.mass_kg * d.cg_to_front_m * speed_mps * speed_mps / (d.cornering_rear_npr * wheelbase_m);
+}
+
+double kappa_cap_per_m(const Scenario& s) {
   return std::min(s.params.planner.kappa_max_per_m,
-                  std::sqrt(6.0 * std::sqrt(3.0) * curvature_max / s.road.lane_width_m));
+                  std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s) / s.road.lane_width_m));
 }
 
 KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,

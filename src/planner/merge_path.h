@@ -29,10 +29,17 @@ double side_lane_exit_fraction(double ego_width_m, double lane_width_m);
 inline constexpr double kSideExitMarginM = 5.0;
 double side_exit_limit_x_m(const Scenario& s);
 
-// Trackability of the path at any speed: its peak curvature c = W kappa^2/(6 sqrt 3) stays within
-// half the ego's steering ability (tan(steer_max)/(2 wheelbase)) and keeps the kinematic sideslip
-// atan(l_r c) below kPathSideslipMaxRad, half the sideslip rule's bound (docs/planner.md).
+// Trackability of a path at any speed: its curvature c stays within half the ego's steering
+// ability (tan(steer_max)/(2 wheelbase)) and keeps the kinematic sideslip atan(l_r c) below
+// kPathSideslipMaxRad, half the sideslip rule's bound (docs/planner.md). For the sigmoid, whose
+// peak curvature is W kappa^2/(6 sqrt 3), that caps kappa.
 inline constexpr double kPathSideslipMaxRad = 0.025;
+double path_curvature_cap_per_m(const Scenario& s);
+// The linear single-track model's steady-state sideslip per unit path curvature at speed v,
+// beta / c = l_r - m l_f v^2 / (C_r L) (rear axle: F_yr = m v^2 c l_f / L = C_r alpha_r and
+// beta = l_r c - alpha_r; Rajamani, Vehicle Dynamics and Control, 2nd ed., §3.3). At a crawl it is
+// the kinematic l_r; at speed, with soft rear tyres, many times larger and of the other sign.
+double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps);
 double kappa_cap_per_m(const Scenario& s);
 
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at

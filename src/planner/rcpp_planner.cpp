@@ -359,27 +359,6 @@ bool can_still_halt(const WorldSnapshot& w) {
   return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
 }
 
-// The side lane's centre; from nearer the main lane (after an aborted merge, or a start
-// off-centre) a logistic path back to it, as sharp as the comfort bound at the ego's speed and the trackability cap
-// allow: a straight target line would make the tracker snap back (sideslip beyond the rule's
-// bound at merge speeds).
-constexpr double kReturnPathMinOffsetM = 0.05;
-std::vector<PathPoint> side_lane_path(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
-  const double to_centre_m = s.road.side_lane_y_m() - w.ego.y_m;
-  const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + tracked_path_ahead_m(w);
-  if (std::abs(to_centre_m) < kReturnPathMinOffsetM) return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
-  // An ego farther from the main lane than the side lane's centre holds its offset: moving toward
-  // the main lane only to centre itself can make it laterally unsafe with a vehicle there (with a
-  // long response time, D_lat grows with that lateral speed).
-  if (to_centre_m > 0.0) return sample_straight(w.ego.y_m, from_x, to_x, kPathStepM);
-  const double kappa = std::min(
-      kappa_cap_per_m(s),
-      kappa_comfort_max_per_m(ego_speed_mps(w), std::abs(to_centre_m), s.params.planner.lat_accel_comfort_mps2));
-  const Sigmoid back{to_centre_m, kappa, w.ego.x_m + half_span_times_kappa() / kappa, w.ego.y_m};
-  return sample_sigmoid(back, from_x, to_x, kPathStepM);
-}
-
 double accel_limit_toward(const Scenario& s, double current_mps, double target_mps) {
   return target_mps >= current_mps ? s.ego.limits.accel_max_mps2 : s.ego.limits.brake_min_mps2;
 }
@@ -433,10 +412,48 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
   return best;
 }
 
+// The side lane's centre; from nearer the main lane (after an aborted merge, or a start
+// off-centre) a path back to it (planner/return_path.h) that starts where and in the direction the
+// ego is going, with its curvature, and is kept until the ego reaches its end. As short as the
+// comfort bound at the ego's speed allows, or sharper, up to the trackability cap, where the
+// comfortable one would carry the ego to within kReturnLaneLineMarginM of the main lane's line. A
+// straight target line would make the tracker snap back; a level start, or one re-planned level
+// every cycle, makes it reverse its steering at its cap while the ego still moves toward the lane,
+// and the sideslip of that transient exceeded the rule's bound at merge speeds (docs/fuzzing.md).
+// Below kReturnTangentMinSpeedMps the direction of travel is the heading and the curvature 0.
+constexpr double kReturnPathMinOffsetM = 0.05;
+constexpr double kReturnTangentMinSpeedMps = 1.0;
+constexpr double kReturnLaneLineMarginM = 0.25;
+std::vector<PathPoint> RcppPlanner::side_lane_path(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + tracked_path_ahead_m(w);
+  if (return_ && w.ego.x_m < return_->end_x_m()) return sample_return_path(*return_, from_x, to_x, kPathStepM);
+  return_.reset();
+  const double to_centre_m = s.road.side_lane_y_m() - w.ego.y_m;
+  if (std::abs(to_centre_m) < kReturnPathMinOffsetM) return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
+  // An ego farther from the main lane than the side lane's centre holds its offset: moving toward
+  // the main lane only to centre itself can make it laterally unsafe with a vehicle there (with a
+  // long response time, D_lat grows with that lateral speed).
+  if (to_centre_m > 0.0) return sample_straight(w.ego.y_m, from_x, to_x, kPathStepM);
+  const double v = ego_speed_mps(w);
+  const bool moving = v >= kReturnTangentMinSpeedMps;
+  ReturnLimits limits;
+  limits.cap_curvature_per_m =
+      std::min(path_curvature_cap_per_m(s),
+               kPathSideslipMaxRad / std::abs(steady_sideslip_per_curvature_m(s.ego.dynamics, v)));
+  limits.comfort_curvature_per_m =
+      moving ? s.params.planner.lat_accel_comfort_mps2 / (v * v) : limits.cap_curvature_per_m;
+  limits.y_max_m = -0.5 * s.road.lane_width_m - kReturnLaneLineMarginM;
+  return_ = plan_return_path(w.ego.x_m, w.ego.y_m, moving ? ego_lat_speed_mps(w) / v : std::tan(w.ego.yaw_rad),
+                             s.road.side_lane_y_m(), limits);
+  return sample_return_path(*return_, from_x, to_x, kPathStepM);
+}
+
 PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
   const double lane_w = s.road.lane_width_m;
-  if (!merged_ && !merge_ && w.ego.y_m > -0.5 * lane_w) merged_ = true;  // already in the main lane
+  // Already in the main lane (a start there); not an ego on its way back after an abort.
+  if (!merged_ && !merge_ && !return_ && w.ego.y_m > -0.5 * lane_w) merged_ = true;
   std::string note;
   if (merge_) {
     const Sigmoid& sig = merge_->sigmoid;
@@ -582,6 +599,7 @@ PlanOutput RcppPlanner::keep_main_lane(const WorldSnapshot& w) {
 
 PlanOutput RcppPlanner::start_merge(const WorldSnapshot& w, const Sigmoid& sig, double speed_mps, Decision d) {
   merge_ = Merge{sig, speed_mps, std::move(d)};
+  return_.reset();
   return follow_merge(w);
 }
 

@@ -11,6 +11,7 @@
 
 #include "planner/definition2.h"
 #include "planner/planner.h"
+#include "planner/return_path.h"
 #include "planner/sigmoid.h"
 
 namespace mg {
@@ -76,6 +77,7 @@ class RcppPlanner : public Planner {
   PlanOutput keep_main_lane(const WorldSnapshot& w);
   PlanOutput decide_in_side_lane(const WorldSnapshot& w);
   PlanOutput start_merge(const WorldSnapshot& w, const Sigmoid& s, double speed_mps, Decision d);
+  std::vector<PathPoint> side_lane_path(const WorldSnapshot& w);  // may plan and keep return_
   bool committed_bounds_crossed(const WorldSnapshot& w) const;  // P_c bounds at predicted positions
   // The occupancy check of the rest of the merge with the gap vehicles as observed now.
   bool committed_occupancy_clear(const WorldSnapshot& w) const;
@@ -86,6 +88,7 @@ class RcppPlanner : public Planner {
   bool merged_ = false;
   std::optional<Merge> merge_;
   std::optional<Pending> pending_;
+  std::optional<ReturnPath> return_;  // back to the side lane's centre, kept until its end
   std::map<int, double> retry_after_s_;  // partner id -> earliest time of a new request
   double no_merge_before_s_ = -1.0;       // after an abort: earliest time of a new merge
   double next_longer_merge_s_ = -1.0;     // next time the longer merge durations are searched

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "planner/merge_path.h"
 #include "sim/simulator.h"
 #include "test_planners.h"
 
@@ -41,6 +42,31 @@ TEST(SingleTrack, SteadyStateYawRateMatchesLinearSingleTrackGain) {
     for (int i = 0; i < 1500; ++i) s = step_single_track(s, {steer, 0.0}, d, lim, 0.02);
     const double expected = steady_state_yaw_rate_gain(d, speed) * steer;  // r/delta = v/(L + K v^2)
     EXPECT_NEAR(s.yaw_rate_radps, expected, 0.02 * expected) << "speed " << speed;
+  }
+}
+
+// The planner's steady-state sideslip per unit curvature (planner/merge_path.h), which bounds the
+// return path's curvature, is this simulator's: beta / (r / v) at a held steering angle, for an
+// understeering and a soft neutral-steer ego (the generator's boundary, where it is largest).
+TEST(SingleTrack, SteadySideslipPerCurvatureMatchesThePlannersFormula) {
+  EgoDynamics soft;
+  soft.mass_kg = 2000.0;
+  soft.cg_to_front_m = 1.2;
+  soft.cg_to_rear_m = 1.4;
+  soft.cornering_front_npr = 67000.0;
+  soft.cornering_rear_npr = 67000.0 * 1.2 / 1.4;
+  const Limits lim;
+  for (const EgoDynamics& d : {EgoDynamics{}, soft}) {
+    for (double speed : {8.0, 15.0, 25.0, 33.0}) {
+      const double steer = 0.005;
+      VehicleState s = moving(speed);
+      s.steer_rad = steer;
+      for (int i = 0; i < 2000; ++i) s = step_single_track(s, {steer, 0.0}, d, lim, 0.02);
+      const double per_curvature_m = sideslip_rad(s) / (s.yaw_rate_radps / s.vx_mps);
+      EXPECT_NEAR(per_curvature_m, steady_sideslip_per_curvature_m(d, s.vx_mps),
+                  0.02 * std::abs(steady_sideslip_per_curvature_m(d, s.vx_mps)))
+          << "speed " << speed << " mass " << d.mass_kg;
+    }
   }
 }
 

@@ -461,7 +461,7 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
     if (w.ego.x_m >= sig.x_at_fraction_m(1.0 - kSigmoidEndFraction) || progress >= 1.0 - kSigmoidEndFraction) {
       merged_ = true;
       merge_.reset();
-    } else if (merge_->decision.mode == DecisionMode::kDef1Merge && progress < kAbortLateralFraction &&
+    } else if (merge_->decision.mode == DecisionMode::kDef1Merge && !merge_->committed(w.ego.y_m) &&
                can_still_halt(w) && (committed_bounds_crossed(w) || !committed_occupancy_clear(w))) {
       note = "merge aborted (P_c bounds crossed or lane occupied at the predicted positions); ";
       merge_.reset();
@@ -551,9 +551,8 @@ double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
   // braking any more, and the ego must not speed up toward it on the way in.
   if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m)) {
     const bool braking = observed_accel_mps2(w, leader->id) < -kLeaderBrakingMps2;
-    const Sigmoid& sig = merge_->sigmoid;
-    const bool committed = (w.ego.y_m - sig.offset_m) / sig.width_m >= kAbortLateralFraction;
-    if (w.ego.x_m >= sig.pc_m || braking || committed) target = std::min(target, rss_follow_speed_mps(w, *leader));
+    if (w.ego.x_m >= merge_->sigmoid.pc_m || braking || merge_->committed(w.ego.y_m))
+      target = std::min(target, rss_follow_speed_mps(w, *leader));
   }
   return target;
 }
@@ -598,7 +597,7 @@ PlanOutput RcppPlanner::keep_main_lane(const WorldSnapshot& w) {
 }
 
 PlanOutput RcppPlanner::start_merge(const WorldSnapshot& w, const Sigmoid& sig, double speed_mps, Decision d) {
-  merge_ = Merge{sig, speed_mps, std::move(d)};
+  merge_ = Merge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m)};
   return_.reset();
   return follow_merge(w);
 }

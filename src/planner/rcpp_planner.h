@@ -25,7 +25,9 @@ inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
 // configured rho_m below it is raised to kShortestMergeFactor times that duration.
 inline constexpr double kShortestMergeFactor = 1.05;
 // A committed merge may be aborted (P_c bounds crossed) only while the ego has covered less than
-// this fraction of the lateral offset; later it completes, protected by the RSS override.
+// this fraction of its lateral move (from the side lane's centre, or from where it was when the
+// merge was planned if that is nearer the main lane); later it completes, protected by the RSS
+// override.
 inline constexpr double kAbortLateralFraction = 0.25;
 
 // The room a merge from standstill needs ahead of the halted ego: the distance from the start of
@@ -67,6 +69,15 @@ class RcppPlanner : public Planner {
     Sigmoid sigmoid;
     double target_speed_mps = 0.0;
     Decision decision;
+    // Where the lateral move starts: the side lane's centre, or the ego's offset at the decision
+    // if nearer the main lane (a merge planned while the ego is still on its way back from an
+    // abort is not committed from its first cycle: it would then follow, at RSS distance, the
+    // gap's follower it is about to pass, and stop behind it for good; a campaign finding).
+    double start_y_m = 0.0;
+    bool committed(double ego_y_m) const {
+      const double move_m = sigmoid.offset_m + sigmoid.width_m - start_y_m;
+      return ego_y_m - start_y_m >= kAbortLateralFraction * move_m;
+    }
   };
   struct Pending {
     Def2Plan plan;

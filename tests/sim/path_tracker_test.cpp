@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "planner/merge_path.h"
+#include "planner/return_path.h"
 #include "sim/single_track.h"
 
 namespace mg {
@@ -51,6 +53,47 @@ TEST(PathTracker, FollowsASigmoidLaneChangeWithoutOvershoot) {
   EXPECT_LT(worst, 0.15);
   EXPECT_LT(highest, 0.05);
   EXPECT_NEAR(s.y_m, 0.0, 0.02);
+}
+
+// The campaign finding behind the return path (planner/return_path.h): a soft neutral-steer ego
+// (2000 kg, C_f l_f = C_r l_r) aborts its merge at 25 m/s while still moving toward the main lane
+// at 1.6 m/s (state from corpus/cases/rcpp__ego_never_liable__sideslip__ego-4.json at t = 1.6 s).
+// Tracking the return from there keeps its sideslip well inside the rule's 0.05 rad; a level path
+// on the side lane's centre (the snap-back the return replaced) does not.
+TEST(PathTracker, ReturnAfterAnAbortKeepsTheSideslipOfASoftEgoInsideTheBound) {
+  EgoDynamics d;
+  d.mass_kg = 2000.0;
+  d.yaw_inertia_kgm2 = 3000.0;
+  d.cg_to_front_m = 1.2;
+  d.cg_to_rear_m = 1.4;
+  d.cornering_front_npr = 67000.0;
+  d.cornering_rear_npr = 67000.0 * 1.2 / 1.4;
+  const Limits lim;
+  VehicleState abort;
+  abort.x_m = 39.94;
+  abort.y_m = -2.73;
+  abort.vx_mps = 24.98;
+  abort.vy_mps = -0.371;
+  abort.yaw_rad = 0.079;
+  abort.yaw_rate_radps = 0.05;
+  abort.steer_rad = 0.002;
+  const double v = abort.road_vx_mps();
+  ReturnLimits limits;
+  limits.comfort_curvature_per_m = 1.5 / (v * v);
+  limits.cap_curvature_per_m = kPathSideslipMaxRad / std::abs(steady_sideslip_per_curvature_m(d, v));
+  limits.y_max_m = -1.75 - 0.25;
+  const ReturnPath back = plan_return_path(abort.x_m, abort.y_m, abort.road_vy_mps() / v, -3.5, limits);
+  const auto peak_sideslip = [&](const std::vector<PathPoint>& path) {
+    VehicleState s = abort;
+    double peak = 0.0;
+    for (int i = 0; i < 300; ++i) {
+      s = step_single_track(s, {stanley_steering_rad(path, s, d), 0.0}, d, lim, 0.02);
+      peak = std::max(peak, std::abs(sideslip_rad(s)));
+    }
+    return peak;
+  };
+  EXPECT_LT(peak_sideslip(sample_return_path(back, 0.0, 400.0, 1.0)), 0.04);
+  EXPECT_GT(peak_sideslip({{0.0, -3.5}, {400.0, -3.5}}), 0.05);
 }
 
 }  // namespace

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include "sim/single_track.h"
 #include "test_planners.h"
 
 namespace mg {
@@ -166,6 +170,35 @@ TEST(Simulator, TraceJsonCarriesStepsDecisionsEventsAndHexDigest) {
   EXPECT_EQ(j.at("digest").get<std::string>(), digest_hex(t.digest));
   EXPECT_EQ(j.at("digest").get<std::string>().size(), 16u);
   EXPECT_EQ(j.at("steps").at(0).at("others").size(), 3u);
+}
+
+// An RCPP merge aborted while the ego still moves toward the main lane: on its way back it crosses
+// the lane line (a soft neutral-steer ego overshoots the planned stop), yet it is not taken for
+// merged; it holds the side lane (def1_halt) until it plans a new merge, and its sideslip stays
+// inside the rule's bound (the campaign finding of corpus/cases/rcpp__ego_never_liable__sideslip__ego-4.json).
+TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLine) {
+  const std::string path = std::string(MG_SOURCE_DIR) + "/corpus/cases/rcpp__ego_never_liable__sideslip__ego-4.json";
+  std::ifstream in(path);
+  const Scenario s = scenario_from_json(nlohmann::json::parse(in).at("scenario"), path);
+  const auto planner = make_planner("rcpp");
+  const Trace t = simulate(s, *planner);
+  bool merging = false, aborted = false, crossed_while_returning = false;
+  double peak_sideslip = 0.0;
+  for (const TraceStep& st : t.steps) {
+    if (st.ego.vx_mps >= 2.0) peak_sideslip = std::max(peak_sideslip, std::abs(sideslip_rad(st.ego)));
+    if (st.ego_mode == DecisionMode::kDef1Merge) {
+      if (aborted) break;  // the next merge
+      merging = true;
+    } else if (merging && st.ego_mode == DecisionMode::kDef1Halt) {
+      aborted = true;
+    }
+    if (!aborted) continue;
+    EXPECT_NE(st.ego_mode, DecisionMode::kMerged) << "t = " << st.time_s << ", y = " << st.ego.y_m;
+    crossed_while_returning |= st.ego.y_m > -0.5 * s.road.lane_width_m;
+  }
+  EXPECT_TRUE(aborted);
+  EXPECT_TRUE(crossed_while_returning);
+  EXPECT_LT(peak_sideslip, 0.05);
 }
 
 }  // namespace

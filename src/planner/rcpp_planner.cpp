@@ -414,13 +414,15 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
 
 // The side lane's centre; from nearer the main lane (after an aborted merge, or a start
 // off-centre) a path back to it (planner/return_path.h) that starts where and in the direction the
-// ego is going, with its curvature, and is kept until the ego reaches its end. As short as the
+// ego is going and is kept until the ego reaches its end. As short as the
 // comfort bound at the ego's speed allows, or sharper, up to the trackability cap, where the
 // comfortable one would carry the ego to within kReturnLaneLineMarginM of the main lane's line. A
 // straight target line would make the tracker snap back; a level start, or one re-planned level
 // every cycle, makes it reverse its steering at its cap while the ego still moves toward the lane,
 // and the sideslip of that transient exceeded the rule's bound at merge speeds (docs/fuzzing.md).
-// Below kReturnTangentMinSpeedMps the direction of travel is the heading and the curvature 0.
+// Below kReturnTangentMinSpeedMps the direction of travel is the heading. The cap also holds the
+// linear model's steady-state sideslip within kPathSideslipMaxRad: at 25 m/s a soft neutral-steer
+// ego has 8.7 m of it per unit curvature, 6 times its kinematic l_r.
 constexpr double kReturnPathMinOffsetM = 0.05;
 constexpr double kReturnTangentMinSpeedMps = 1.0;
 constexpr double kReturnLaneLineMarginM = 0.25;

@@ -53,13 +53,6 @@ double ReturnPath::y_at_m(double x_m) const {
   return back.y_at_m(x_m);
 }
 
-double ReturnPath::curvature_at_per_m(double x_m) const {
-  const double d = x_m - x0_m;
-  if (d < 0.0) return 0.0;
-  if (d < stop_length_m) return -stop_curvature_per_m;
-  return back.curvature_at_per_m(x_m);
-}
-
 ReturnPath plan_return_path(double x0_m, double y0_m, double slope0, double y_end_m, const ReturnLimits& limits) {
   assert(y_end_m < y0_m && std::isfinite(slope0));
   assert(limits.cap_curvature_per_m > 0.0 && limits.comfort_curvature_per_m > 0.0);

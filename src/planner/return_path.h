@@ -45,13 +45,13 @@ struct ReturnPath {
   Quintic back;
   double end_x_m() const { return back.x0_m + back.length_m; }
   double y_at_m(double x_m) const;
-  double curvature_at_per_m(double x_m) const;  // y''
 };
 
 // What a return may do. Its |y''| stays within comfort_curvature_per_m (the comfort bound at the
 // ego's speed) and cap_curvature_per_m (trackability and steady-state sideslip); the stop sharpens
-// beyond comfort, up to the cap, where a comfortable one would carry the ego above y_max_m, into
-// the main lane: an ego that aborted its merge must not cross into the lane on its way back.
+// beyond comfort, up to the cap, where a comfortable one would carry the ego above y_max_m, toward
+// the main lane's line: an ego that aborted its merge should not cross into the lane on its way
+// back (one with sluggish lateral dynamics still can: it lags the planned stop).
 struct ReturnLimits {
   double comfort_curvature_per_m = 0.0;
   double cap_curvature_per_m = 0.0;

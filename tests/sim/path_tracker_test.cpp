@@ -8,6 +8,7 @@
 #include "planner/merge_path.h"
 #include "planner/return_path.h"
 #include "sim/single_track.h"
+#include "test_egos.h"
 
 namespace mg {
 namespace {
@@ -61,13 +62,7 @@ TEST(PathTracker, FollowsASigmoidLaneChangeWithoutOvershoot) {
 // Tracking the return from there keeps its sideslip well inside the rule's 0.05 rad; a level path
 // on the side lane's centre (the snap-back the return replaced) does not.
 TEST(PathTracker, ReturnAfterAnAbortKeepsTheSideslipOfASoftEgoInsideTheBound) {
-  EgoDynamics d;
-  d.mass_kg = 2000.0;
-  d.yaw_inertia_kgm2 = 3000.0;
-  d.cg_to_front_m = 1.2;
-  d.cg_to_rear_m = 1.4;
-  d.cornering_front_npr = 67000.0;
-  d.cornering_rear_npr = 67000.0 * 1.2 / 1.4;
+  const EgoDynamics d = test::soft_neutral_steer_ego();
   const Limits lim;
   VehicleState abort;
   abort.x_m = 39.94;

@@ -7,6 +7,7 @@
 
 #include "planner/merge_path.h"
 #include "sim/simulator.h"
+#include "test_egos.h"
 #include "test_planners.h"
 
 namespace mg {
@@ -49,12 +50,7 @@ TEST(SingleTrack, SteadyStateYawRateMatchesLinearSingleTrackGain) {
 // return path's curvature, is this simulator's: beta / (r / v) at a held steering angle, for an
 // understeering and a soft neutral-steer ego (the generator's boundary, where it is largest).
 TEST(SingleTrack, SteadySideslipPerCurvatureMatchesThePlannersFormula) {
-  EgoDynamics soft;
-  soft.mass_kg = 2000.0;
-  soft.cg_to_front_m = 1.2;
-  soft.cg_to_rear_m = 1.4;
-  soft.cornering_front_npr = 67000.0;
-  soft.cornering_rear_npr = 67000.0 * 1.2 / 1.4;
+  const EgoDynamics soft = test::soft_neutral_steer_ego();
   const Limits lim;
   for (const EgoDynamics& d : {EgoDynamics{}, soft}) {
     for (double speed : {8.0, 15.0, 25.0, 33.0}) {

@@ -112,6 +112,7 @@ struct EgoDynamics {
   double cornering_rear_npr = 80000;  // C_r, N/rad, (0, 1e7]
   double steer_max_rad = 0.5;         // (0, 1.5]
   double steer_rate_max_radps = 0.7;  // (0, 10]
+  double wheelbase_m() const { return cg_to_front_m + cg_to_rear_m; }  // L = l_f + l_r
   bool operator==(const EgoDynamics&) const = default;
 };
 

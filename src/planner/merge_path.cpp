@@ -22,13 +22,11 @@ double side_exit_limit_x_m(const Scenario& s) {
 
 double path_curvature_cap_per_m(const Scenario& s) {
   const EgoDynamics& dyn = s.ego.dynamics;
-  const double wheelbase_m = dyn.cg_to_front_m + dyn.cg_to_rear_m;
-  return std::min(std::tan(dyn.steer_max_rad) / (2.0 * wheelbase_m), std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
+  return std::min(std::tan(dyn.steer_max_rad) / (2.0 * dyn.wheelbase_m()), std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
 }
 
 double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
-  const double wheelbase_m = d.cg_to_front_m + d.cg_to_rear_m;
-  return d.cg_to_rear_m - d.mass_kg * d.cg_to_front_m * speed_mps * speed_mps / (d.cornering_rear_npr * wheelbase_m);
+  return d.cg_to_rear_m - d.mass_kg * d.cg_to_front_m * speed_mps * speed_mps / (d.cornering_rear_npr * d.wheelbase_m());
 }
 
 double kappa_cap_per_m(const Scenario& s) {

@@ -3,6 +3,8 @@
 // outgoing V2V messages and a decision record. New planners register in planner_factory.cpp.
 #pragma once
 
+#include <cassert>
+#include <cstddef>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -80,6 +82,21 @@ struct PathPoint {
   double x_m = 0.0;
   double y_m = 0.0;
 };
+
+// The points (x, y_of(x)) at x_from, x_from + step, ... while clearly below x_to, then x_to:
+// strictly increasing X.
+template <class YOf>
+std::vector<PathPoint> sample_path(double x_from_m, double x_to_m, double step_m, YOf y_of) {
+  assert(step_m > 0.0 && x_to_m > x_from_m);
+  std::vector<PathPoint> path;
+  path.reserve(static_cast<std::size_t>((x_to_m - x_from_m) / step_m) + 2);
+  for (int i = 0; x_from_m + i * step_m < x_to_m - 1e-3 * step_m; ++i) {
+    const double x = x_from_m + i * step_m;
+    path.push_back({x, y_of(x)});
+  }
+  path.push_back({x_to_m, y_of(x_to_m)});
+  return path;
+}
 
 struct PlanOutput {
   std::vector<PathPoint> path;          // reference path in the road frame, increasing X

@@ -4,8 +4,6 @@
 #include <cassert>
 #include <cmath>
 
-#include "planner/sigmoid.h"
-
 namespace mg {
 
 double Quintic::y_at_m(double x_m) const {

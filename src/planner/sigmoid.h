@@ -4,7 +4,6 @@
 // (the potential field along the path plus the Definition 1 cost; docs/planner.md).
 #pragma once
 
-#include <cassert>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -47,20 +46,6 @@ double peak_lat_accel_bound_mps2(const Sigmoid& sig, const SpeedRamp& ramp);
 // position) and the merge is complete at 1 - kSigmoidEndFraction.
 inline constexpr double kSigmoidEndFraction = 0.02;
 
-// The points (x, y_of(x)) at x_from, x_from + step, ... while clearly below x_to, then x_to:
-// strictly increasing X.
-template <class YOf>
-std::vector<PathPoint> sample_path(double x_from_m, double x_to_m, double step_m, YOf y_of) {
-  assert(step_m > 0.0 && x_to_m > x_from_m);
-  std::vector<PathPoint> path;
-  path.reserve(static_cast<std::size_t>((x_to_m - x_from_m) / step_m) + 2);
-  for (int i = 0; x_from_m + i * step_m < x_to_m - 1e-3 * step_m; ++i) {
-    const double x = x_from_m + i * step_m;
-    path.push_back({x, y_of(x)});
-  }
-  path.push_back({x_to_m, y_of(x_to_m)});
-  return path;
-}
 // Samples the path from x_from to x_to (inclusive, step_m apart), strictly increasing in X.
 std::vector<PathPoint> sample_sigmoid(const Sigmoid& s, double x_from_m, double x_to_m, double step_m);
 std::vector<PathPoint> sample_straight(double y_m, double x_from_m, double x_to_m, double step_m);

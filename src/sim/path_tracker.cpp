@@ -96,11 +96,10 @@ double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleSta
   const double path_yaw_rate = speed * proj.curvature_per_m;
   // Feed-forward: the steady-state steering of the linear single-track model for the path's
   // curvature, delta = kappa (L + K v^2).
-  const double feed_forward = proj.curvature_per_m * (d.cg_to_front_m + d.cg_to_rear_m + understeer_gradient(d) * speed * speed);
+  const double feed_forward = proj.curvature_per_m * (d.wheelbase_m() + understeer_gradient(d) * speed * speed);
   const double request =
       feed_forward + heading_error + cross_term + gains.yaw_rate_damping_s * (path_yaw_rate - ego.yaw_rate_radps);
-  const double wheelbase_m = d.cg_to_front_m + d.cg_to_rear_m;
-  const double cap_rad = std::atan(std::tan(gains.sideslip_max_rad) * wheelbase_m / d.cg_to_rear_m);
+  const double cap_rad = std::atan(std::tan(gains.sideslip_max_rad) * d.wheelbase_m() / d.cg_to_rear_m);
   return std::clamp(request, -cap_rad, cap_rad);
 }
 

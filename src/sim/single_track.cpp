@@ -11,8 +11,6 @@ namespace {
 // Dynamic-model state X, Y, psi, v_x, v_y, r.
 using DynState = std::array<double, 6>;
 
-double wheelbase_m(const EgoDynamics& d) { return d.cg_to_front_m + d.cg_to_rear_m; }
-
 // Linear single-track model: lateral tyre forces F = C * alpha; the longitudinal command is
 // the body-frame acceleration itself (v_x' = a), so the speed controller's command is exactly
 // what the longitudinal dynamics deliver.
@@ -76,7 +74,7 @@ DynState step_kinematic(const VehicleState& v, double steer_rad, double accel_mp
     speed_new = 0.0;
     mean_speed = speed * speed / (2.0 * -accel_mps2) / dt_s;
   }
-  const double length = wheelbase_m(d);
+  const double length = d.wheelbase_m();
   const double beta = std::atan(d.cg_to_rear_m * std::tan(steer_rad) / length);
   const double yaw_rate_per_speed = std::cos(beta) * std::tan(steer_rad) / length;
   const double yaw_mid = v.yaw_rad + 0.5 * mean_speed * yaw_rate_per_speed * dt_s;
@@ -139,12 +137,12 @@ double sideslip_rad(const VehicleState& s) {
 }
 
 double understeer_gradient(const EgoDynamics& d) {
-  return d.mass_kg / wheelbase_m(d) *
+  return d.mass_kg / d.wheelbase_m() *
          (d.cg_to_rear_m / d.cornering_front_npr - d.cg_to_front_m / d.cornering_rear_npr);
 }
 
 double steady_state_yaw_rate_gain(const EgoDynamics& d, double speed_mps) {
-  return speed_mps / (wheelbase_m(d) + understeer_gradient(d) * speed_mps * speed_mps);
+  return speed_mps / (d.wheelbase_m() + understeer_gradient(d) * speed_mps * speed_mps);
 }
 
 }  // namespace mg

@@ -11,7 +11,7 @@
 namespace mg {
 namespace {
 
-// Central second difference and first difference of y(X) at x.
+// Central first difference of y(X) at x: the path's slope.
 template <class Path>
 double slope_of(const Path& p, double x, double h = 1e-4) {
   return (p.y_at_m(x + h) - p.y_at_m(x - h)) / (2.0 * h);

@@ -158,6 +158,7 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
           {"shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count)},
           {"corpus", o.corpus_dir},
           {"interrupted", r.interrupted},
+          {"signal", r.interrupted && !r.stop_signal.empty() ? json(r.stop_signal) : json(nullptr)},
           {"scenarios", r.scenarios},
           {"seconds", r.seconds},
           {"scenarios_per_second", r.scenarios_per_second()},

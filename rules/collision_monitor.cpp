@@ -29,6 +29,11 @@ MonitorOutput monitor_collision(const MonitorContext& ctx) {
     }
     for (std::size_t i = 0; i < n; ++i) {
       for (std::size_t j = i + 1; j < n; ++j) {
+        // Interaction bound: the clearance now is at least the X separation of the swept
+        // rectangles; a pair apart by more than the smallest margin so far cannot touch (no FCL)
+        // nor lower the rule's minimum, so it is not measured (exact: same RuleResult).
+        const double x_apart_m = std::max(swept[j].x_lo - swept[i].x_hi, swept[i].x_lo - swept[j].x_hi);
+        if (x_apart_m > 0.0 && x_apart_m >= acc.min_margin()) continue;
         PairCheck c;
         if (clearance_m(swept[i], swept[j]) > 0.0) {  // pre-filter: FCL only for pairs that could touch
           c.margin_m = clearance_m(fp_now[i], fp_now[j]);
@@ -40,7 +45,7 @@ MonitorOutput monitor_collision(const MonitorContext& ctx) {
           os << party_name(party_of(s, i)) << " and " << party_name(party_of(s, j)) << " collided at t = "
              << steps[k].time_s << " s (x = " << pose_now[i].x_m << " m"
              << (c.by_continuous ? ", found by the continuous check between steps" : "") << ")";
-          const PairGeometry& start = ctx.pairs.at(0, PairTable::index(n, i, j));
+          const PairGeometry start = pair_geometry(s, steps[0], i, j);
           if (start.lon_unsafe() && start.lat_unsafe())
             os << "; the pair was already in a dangerous situation at t = 0 (the scenario starts unsafe, so no "
                   "obligation could be broken before it)";

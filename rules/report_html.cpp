@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -62,6 +63,23 @@ svg::Series box_outline(const BoxPose& p, const std::string& colour) {
   return s;
 }
 
+// A series thinned to what a plot `width_px` wide shows as soon as it is built, so that a long
+// trace's plot data never exist in full (svg::render thins the whole plot further if needed).
+svg::Series fit_to_width(const svg::Series& s, int width_px) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (double x : s.x)
+    if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
+  return hi > lo ? svg::thinned(s, {lo, hi}, width_px) : s;
+}
+
+// Lists longer than this show their first entries and say how many more report.json holds.
+constexpr std::size_t kMaxListedEntries = 400;
+
+void more_entries_note(std::ostringstream& h, std::size_t total) {
+  if (total > kMaxListedEntries)
+    h << "<li>&hellip; " << total - kMaxListedEntries << " more (report.json lists all)</li>\n";
+}
+
 std::string vehicle_label(const Scenario& s, std::size_t k) { return party_name(party_of(s, k)); }
 
 svg::Plot top_down_plot(const Scenario& s, const CheckResult& r) {
@@ -86,7 +104,7 @@ svg::Plot top_down_plot(const Scenario& s, const CheckResult& r) {
       x_lo = std::min(x_lo, state_of(st, k).x_m);
       x_hi = std::max(x_hi, state_of(st, k).x_m);
     }
-    p.series.push_back(std::move(path));
+    p.series.push_back(fit_to_width(path, p.width_px));
   }
   for (double t : key_moments(r)) {
     const TraceStep& st = steps[step_at(r.trace, t)];
@@ -139,8 +157,8 @@ svg::Plot gap_plot(const Scenario& s, const CheckResult& r) {
       gap.y.push_back(g.lat_unsafe() ? g.gap_m : nan);
       dlon.y.push_back(g.lat_unsafe() ? g.d_lon_m : nan);
     }
-    p.series.push_back(std::move(gap));
-    p.series.push_back(std::move(dlon));
+    p.series.push_back(fit_to_width(gap, p.width_px));
+    p.series.push_back(fit_to_width(dlon, p.width_px));
   }
   return p;
 }
@@ -155,7 +173,7 @@ svg::Plot speed_plot(const Scenario& s, const CheckResult& r) {
       v.x.push_back(st.time_s);
       v.y.push_back(speed_of(state_of(st, k)));
     }
-    p.series.push_back(std::move(v));
+    p.series.push_back(fit_to_width(v, p.width_px));
   }
   return p;
 }
@@ -179,7 +197,7 @@ svg::Plot sideslip_plot(const CheckResult& r) {
     hi.y = {limit, limit};
     lo.y = {-limit, -limit};
   }
-  p.series = {beta, hi, lo};
+  p.series = {fit_to_width(beta, p.width_px), hi, lo};
   return p;
 }
 
@@ -220,9 +238,11 @@ std::string report_html(const Scenario& s, const CheckResult& r) {
     << "</code>. " << escape(s.description) << "</p>\n<h2>Violations</h2>\n";
   violations_table(h, r);
   h << "<h2>Right of way</h2>\n<ul>\n";
-  for (const auto& [t, holder] : r.right_of_way) {
+  for (std::size_t k = 0; k < std::min(r.right_of_way.size(), kMaxListedEntries); ++k) {
+    const auto& [t, holder] = r.right_of_way[k];
     h << "<li>from t = " << format_number(t, 2) << " s: " << escape(party_name(holder)) << "</li>\n";
   }
+  more_entries_note(h, r.right_of_way.size());
   h << "</ul>\n";
   if (!r.trace.steps.empty()) {
     h << "<h2>Trajectories</h2>\n" << inline_svg(svg::render(top_down_plot(s, r))) << "\n";
@@ -241,10 +261,12 @@ std::string report_html(const Scenario& s, const CheckResult& r) {
       << "</td><td>" << escape(spec.liability) << "</td></tr>\n";
   }
   h << "</table>\n<h2>Timeline</h2>\n<ul>\n";
-  for (const TraceEvent& e : r.trace.events) {
+  for (std::size_t k = 0; k < std::min(r.trace.events.size(), kMaxListedEntries); ++k) {
+    const TraceEvent& e = r.trace.events[k];
     h << "<li>t = " << format_number(e.time_s, 2) << " s &mdash; " << escape(to_string(e.kind)) << " ("
       << escape(party_name(e.vehicle_id)) << "): " << escape(e.detail) << "</li>\n";
   }
+  more_entries_note(h, r.trace.events.size());
   h << "</ul>\n</body></html>\n";
   return h.str();
 }

@@ -34,6 +34,29 @@ void for_each_pair(std::size_t n, Fn&& fn) {
 
 std::string describe(const Scenario& s, std::size_t k) { return party_name(party_of(s, k)); }
 
+// Interaction bound of RCPP eq. (1): whatever the front vehicle does, D_lon <= (l_r + l_f)/2 + the
+// rear vehicle's worst-case stopping distance v T + a T^2/2 + (v + a T)^2 / (2 b_min) (the front
+// vehicle only moves forward). reach_m = that distance + l_r/2, padded against rounding.
+double lon_reach_m(const Scenario& s, std::size_t v, double road_vx_mps) {
+  const Limits& l = limits_of(s, v);
+  const double T = s.params.rss.response_time_s, speed = std::max(road_vx_mps, 0.0);
+  const double after_t = speed + l.accel_max_mps2 * T;
+  const double stop_m = speed * T + 0.5 * l.accel_max_mps2 * T * T + after_t * after_t / (2.0 * l.brake_min_mps2);
+  return (0.5 * size_of(s, v).length_m + stop_m) * (1.0 + 1e-9) + 1e-9;
+}
+
+// A main-lane pair whose gap exceeds that bound is longitudinally safe, so its only effect would
+// be a margin gap - D_lon >= gap - bound: when that is not below the smallest margin so far, it
+// changes nothing (exact) and the pair's RSS distances are not computed.
+bool far_apart(const Scenario& s, const PairStepper& pairs, const std::vector<double>& reach_m, std::size_t i,
+               std::size_t j, double min_margin) {
+  const bool i_rear = pairs.x_m(i) <= pairs.x_m(j);
+  const std::size_t rear = i_rear ? i : j, front = i_rear ? j : i;
+  const double gap_m = pairs.x_m(front) - pairs.x_m(rear);
+  const double bound_m = reach_m[rear] + 0.5 * size_of(s, front).length_m * (1.0 + 1e-9);
+  return gap_m >= bound_m && gap_m - bound_m >= min_margin;
+}
+
 }  // namespace
 
 MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
@@ -51,13 +74,23 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
   std::vector<double> stop_speed(n);
   for (std::size_t v = 0; v < n; ++v)
     stop_speed[v] = ctx.params.halted_speed_mps + limits_of(s, v).brake_min_mps2 * s.params.sim.step_s;
+  PairStepper pairs(s);
+  std::vector<double> reach_m(n);
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const TraceStep& st = steps[k];
+    pairs.load(st);
+    for (std::size_t v = 0; v < n; ++v) reach_m[v] = lon_reach_m(s, v, pairs.road_vx_mps(v));
     for (std::size_t v = 0; v < n; ++v) {
       if (state_of(st, v).accel_mps2 < -(limits_of(s, v).brake_max_mps2 + tol)) last_overbrake[v] = st.time_s;
     }
     for_each_pair(n, [&](std::size_t p, std::size_t i, std::size_t j) {
-      const PairGeometry& g = ctx.pairs.at(k, p);
+      // A main-lane pair that is laterally safe, or too far apart to lower the minimum, does
+      // nothing but end its episode (prev_lon_only is read for ego pairs only).
+      if (i > 0 && (far_apart(s, pairs, reach_m, i, j, acc.min_margin()) || !pairs.lat_unsafe(p, i, j))) {
+        episodes[p].active = false;
+        return;
+      }
+      const PairGeometry g = pairs.at(p, i, j);
       Episode& e = episodes[p];
       const bool was_lon_only = prev_lon_only[p] != 0;
       prev_lon_only[p] = g.lon_unsafe() && !g.lat_unsafe();
@@ -129,10 +162,12 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
   const double tol = ctx.params.speed_tolerance_mps;
   MarginAccumulator acc("rss_lateral", steps.size());
   std::vector<Episode> episodes(n - 1);  // only ego pairs: main-lane vehicles keep their lane
+  PairStepper pairs(s);
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const TraceStep& st = steps[k];
+    pairs.load(st);
     for (std::size_t j = 1; j < n; ++j) {
-      const PairGeometry& g = ctx.pairs.at(k, PairTable::index(n, 0, j));
+      const PairGeometry g = pairs.at(PairStepper::index(n, 0, j), 0, j);
       Episode& e = episodes[j - 1];
       // With the ego's centre in the other vehicle's lane the pair is a same-lane pair: its
       // distance is rss_longitudinal's (a cut-in is judged there), and the ego centring itself in

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -35,6 +36,25 @@ Range data_range(const Plot& p, bool x_axis) {
     return {lo - pad, hi + pad};
   }
   return {lo, hi};
+}
+
+// The plot's series, thinned to kMaxPointsPerPlot points in all when they hold more.
+std::vector<Series> shown_series(const Plot& p, Range xr) {
+  constexpr std::size_t kShort = 32;  // outlines and reference lines: kept whole
+  std::size_t points = 0, short_points = 0, long_series = 0;
+  for (const Series& s : p.series) {
+    const std::size_t k = std::min(s.x.size(), s.y.size());
+    points += k;
+    if (k <= kShort) short_points += k;
+    else ++long_series;
+  }
+  if (points <= kMaxPointsPerPlot || long_series == 0) return p.series;
+  const std::size_t left = kMaxPointsPerPlot > short_points ? kMaxPointsPerPlot - short_points : 0;
+  const int columns = static_cast<int>(std::max<std::size_t>(kShort / 4, left / (4 * long_series)));
+  std::vector<Series> out;
+  out.reserve(p.series.size());
+  for (const Series& s : p.series) out.push_back(thinned(s, xr, std::min(columns, p.width_px)));
+  return out;
 }
 
 // Draws one plot into `out` with its top-left corner at (ox, oy).
@@ -80,7 +100,7 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
   out << "<text transform=\"translate(" << ox + 16 << "," << num(0.5 * (y0 + y1))
       << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(p.y_label) << "</text>\n";
   // Data.
-  for (const Series& s : p.series) {
+  for (const Series& s : shown_series(p, xr)) {
     std::string d;
     bool pen_down = false;
     for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
@@ -128,7 +148,58 @@ std::string header(int w, int h) {
          "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 }
 
+// Indices of the first, lowest, highest and last point of one run, in order, each once.
+void keep_run(const Series& s, const std::size_t (&idx)[4], Series& out) {
+  std::size_t sorted[4] = {idx[0], idx[1], idx[2], idx[3]};
+  std::sort(std::begin(sorted), std::end(sorted));
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (k > 0 && sorted[k] == sorted[k - 1]) continue;
+    out.x.push_back(s.x[sorted[k]]);
+    out.y.push_back(s.y[sorted[k]]);
+  }
+}
+
 }  // namespace
+
+Series thinned(const Series& s, Range x_range, int columns) {
+  const std::size_t n = std::min(s.x.size(), s.y.size());
+  if (columns < 1 || n <= 4 * static_cast<std::size_t>(columns)) return s;
+  Series out = s;
+  out.x.clear();
+  out.y.clear();
+  const double width = x_range.hi - x_range.lo;
+  const double scale = width > 0.0 && std::isfinite(width) ? columns / width : 0.0;
+  auto column_of = [&](double x) {
+    return std::clamp(static_cast<long>(std::floor((x - x_range.lo) * scale)), 0L, static_cast<long>(columns) - 1);
+  };
+  bool in_run = false;
+  long run_column = 0;
+  std::size_t run[4] = {0, 0, 0, 0};  // first, lowest, highest, last
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
+      if (in_run) {  // one break marker per break
+        keep_run(s, run, out);
+        out.x.push_back(s.x[i]);
+        out.y.push_back(std::nan(""));
+      }
+      in_run = false;
+      continue;
+    }
+    const long c = column_of(s.x[i]);
+    if (in_run && c == run_column) {
+      if (s.y[i] < s.y[run[1]]) run[1] = i;
+      if (s.y[i] > s.y[run[2]]) run[2] = i;
+      run[3] = i;
+      continue;
+    }
+    if (in_run) keep_run(s, run, out);
+    in_run = true;
+    run_column = c;
+    run[0] = run[1] = run[2] = run[3] = i;
+  }
+  if (in_run) keep_run(s, run, out);
+  return out;
+}
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return {lo};

@@ -74,7 +74,11 @@ PairGeometry geometry_of(const Scenario& s, const Kinematics& ki, const Kinemati
 
 PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j) {
   PairMemo fresh;
-  return geometry_of(s, kinematics_of(state_of(step, i)), kinematics_of(state_of(step, j)), i, j, fresh);
+  return pair_geometry(s, step, i, j, fresh);
+}
+
+PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j, PairMemo& memo) {
+  return geometry_of(s, kinematics_of(state_of(step, i)), kinematics_of(state_of(step, j)), i, j, memo);
 }
 
 PairStepper::PairStepper(const Scenario& s)
@@ -82,6 +86,12 @@ PairStepper::PairStepper(const Scenario& s)
 
 void PairStepper::load(const TraceStep& step) {
   for (std::size_t v = 0; v < n_; ++v) kinematics_[v] = kinematics_of(state_of(step, v));
+}
+
+bool pair_lat_unsafe(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j, PairMemo& memo) {
+  PairGeometry g;
+  lateral_of(s, kinematics_of(state_of(step, i)), kinematics_of(state_of(step, j)), i, j, memo, g);
+  return g.lat_unsafe();
 }
 
 bool PairStepper::lat_unsafe(std::size_t p, std::size_t i, std::size_t j) {

@@ -27,6 +27,17 @@ struct PairGeometry {
 PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j);
 
 namespace pair_detail {
+struct PairMemo;
+}  // namespace pair_detail
+// The same for one pair along a trace: `memo` (one per pair, steps in order) reuses the RSS
+// distances while their inputs repeat bit for bit; the result is the same.
+PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j,
+                           pair_detail::PairMemo& memo);
+// pair_geometry(s, step, i, j, memo).lat_unsafe() without the longitudinal half.
+bool pair_lat_unsafe(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j,
+                     pair_detail::PairMemo& memo);
+
+namespace pair_detail {
 struct Kinematics {
   double x_m, y_m, vx_mps, vy_mps;  // road frame
 };

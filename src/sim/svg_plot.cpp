@@ -148,57 +148,63 @@ std::string header(int w, int h) {
          "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 }
 
-// Indices of the first, lowest, highest and last point of one run, in order, each once.
-void keep_run(const Series& s, const std::size_t (&idx)[4], Series& out) {
-  std::size_t sorted[4] = {idx[0], idx[1], idx[2], idx[3]};
-  std::sort(std::begin(sorted), std::end(sorted));
-  for (std::size_t k = 0; k < 4; ++k) {
-    if (k > 0 && sorted[k] == sorted[k - 1]) continue;
-    out.x.push_back(s.x[sorted[k]]);
-    out.y.push_back(s.y[sorted[k]]);
+}  // namespace
+
+Thinner::Thinner(Series style, Range x_range, int columns) : out_(std::move(style)), lo_(x_range.lo) {
+  out_.x.clear();
+  out_.y.clear();
+  columns_ = std::max(columns, 1);
+  const double width = x_range.hi - x_range.lo;
+  scale_ = width > 0.0 && std::isfinite(width) ? static_cast<double>(columns_) / width : 0.0;
+}
+
+void Thinner::add(double x, double y) {
+  const std::size_t i = next_++;
+  if (!std::isfinite(x) || !std::isfinite(y)) {
+    if (in_run_) {  // one break marker per break
+      keep_run();
+      out_.x.push_back(x);
+      out_.y.push_back(std::nan(""));
+    }
+    in_run_ = false;
+    return;
+  }
+  const long c = std::clamp(static_cast<long>(std::floor((x - lo_) * scale_)), 0L, columns_ - 1);
+  if (in_run_ && c == run_column_) {
+    if (y < run_y_[1]) run_x_[1] = x, run_y_[1] = y, run_index_[1] = i;
+    if (y > run_y_[2]) run_x_[2] = x, run_y_[2] = y, run_index_[2] = i;
+    run_x_[3] = x, run_y_[3] = y, run_index_[3] = i;
+    return;
+  }
+  if (in_run_) keep_run();
+  in_run_ = true;
+  run_column_ = c;
+  for (int k = 0; k < 4; ++k) run_x_[k] = x, run_y_[k] = y, run_index_[k] = i;
+}
+
+// The run's first, lowest, highest and last point, in their order, each once.
+void Thinner::keep_run() {
+  int order[4] = {0, 1, 2, 3};
+  std::sort(std::begin(order), std::end(order), [this](int a, int b) { return run_index_[a] < run_index_[b]; });
+  for (int k = 0; k < 4; ++k) {
+    if (k > 0 && run_index_[order[k]] == run_index_[order[k - 1]]) continue;
+    out_.x.push_back(run_x_[order[k]]);
+    out_.y.push_back(run_y_[order[k]]);
   }
 }
 
-}  // namespace
+Series Thinner::take() {
+  if (in_run_) keep_run();
+  in_run_ = false;
+  return std::move(out_);
+}
 
 Series thinned(const Series& s, Range x_range, int columns) {
   const std::size_t n = std::min(s.x.size(), s.y.size());
   if (columns < 1 || n <= 4 * static_cast<std::size_t>(columns)) return s;
-  Series out = s;
-  out.x.clear();
-  out.y.clear();
-  const double width = x_range.hi - x_range.lo;
-  const double scale = width > 0.0 && std::isfinite(width) ? columns / width : 0.0;
-  auto column_of = [&](double x) {
-    return std::clamp(static_cast<long>(std::floor((x - x_range.lo) * scale)), 0L, static_cast<long>(columns) - 1);
-  };
-  bool in_run = false;
-  long run_column = 0;
-  std::size_t run[4] = {0, 0, 0, 0};  // first, lowest, highest, last
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
-      if (in_run) {  // one break marker per break
-        keep_run(s, run, out);
-        out.x.push_back(s.x[i]);
-        out.y.push_back(std::nan(""));
-      }
-      in_run = false;
-      continue;
-    }
-    const long c = column_of(s.x[i]);
-    if (in_run && c == run_column) {
-      if (s.y[i] < s.y[run[1]]) run[1] = i;
-      if (s.y[i] > s.y[run[2]]) run[2] = i;
-      run[3] = i;
-      continue;
-    }
-    if (in_run) keep_run(s, run, out);
-    in_run = true;
-    run_column = c;
-    run[0] = run[1] = run[2] = run[3] = i;
-  }
-  if (in_run) keep_run(s, run, out);
-  return out;
+  Thinner t(s, x_range, columns);
+  for (std::size_t i = 0; i < n; ++i) t.add(s.x[i], s.y[i]);
+  return t.take();
 }
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {

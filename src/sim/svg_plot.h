@@ -49,6 +49,27 @@ struct Plot {
 // (non-finite points) are kept. A series of at most 4 x columns points is returned unchanged.
 Series thinned(const Series& s, Range x_range, int columns);
 
+// thinned() one point at a time, for series too long to hold (a report's plot of a long trace):
+// add the points in order, then take() the thinned series. It always thins: the size test of
+// thinned() is the caller's.
+class Thinner {
+ public:
+  Thinner(Series style, Range x_range, int columns);
+  void add(double x, double y);
+  Series take();
+
+ private:
+  void keep_run();
+  Series out_;
+  double lo_ = 0.0, scale_ = 0.0;
+  long columns_ = 1;
+  bool in_run_ = false;
+  long run_column_ = 0;
+  double run_x_[4] = {}, run_y_[4] = {};  // first, lowest, highest, last
+  std::size_t run_index_[4] = {};
+  std::size_t next_ = 0;
+};
+
 // render() thins a plot whose series hold more points than this, so that a report stays a few
 // megabytes for any scene (64 vehicles, an hour): each series keeps what its share of the
 // budget shows.

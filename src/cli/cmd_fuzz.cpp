@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
+#include "core/atomic_file.h"
 #include "core/output_path.h"
 #include "fuzz/campaign.h"
 #include "fuzz/campaign_report.h"
@@ -159,6 +160,7 @@ int run_fuzz(const std::vector<std::string>& args) {
   // Before any work: an overnight campaign must not lose its cases or report in the morning.
   if (!o.corpus_dir.empty()) prepare_output_dir("--corpus", o.corpus_dir);
   if (!report_dir.empty()) prepare_output_dir("--report", report_dir);
+  if (!o.corpus_dir.empty()) remove_stale_temporaries(o.corpus_dir);  // of campaigns killed while writing
   StopSignalGuard guard;
   o.stop = &g_stop;
   o.on_progress = progress_printer(::isatty(STDERR_FILENO) != 0);

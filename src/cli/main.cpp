@@ -1,4 +1,5 @@
 // mergeguard: formal rule checking and scenario fuzzing for autonomous lane merges.
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -49,6 +50,9 @@ int usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Beyond a file-size limit (ulimit -f) a write then fails with EFBIG, reported like any other
+  // I/O error, instead of the signal killing the process mid-file.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (argc < 2) return usage(std::cerr);
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {

@@ -84,7 +84,7 @@ prlimit --fsize=1024 "$bin" fuzz --planner tripfield --time 60 --shrink-attempts
 status=$?
 bad=0
 for f in "$work"/fsize-corpus/*.json; do [ -e "$f" ] && { "$bin" replay "$f" > /dev/null 2>&1 || bad=$((bad + 1)); }; done
-check "fuzz --corpus past a 1 KB file-size limit" "exit $status, '$(head -c 150 "$work/err")', $bad broken cases, $(temporaries "$work/fsize-corpus") temporaries" \
+check "fuzz --corpus past a 1 KB file-size limit" "exit $status, '$(tail -n 1 "$work/err" | head -c 150)', $bad broken cases, $(temporaries "$work/fsize-corpus") temporaries" \
   "$(( status != 2 || bad != 0 || $(temporaries "$work/fsize-corpus") != 0 ))"
 mkdir -p "$work/full"
 if mount -t tmpfs -o size=64k tmpfs "$work/full" 2> /dev/null; then

@@ -194,9 +194,9 @@ void write_campaign_report(const std::string& dir, const CampaignOptions& o, con
   }
   page += "</body></html>\n";
   const std::filesystem::path base(dir);
-  write_file_atomic((base / "report.json").string(), campaign_summary_json(o, r).dump(2) + "\n");
-  write_file_atomic((base / "report.md").string(), md);
-  write_file_atomic((base / "report.html").string(), page);
+  write_files_atomic({{(base / "report.json").string(), campaign_summary_json(o, r).dump(2) + "\n"},
+                      {(base / "report.md").string(), md},
+                      {(base / "report.html").string(), page}});
 }
 
 }  // namespace mg::fuzz

@@ -243,18 +243,21 @@ int bin_of(double margin) {
 }  // namespace
 
 void MarginStats::add(double margin, bool holds) {
-  min = count == 0 ? margin : std::min(min, margin);
-  ++count;
+  ++scenarios;
   if (!holds) ++violated;
+  if (std::isinf(margin) && margin > 0.0) return;  // never applied: not exercised
+  min = exercised == 0 ? margin : std::min(min, margin);
+  ++exercised;
   sum_micro += static_cast<std::int64_t>(std::llround(std::clamp(margin, -1e9, 1e9) * 1e6));
   ++bins[static_cast<std::size_t>(bin_of(margin))];
 }
 
 void MarginStats::merge(const MarginStats& other) {
-  if (other.count == 0) return;
+  if (other.scenarios == 0) return;
   if (unit.empty()) unit = other.unit;
-  min = count == 0 ? other.min : std::min(min, other.min);
-  count += other.count;
+  if (other.exercised > 0) min = exercised == 0 ? other.min : std::min(min, other.min);
+  scenarios += other.scenarios;
+  exercised += other.exercised;
   violated += other.violated;
   sum_micro += other.sum_micro;
   for (std::size_t b = 0; b < bins.size(); ++b) bins[b] += other.bins[b];

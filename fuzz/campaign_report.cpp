@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "fuzz/corpus_case.h"
+#include "fuzz/rule_coverage.h"
 
 namespace mg::fuzz {
 namespace {
@@ -97,12 +98,23 @@ Table signature_table(const CampaignResult& r, const std::string& dir, const std
   return t;
 }
 
-Table margin_table(const CampaignResult& r) {
-  Table t{{"rule", "unit", "scenarios", "violated", "min", "mean"}, {}};
+// Statistics are over the scenarios that exercised the rule; a rule that never applied says so
+// instead of showing a sentinel.
+Table margin_table(const CampaignOptions& o, const CampaignResult& r) {
+  Table t{{"rule", "unit", "scenarios", "exercised", "violated", "min", "mean"}, {}};
   for (std::size_t b = 0; b < kMarginBinEdges.size() + 1; ++b) t.header.push_back(bin_label(b));
-  for (const auto& [rule, m] : r.margins) {
-    std::vector<std::string> row{rule, m.unit, std::to_string(m.count), std::to_string(m.violated), fixed(m.min, 3),
-                                 fixed(m.mean(), 3)};
+  for (const RuleCoverage& c : rule_coverage(o.planner, r)) {
+    const auto it = r.margins.find(c.rule);
+    if (it == r.margins.end()) continue;
+    const MarginStats& m = it->second;
+    std::vector<std::string> row{c.rule, m.unit, std::to_string(m.scenarios), std::to_string(m.exercised),
+                                 std::to_string(m.violated)};
+    if (m.exercised == 0) {
+      const std::string why = c.applicable ? "not exercised" : "not applicable";
+      row.insert(row.end(), {why, why});
+    } else {
+      row.insert(row.end(), {fixed(m.min, 3), fixed(*m.mean(), 3)});
+    }
     for (auto n : m.bins) row.push_back(std::to_string(n));
     t.rows.push_back(row);
   }
@@ -126,6 +138,29 @@ std::string headline(const CampaignOptions& o, const CampaignResult& r) {
 
 }  // namespace
 
+// The warning a reader must see first: rules that could apply but no scenario exercised, so the
+// campaign says nothing about them; and the rules that cannot apply to this planner.
+std::vector<std::string> coverage_warnings(const CampaignOptions& o, const CampaignResult& r) {
+  std::vector<std::string> out;
+  if (r.scenarios == 0) return out;
+  const auto never = rules_never_exercised(o.planner, r);
+  if (!never.empty()) {
+    std::string line = "Warning: " + std::to_string(never.size()) + " rule(s) that can apply to " + o.planner +
+                       " were exercised in none of the " + std::to_string(r.scenarios) +
+                       " scenarios, so this campaign says nothing about them:";
+    for (const auto& rule : never) line += " " + rule;
+    out.push_back(line + ".");
+  }
+  std::map<std::string, std::vector<std::string>> by_reason;
+  for (const auto& [rule, why] : rules_not_applicable(o.planner)) by_reason[why].push_back(rule);
+  for (const auto& [why, rules] : by_reason) {
+    std::string line = "Not applicable to " + o.planner + ":";
+    for (const auto& rule : rules) line += " " + rule;
+    out.push_back(line + " (" + why + ").");
+  }
+  return out;
+}
+
 json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
   json signatures = json::array();
   for (const auto& [sig, rec] : r.signatures) {
@@ -144,12 +179,25 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
                           {"shrink_minimal", rec.shrink_minimal}});
   }
   json margins = json::object();
-  for (const auto& [rule, m] : r.margins) {
+  for (const RuleCoverage& c : rule_coverage(o.planner, r)) {
+    const auto it = r.margins.find(c.rule);
+    if (it == r.margins.end()) continue;
+    const MarginStats& m = it->second;
     json bins = json::array();
     for (std::size_t b = 0; b < m.bins.size(); ++b) bins.push_back({{"range", bin_label(b)}, {"count", m.bins[b]}});
-    margins[rule] = {{"unit", m.unit}, {"scenarios", m.count}, {"violated", m.violated},
-                     {"min", std::isfinite(m.min) ? json(m.min) : json(nullptr)}, {"mean", m.mean()}, {"bins", bins}};
+    const bool stats = m.exercised > 0;
+    margins[c.rule] = {{"unit", m.unit},
+                       {"scenarios", m.scenarios},
+                       {"exercised", m.exercised},
+                       {"applicable", c.applicable},
+                       {"violated", m.violated},
+                       {"min", stats ? json(m.min) : json(nullptr)},
+                       {"mean", stats ? json(*m.mean()) : json(nullptr)},
+                       {"bins", bins}};
+    if (!c.applicable) margins[c.rule]["not_applicable_why"] = c.not_applicable_why;
   }
+  json not_applicable = json::object();
+  for (const auto& [rule, why] : rules_not_applicable(o.planner)) not_applicable[rule] = why;
   return {{"planner", o.planner},
           {"seed", o.seed},
           {"runs", o.runs ? json(*o.runs) : json(nullptr)},
@@ -157,6 +205,7 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
           {"jobs", o.jobs},
           {"shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count)},
           {"corpus", o.corpus_dir},
+          {"families", o.gen.targeted_families ? "mixed" : "uniform"},
           {"interrupted", r.interrupted},
           {"scenarios", r.scenarios},
           {"seconds", r.seconds},
@@ -170,6 +219,8 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
           {"failures_by_party", r.by_party},
           {"signature_list", signatures},
           {"margins", margins},
+          {"rules_never_exercised", r.scenarios > 0 ? rules_never_exercised(o.planner, r) : std::vector<std::string>{}},
+          {"rules_not_applicable", not_applicable},
           {"date", utc_now_iso8601()}};
 }
 
@@ -180,13 +231,20 @@ void write_campaign_report(const std::string& dir, const CampaignOptions& o, con
       {"Failures by property", count_table("property", r.by_property)},
       {"Failures by rule", count_table("rule", r.by_rule)},
       {"Failures by liable party", count_table("party", r.by_party)},
-      {"Robustness margins per rule (bins in the rule's unit)", margin_table(r)},
+      {"Rule coverage and robustness margins (statistics over the scenarios that exercised the rule; bins in "
+       "the rule's unit)",
+       margin_table(o, r)},
   };
   std::string md = "# mergeguard fuzzing campaign\n\n" + headline(o, r) + "\n";
+  const std::vector<std::string> warnings = coverage_warnings(o, r);
+  for (const std::string& w : warnings) md += "\n> " + w + "\n";
   std::string page = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>mergeguard fuzzing campaign</title>"
                      "<style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #999;"
-                     "padding:2px 6px;text-align:left}</style></head><body>\n<h1>mergeguard fuzzing campaign</h1>\n<p>" +
+                     "padding:2px 6px;text-align:left}.warning{background:#fde2c8;border-left:6px solid #d9480f;padding:6px 10px}"
+                     ".note{color:#555}</style></head><body>\n<h1>mergeguard fuzzing campaign</h1>\n<p>" +
                      html_escape(headline(o, r)) + "</p>\n";
+  for (const std::string& w : warnings)
+    page += std::string(w.rfind("Warning", 0) == 0 ? "<p class=\"warning\">" : "<p class=\"note\">") + html_escape(w) + "</p>\n";
   for (const Section& s : sections) {
     md += "\n## " + s.title + "\n\n" + (s.table.rows.empty() ? "None.\n" : markdown(s.table));
     page += "<h2>" + html_escape(s.title) + "</h2>\n" + (s.table.rows.empty() ? "<p>None.</p>\n" : html(s.table));

@@ -193,6 +193,7 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
                        {"violated", m.violated},
                        {"min", stats ? json(m.min) : json(nullptr)},
                        {"mean", stats ? json(*m.mean()) : json(nullptr)},
+                       {"sum_micro", m.sum_micro},
                        {"bins", bins}};
     if (!c.applicable) margins[c.rule]["not_applicable_why"] = c.not_applicable_why;
   }

@@ -1,6 +1,7 @@
 #include "fuzz/campaign_report.h"
 #include "sim/svg_plot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -119,6 +120,50 @@ Table margin_table(const CampaignOptions& o, const CampaignResult& r) {
     t.rows.push_back(row);
   }
   return t;
+}
+
+// One rule's margin histogram as a small inline SVG bar chart (bins below zero, the violations,
+// in red); heights on a square-root scale so that a handful of near misses stays visible beside
+// thousands of comfortable margins.
+std::string histogram_svg(const std::string& rule, const MarginStats& m) {
+  constexpr int kBarW = 34, kGap = 4, kH = 70, kTop = 14, kLabelH = 26;
+  const int bins = static_cast<int>(m.bins.size());
+  const int width = bins * (kBarW + kGap);
+  std::uint64_t peak = 1;
+  for (auto n : m.bins) peak = std::max(peak, n);
+  // Bins 0 .. zero_bin-1 lie below a margin of 0 (kMarginBinEdges has an edge at 0).
+  const int zero_bin = static_cast<int>(std::find(kMarginBinEdges.begin(), kMarginBinEdges.end(), 0.0) - kMarginBinEdges.begin()) + 1;
+  std::ostringstream out;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << kTop + kH + kLabelH
+      << "\" role=\"img\" aria-label=\"margin histogram of " << html_escape(rule) << "\">";
+  for (int b = 0; b < bins; ++b) {
+    const auto n = m.bins[static_cast<std::size_t>(b)];
+    const int h = n == 0 ? 0 : std::max(1, static_cast<int>(std::lround(kH * std::sqrt(static_cast<double>(n) / static_cast<double>(peak)))));
+    const int x = b * (kBarW + kGap);
+    const bool violated = b < zero_bin;
+    out << "<rect x=\"" << x << "\" y=\"" << kTop + kH - h << "\" width=\"" << kBarW << "\" height=\"" << h << "\" fill=\""
+        << (violated ? "#d9480f" : "#1f77b4") << "\"><title>" << html_escape(bin_label(static_cast<std::size_t>(b))) << ": " << n
+        << "</title></rect>";
+    out << "<text x=\"" << x + kBarW / 2 << "\" y=\"" << kTop + kH - h - 2 << "\" font-size=\"9\" text-anchor=\"middle\">" << n << "</text>";
+    out << "<text x=\"" << x + kBarW / 2 << "\" y=\"" << kTop + kH + 11 << "\" font-size=\"8\" text-anchor=\"middle\">"
+        << html_escape(bin_label(static_cast<std::size_t>(b))) << "</text>";
+  }
+  out << "<text x=\"0\" y=\"" << kTop + kH + 23 << "\" font-size=\"9\">" << html_escape(m.unit) << "</text></svg>";
+  return out.str();
+}
+
+// The margin histograms of the exercised rules, for the HTML report.
+std::string histogram_section(const CampaignOptions& o, const CampaignResult& r) {
+  std::string out = "<h2>Margin histograms (exercised scenarios; red: violations)</h2>\n<div class=\"hists\">\n";
+  bool any = false;
+  for (const RuleCoverage& c : rule_coverage(o.planner, r)) {
+    const auto it = r.margins.find(c.rule);
+    if (it == r.margins.end() || it->second.exercised == 0) continue;
+    any = true;
+    out += "<figure><figcaption>" + html_escape(c.rule) + " (" + std::to_string(it->second.exercised) + " of " +
+           std::to_string(it->second.scenarios) + ")</figcaption>" + histogram_svg(c.rule, it->second) + "</figure>\n";
+  }
+  return any ? out + "</div>\n" : "";
 }
 
 struct Section {
@@ -242,7 +287,8 @@ void write_campaign_report(const std::string& dir, const CampaignOptions& o, con
   std::string page = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>mergeguard fuzzing campaign</title>"
                      "<style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #999;"
                      "padding:2px 6px;text-align:left}.warning{background:#fde2c8;border-left:6px solid #d9480f;padding:6px 10px}"
-                     ".note{color:#555}</style></head><body>\n<h1>mergeguard fuzzing campaign</h1>\n<p>" +
+                     ".note{color:#555}.hists{display:flex;flex-wrap:wrap;gap:8px}figure{margin:4px;border:1px solid #ddd;"
+                     "padding:4px}figcaption{font-size:12px}</style></head><body>\n<h1>mergeguard fuzzing campaign</h1>\n<p>" +
                      html_escape(headline(o, r)) + "</p>\n";
   for (const std::string& w : warnings)
     page += std::string(w.rfind("Warning", 0) == 0 ? "<p class=\"warning\">" : "<p class=\"note\">") + html_escape(w) + "</p>\n";
@@ -250,6 +296,7 @@ void write_campaign_report(const std::string& dir, const CampaignOptions& o, con
     md += "\n## " + s.title + "\n\n" + (s.table.rows.empty() ? "None.\n" : markdown(s.table));
     page += "<h2>" + html_escape(s.title) + "</h2>\n" + (s.table.rows.empty() ? "<p>None.</p>\n" : html(s.table));
   }
+  page += histogram_section(o, r);
   page += "</body></html>\n";
   const std::filesystem::path base(dir);
   write_file_atomic((base / "report.json").string(), campaign_summary_json(o, r).dump(2) + "\n");

@@ -107,7 +107,11 @@ TEST(RuleCoverage, TheReportWarnsAboutAnApplicableRuleNeverExercisedAndMarksTheI
   const std::string md = read(dir / "report.md");
   EXPECT_NE(md.find("> Warning: 1 rule(s) that can apply to rcpp-coop were exercised in none of the 2 scenarios"), std::string::npos);
   EXPECT_NE(md.find("def2_2b_responder | m/s | 2 | 0 | 0 | not exercised | not exercised"), std::string::npos) << md;
-  EXPECT_NE(read(dir / "report.html").find("class=\"warning\""), std::string::npos);
+  const std::string page = read(dir / "report.html");
+  EXPECT_NE(page.find("class=\"warning\""), std::string::npos);
+  // One margin histogram per exercised rule, none for the rule that never applied.
+  EXPECT_NE(page.find("aria-label=\"margin histogram of collision\""), std::string::npos);
+  EXPECT_EQ(page.find("aria-label=\"margin histogram of def2_2b_responder\""), std::string::npos);
   const auto summary = campaign_summary_json(o, r);
   EXPECT_EQ(summary["margins"]["def2_2b_responder"]["exercised"], 0);
   EXPECT_TRUE(summary["margins"]["def2_2b_responder"]["mean"].is_null());

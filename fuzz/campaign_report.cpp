@@ -177,7 +177,11 @@ std::string headline(const CampaignOptions& o, const CampaignResult& r) {
       << fixed(r.scenarios_per_second(), 1) << " scenarios/s, " << o.jobs << " jobs, seed " << o.seed << ", shard "
       << o.shard_index << "/" << o.shard_count << (r.interrupted ? ", interrupted" : "") << "): "
       << r.failing_scenarios << " failing scenarios, " << r.signatures.size() << " signatures, " << r.new_cases.size()
-      << " new corpus cases.";
+      << " new corpus cases";
+  std::size_t minimal = 0;
+  for (const auto& [sig, rec] : r.signatures) minimal += !rec.case_path.empty() && rec.shrink_minimal ? 1 : 0;
+  if (!r.new_cases.empty()) out << " (" << minimal << " of them local minima; the rest were cut by the shrink budget)";
+  out << ".";
   return out.str();
 }
 
@@ -260,6 +264,9 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
           {"property_failures", r.property_failures},
           {"signatures", r.signatures.size()},
           {"new_cases", r.new_cases},
+          {"new_cases_local_minima", std::count_if(r.signatures.begin(), r.signatures.end(), [](const auto& kv) {
+             return !kv.second.case_path.empty() && kv.second.shrink_minimal;
+           })},
           {"failures_by_property", r.by_property},
           {"failures_by_rule", r.by_rule},
           {"failures_by_party", r.by_party},

@@ -37,6 +37,8 @@ struct CampaignProgress {
   std::optional<double> remaining_s;   // estimate with --runs (after the first runs), exact with --time
 };
 
+inline constexpr std::size_t kMaxTimelineSamples = 512;
+
 // Margin histogram bin edges (in each rule's unit); bins are (-inf,e0), [e0,e1), ..., [e_last,inf).
 inline constexpr std::array<double, 7> kMarginBinEdges = {-10.0, -1.0, -0.1, 0.0, 0.1, 1.0, 10.0};
 
@@ -84,6 +86,9 @@ struct CampaignResult {
   std::map<std::string, std::uint64_t> by_property, by_rule, by_party;  // (scenario, signature) counts
   std::map<std::string, MarginStats> margins;  // per rule, over every checked scenario (rule_coverage.h)
   std::vector<std::string> new_cases;          // paths, sorted
+  // Progress samples over the campaign (for the report's findings-over-time plot; timing, like
+  // `seconds`): at most kMaxTimelineSamples, thinned by halving as the campaign goes on.
+  std::vector<CampaignProgress> timeline;
   double scenarios_per_second() const { return seconds > 0.0 ? static_cast<double>(scenarios) / seconds : 0.0; }
 };
 

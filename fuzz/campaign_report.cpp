@@ -166,6 +166,29 @@ std::string histogram_section(const CampaignOptions& o, const CampaignResult& r)
   return any ? out + "</div>\n" : "";
 }
 
+// Failing scenarios and distinct signatures against elapsed time (the campaign's progress
+// samples): whether findings were still coming when the campaign stopped.
+std::string findings_over_time(const CampaignResult& r) {
+  if (r.timeline.size() < 2) return "";
+  svg::Plot plot;
+  plot.x_label = "elapsed [s]";
+  plot.y_label = "count";
+  plot.width_px = 560;
+  plot.height_px = 260;
+  plot.legend = svg::LegendCorner::kTopLeft;
+  svg::Series failing{"failing scenarios", {}, {}, "#d9480f", "", 1.6};
+  svg::Series signatures{"signatures", {}, {}, "#1f77b4", "6 3", 1.6};
+  for (const CampaignProgress& p : r.timeline) {
+    failing.x.push_back(p.elapsed_s);
+    failing.y.push_back(static_cast<double>(p.failing_scenarios));
+    signatures.x.push_back(p.elapsed_s);
+    signatures.y.push_back(static_cast<double>(p.signatures));
+  }
+  plot.series = {failing, signatures};
+  plot.y_range = svg::Range{0.0, std::max(1.0, std::max(failing.y.back(), signatures.y.back()) * 1.1)};
+  return "<h2>Findings over time</h2>\n" + svg::render(plot) + "\n";
+}
+
 struct Section {
   std::string title;
   Table table;
@@ -297,13 +320,14 @@ void write_campaign_report(const std::string& dir, const CampaignOptions& o, con
                      ".note{color:#555}.hists{display:flex;flex-wrap:wrap;gap:8px}figure{margin:4px;border:1px solid #ddd;"
                      "padding:4px}figcaption{font-size:12px}</style></head><body>\n<h1>mergeguard fuzzing campaign</h1>\n<p>" +
                      html_escape(headline(o, r)) + "</p>\n";
+  const std::string over_time = findings_over_time(r);
   for (const std::string& w : warnings)
     page += std::string(w.rfind("Warning", 0) == 0 ? "<p class=\"warning\">" : "<p class=\"note\">") + html_escape(w) + "</p>\n";
   for (const Section& s : sections) {
     md += "\n## " + s.title + "\n\n" + (s.table.rows.empty() ? "None.\n" : markdown(s.table));
     page += "<h2>" + html_escape(s.title) + "</h2>\n" + (s.table.rows.empty() ? "<p>None.</p>\n" : html(s.table));
   }
-  page += histogram_section(o, r);
+  page += over_time + histogram_section(o, r);
   page += "</body></html>\n";
   const std::filesystem::path base(dir);
   write_file_atomic((base / "report.json").string(), campaign_summary_json(o, r).dump(2) + "\n");

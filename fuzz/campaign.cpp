@@ -166,10 +166,16 @@ class Campaign {
     auto next_report = Clock::now();
     const auto period = [](double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); };
     auto next_checkpoint = Clock::now() + period(opt_.checkpoint_period_s);
+    auto next_sample = Clock::now();
+    double sample_every_s = 1.0;
     while (active_.load() > 0) {
       if (opt_.on_progress && Clock::now() >= next_report) {
         opt_.on_progress(progress());
         next_report += period(opt_.progress_period_s);
+      }
+      if (Clock::now() >= next_sample) {
+        sample_timeline(sample_every_s);
+        next_sample += period(sample_every_s);
       }
       if (opt_.on_checkpoint && Clock::now() >= next_checkpoint) {
         opt_.on_checkpoint(snapshot());
@@ -178,6 +184,17 @@ class Campaign {
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     if (opt_.on_progress) opt_.on_progress(progress());
+    timeline_.push_back(progress());
+  }
+
+  // Keeps at most kMaxTimelineSamples: when full, every other sample goes and the period doubles.
+  void sample_timeline(double& every_s) {
+    timeline_.push_back(progress());
+    if (timeline_.size() < kMaxTimelineSamples) return;
+    std::vector<CampaignProgress> kept;
+    for (std::size_t k = 0; k < timeline_.size(); k += 2) kept.push_back(timeline_[k]);
+    timeline_ = std::move(kept);
+    every_s *= 2.0;
   }
 
   // Everything but the margins (those are per worker until the end).
@@ -204,6 +221,7 @@ class Campaign {
 
   CampaignResult collect(const std::vector<WorkerStats>& stats) {
     CampaignResult r = snapshot();
+    r.timeline = timeline_;
     for (const WorkerStats& s : stats)
       for (const auto& [rule, m] : s.margins) r.margins[rule].merge(m);
     return r;
@@ -221,6 +239,7 @@ class Campaign {
   std::mutex mutex_;  // guards signatures_, error_ and corpus writes
   std::map<Signature, SignatureRecord> signatures_;
   std::exception_ptr error_;
+  std::vector<CampaignProgress> timeline_;  // the progress thread's only
 };
 
 void validate(const CampaignOptions& o) {
@@ -243,18 +262,21 @@ int bin_of(double margin) {
 }  // namespace
 
 void MarginStats::add(double margin, bool holds) {
-  min = count == 0 ? margin : std::min(min, margin);
-  ++count;
+  ++scenarios;
   if (!holds) ++violated;
+  if (std::isinf(margin) && margin > 0.0) return;  // never applied: not exercised
+  min = exercised == 0 ? margin : std::min(min, margin);
+  ++exercised;
   sum_micro += static_cast<std::int64_t>(std::llround(std::clamp(margin, -1e9, 1e9) * 1e6));
   ++bins[static_cast<std::size_t>(bin_of(margin))];
 }
 
 void MarginStats::merge(const MarginStats& other) {
-  if (other.count == 0) return;
+  if (other.scenarios == 0) return;
   if (unit.empty()) unit = other.unit;
-  min = count == 0 ? other.min : std::min(min, other.min);
-  count += other.count;
+  if (other.exercised > 0) min = exercised == 0 ? other.min : std::min(min, other.min);
+  scenarios += other.scenarios;
+  exercised += other.exercised;
   violated += other.violated;
   sum_micro += other.sum_micro;
   for (std::size_t b = 0; b < bins.size(); ++b) bins[b] += other.bins[b];

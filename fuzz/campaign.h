@@ -37,17 +37,28 @@ struct CampaignProgress {
   std::optional<double> remaining_s;   // estimate with --runs (after the first runs), exact with --time
 };
 
+inline constexpr std::size_t kMaxTimelineSamples = 512;
+
 // Margin histogram bin edges (in each rule's unit); bins are (-inf,e0), [e0,e1), ..., [e_last,inf).
 inline constexpr std::array<double, 7> kMarginBinEdges = {-10.0, -1.0, -0.1, 0.0, 0.1, 1.0, 10.0};
 
+// One rule's robustness margins over a campaign. A rule is *exercised* by a scenario when it
+// applied at least once in its trace (a finite minimum margin); the statistics (min, mean,
+// histogram) are over the exercised scenarios only, so a rule that never applied has no
+// statistics instead of a sentinel +infinity folded into the top bin.
 struct MarginStats {
   std::string unit;
-  std::uint64_t count = 0;
+  std::uint64_t scenarios = 0;   // checked scenarios (the rule was evaluated)
+  std::uint64_t exercised = 0;   // ... in which it applied at least once
   std::uint64_t violated = 0;
-  double min = 0.0;
+  double min = 0.0;              // meaningful when exercised > 0
   std::int64_t sum_micro = 0;   // sum of margins in micro-units, clamped to +-1e9: exact, order-independent
-  double mean() const { return count > 0 ? static_cast<double>(sum_micro) * 1e-6 / static_cast<double>(count) : 0.0; }
+  std::optional<double> mean() const {
+    if (exercised == 0) return std::nullopt;
+    return static_cast<double>(sum_micro) * 1e-6 / static_cast<double>(exercised);
+  }
   std::array<std::uint64_t, kMarginBinEdges.size() + 1> bins{};
+  // `margin` is the rule's minimum over the trace: +infinity when the rule never applied.
   void add(double margin, bool holds);
   void merge(const MarginStats& other);
 };
@@ -74,8 +85,11 @@ struct CampaignResult {
   std::string stop_signal;                     // e.g. "SIGTERM" when interrupted (set by the CLI)
   std::map<Signature, SignatureRecord> signatures;
   std::map<std::string, std::uint64_t> by_property, by_rule, by_party;  // (scenario, signature) counts
-  std::map<std::string, MarginStats> margins;  // per rule, over every checked scenario
+  std::map<std::string, MarginStats> margins;  // per rule, over every checked scenario (rule_coverage.h)
   std::vector<std::string> new_cases;          // paths, sorted
+  // Progress samples over the campaign (for the report's findings-over-time plot; timing, like
+  // `seconds`): at most kMaxTimelineSamples, thinned by halving as the campaign goes on.
+  std::vector<CampaignProgress> timeline;
   double scenarios_per_second() const { return seconds > 0.0 ? static_cast<double>(scenarios) / seconds : 0.0; }
 };
 

@@ -1,10 +1,12 @@
 // Campaign reports (issue #6 item 8): a JSON summary and the same content as Markdown and HTML:
 // scenarios run, rate, failures by property, rule and liable party, the signatures with their
-// corpus cases (and liability reports when written), and the margin distribution per rule.
+// corpus cases (and liability reports when written), and each rule's coverage and margin
+// distribution.
 #pragma once
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +17,10 @@ namespace mg::fuzz {
 // The summary printed by `mergeguard fuzz --json` and saved as report.json. Only "seconds",
 // "scenarios_per_second" and "date" depend on timing.
 nlohmann::json campaign_summary_json(const CampaignOptions& options, const CampaignResult& result);
+
+// The lines a reader must see first (rule_coverage.h): the rules that can apply to the planner
+// but that no scenario exercised ("Warning: ..."), and the rules that cannot apply to it.
+std::vector<std::string> coverage_warnings(const CampaignOptions& options, const CampaignResult& result);
 
 // Writes report.json, report.md and report.html into `dir` (atomically, each). `liability_reports`
 // maps a case path to its liability report (relative to `dir`) when one was written.

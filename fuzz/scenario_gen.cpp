@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fuzz/choice_gen.h"
+#include "fuzz/scenario_families.h"
 
 namespace mg::fuzz {
 namespace {
@@ -18,6 +19,16 @@ rc::Gen<V2vSpec> gen_v2v(const RealRange& latency, const RealRange& loss) {
   return build<V2vSpec>(set(&V2vSpec::capable, gen_bool(1, 1)), set(&V2vSpec::latency_s, gen_real(latency)),
                         set(&V2vSpec::loss_prob, gen_real(loss)));
 }
+
+rc::Gen<NonComplianceType> gen_noncompliance(const GenConfig& config) {
+  if (!config.allow_noncompliance) return gen_choice<NonComplianceType>({{1, NonComplianceType::kNone}});
+  return gen_choice<NonComplianceType>({{7, NonComplianceType::kNone},
+                                        {1, NonComplianceType::kExceedAccel},
+                                        {1, NonComplianceType::kExceedBrake},
+                                        {1, NonComplianceType::kRenege}});
+}
+
+}  // namespace
 
 rc::Gen<RoadSpec> gen_road() {
   return build<RoadSpec>(set(&RoadSpec::lane_width_m, gen_real(range::kLaneWidth)),
@@ -47,16 +58,6 @@ rc::Gen<ParamsSpec> gen_params() {
                            set(&ParamsSpec::comm_threshold_s, gen_real(range::kCommThreshold)),
                            set(&ParamsSpec::horizon_s, gen_real(range::kHorizon)));
 }
-
-rc::Gen<NonComplianceType> gen_noncompliance(const GenConfig& config) {
-  if (!config.allow_noncompliance) return gen_choice<NonComplianceType>({{1, NonComplianceType::kNone}});
-  return gen_choice<NonComplianceType>({{7, NonComplianceType::kNone},
-                                        {1, NonComplianceType::kExceedAccel},
-                                        {1, NonComplianceType::kExceedBrake},
-                                        {1, NonComplianceType::kRenege}});
-}
-
-}  // namespace
 
 rc::Gen<LimitsSpec> gen_limits() {
   return build<LimitsSpec>(set(&LimitsSpec::accel_max_mps2, gen_real(range::kAccelMax)),
@@ -93,13 +94,20 @@ rc::Gen<VehicleSpec> gen_vehicle(const GenConfig& config) {
       set(&VehicleSpec::nc_excess_mps2, gen_real(range::kNcExcess)));
 }
 
-rc::Gen<ScenarioSpec> gen_scenario_spec(const GenConfig& config) {
+rc::Gen<ScenarioSpec> gen_uniform_spec(const GenConfig& config) {
   const int max_vehicles = std::clamp(config.max_vehicles, 0, static_cast<int>(kMaxVehicles));
   // Count uniform in [0, max_vehicles]; shrinking removes vehicles first.
   auto vehicles = rc::gen::resize(max_vehicles, rc::gen::container<std::vector<VehicleSpec>>(gen_vehicle(config)));
   return build<ScenarioSpec>(set(&ScenarioSpec::road, gen_road()), set(&ScenarioSpec::ego, gen_ego()),
                              set(&ScenarioSpec::vehicles, std::move(vehicles)),
                              set(&ScenarioSpec::params, gen_params()));
+}
+
+rc::Gen<ScenarioSpec> gen_scenario_spec(const GenConfig& config) {
+  // Only uniform: exactly the scenarios of the generator before the families (same random draws).
+  if (family_weights(config).size() == 1) return gen_uniform_spec(config);
+  const auto family = gen_family(config);
+  return rc::gen::mapcat(family, [config](ScenarioFamily f) { return gen_family_spec(f, config); });
 }
 
 rc::Gen<Scenario> gen_scenario(const GenConfig& config) {

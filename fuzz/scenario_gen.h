@@ -15,10 +15,18 @@ namespace mg::fuzz {
 struct GenConfig {
   int max_vehicles = 6;             // main-lane vehicles, 0..max_vehicles (<= kMaxVehicles)
   bool allow_noncompliance = true;  // false: every vehicle keeps its declared limits and promises
+  bool targeted_families = true;    // false: every scenario from the uniform family (scenario_families.h)
 };
 
 rc::Gen<LimitsSpec> gen_limits();
+rc::Gen<RoadSpec> gen_road();
+rc::Gen<EgoSpec> gen_ego();
+rc::Gen<ParamsSpec> gen_params();
 rc::Gen<VehicleSpec> gen_vehicle(const GenConfig& config);
+// Every range of scenario_spec.h drawn independently: the exploration of everything.
+rc::Gen<ScenarioSpec> gen_uniform_spec(const GenConfig& config);
+// A family (scenario_families.h), then a scenario of it: uniform most of the time, targeted at
+// the rarely applying rules otherwise. Shrinks toward the uniform family.
 rc::Gen<ScenarioSpec> gen_scenario_spec(const GenConfig& config);
 // Every generated scenario passes scenario_from_json(scenario_to_json(s)).
 rc::Gen<Scenario> gen_scenario(const GenConfig& config);

@@ -90,6 +90,20 @@ double rss_wide_lane_m(const ScenarioSpec& spec, double fluctuation_margin_m) {
   return std::max(spec.road.lane_width_m, std::ceil((need_m + kLaneRssClearanceM) / 0.05 - 1e-6) * 0.05);
 }
 
+// A main-lane vehicle as assembled, without its id, lane and position.
+MainVehicle main_vehicle_of(const ScenarioSpec& spec, const VehicleSpec& vs) {
+  MainVehicle m;
+  m.speed_mps = std::min(vs.speed_mps, snap_to_grid(1.1 * spec.road.speed_limit_mps, 0.1));
+  m.size.length_m = vs.length_m;
+  m.size.width_m = vs.width_m;
+  m.size.height_m = vs.height_m;
+  m.limits = limits_of(vs.limits);
+  m.behaviour = behaviour_of(vs, m.speed_mps);
+  m.v2v = v2v_of(vs.v2v);
+  m.noncompliance = noncompliance_of(vs, m.limits);
+  return m;
+}
+
 }  // namespace
 
 Scenario assemble_scenario(const ScenarioSpec& spec) {
@@ -139,17 +153,9 @@ Scenario assemble_scenario(const ScenarioSpec& spec) {
   std::map<int, std::size_t> last_in_lane;  // lane -> index of its frontmost vehicle so far
   int next_id = 1;
   for (const VehicleSpec& vs : spec.vehicles) {
-    MainVehicle m;
+    MainVehicle m = main_vehicle_of(spec, vs);
     m.id = next_id++;
     m.lane = std::clamp(vs.lane, 0, s.road.main_lanes - 1);
-    m.speed_mps = std::min(vs.speed_mps, snap_to_grid(1.1 * spec.road.speed_limit_mps, 0.1));
-    m.size.length_m = vs.length_m;
-    m.size.width_m = vs.width_m;
-    m.size.height_m = vs.height_m;
-    m.limits = limits_of(vs.limits);
-    m.behaviour = behaviour_of(vs, m.speed_mps);
-    m.v2v = v2v_of(vs.v2v);
-    m.noncompliance = noncompliance_of(vs, m.limits);
     const auto prev = last_in_lane.find(m.lane);
     if (prev == last_in_lane.end()) {
       m.x_m = snap_to_grid(ego.x_m + vs.first_offset_m, 0.05);

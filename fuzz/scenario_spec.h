@@ -62,6 +62,22 @@ inline constexpr RealRange kResponseTime{0.1, 1.0, 0.5, 0.05};        // s (RSS 
 inline constexpr RealRange kMergeDuration{2.0, 8.0, 4.0, 0.1};        // s (rho_m)
 inline constexpr RealRange kCommThreshold{0.3, 2.0, 1.0, 0.05};       // s (rho_c)
 inline constexpr RealRange kHorizon{5.0, 30.0, 5.0, 0.5};             // s; shrinks toward short runs
+// Targeted families (fuzz/scenario_families.h): the ego beside a V2V partner (Definition 2).
+// Offsets are the partner's X relative to the ego's.
+inline constexpr RealRange kCoopEgoSpeed{8.0, 32.0, 20.0, 0.1};       // m/s
+inline constexpr RealRange kCoopSpeedDelta{-4.0, 4.0, 0.0, 0.1};      // m/s, a partner behind vs ego
+inline constexpr RealRange kCoopAheadSpeedDelta{-1.5, 2.5, 0.5, 0.1}; // m/s, a partner ahead vs ego: farther or faster ones leave a Def. 1 gap behind
+inline constexpr RealRange kCoopBehindOffset{-40.0, -2.0, -20.0, 0.5};// m: partner behind, ego ahead (Def. 2.1)
+inline constexpr RealRange kCoopAheadOffset{-4.0, 12.0, 4.0, 0.5};    // m: partner ahead, ego behind (Def. 2.2)
+inline constexpr RealRange kFollowerOffset{-80.0, -15.0, -40.0, 0.5};  // m: a follower behind the ego (no V2V needed)
+inline constexpr RealRange kCoopLoss{0.0, 0.5, 0.0, 0.05};            // probability, drawn on one link in four
+inline constexpr RealRange kOverbrakeStart{0.0, 6.0, 1.0, 0.5};       // s: the partner's over-braking burst ...
+inline constexpr RealRange kOverbrakeDuration{0.5, 4.0, 1.0, 0.5};    // s: ... and its length
+// rcpp-coop tries Definition 2 at rho_m only (longer merges are Definition 1's): a rho_m below the
+// shortest trackable sigmoid (about 4 s on a 3.5 m lane) or a short rho_c leave no Def. 2 candidate.
+inline constexpr RealRange kCoopMergeDuration{4.0, 5.5, 4.0, 0.1};    // s (rho_m)
+inline constexpr RealRange kCoopCommThreshold{0.8, 2.0, 1.5, 0.05};   // s (rho_c)
+inline constexpr RealRange kFamilyHorizon{12.0, 30.0, 15.0, 0.5};     // s: the exchange, the merge, and a fallback or halt after it
 }  // namespace range
 
 struct LimitsSpec {
@@ -144,5 +160,6 @@ struct ScenarioSpec {
 // the chosen behaviour or non-compliance does not use, and extends the side lane so that the
 // ego can always stop before its end (the scenario is never unwinnable by construction).
 Scenario assemble_scenario(const ScenarioSpec& spec);
+
 
 }  // namespace mg::fuzz

@@ -1,6 +1,7 @@
 #include "fuzz/shrink.h"
 
 #include <chrono>
+#include <optional>
 
 #include "core/input_error.h"
 
@@ -14,6 +15,45 @@ bool is_loadable(const Scenario& s) {
     return false;
   }
 }
+
+namespace {
+
+Scenario without(const Scenario& s, std::size_t i, std::optional<std::size_t> j = std::nullopt) {
+  Scenario out = s;
+  out.vehicles.clear();
+  for (std::size_t k = 0; k < s.vehicles.size(); ++k)
+    if (k != i && (!j || k != *j)) out.vehicles.push_back(s.vehicles[k]);
+  return out;
+}
+
+// After the tree descent: a case that keeps three or more vehicles tries removing each vehicle,
+// then each pair, directly (the others stay where they are, so every lane still starts
+// RSS-safe); the tree's own removals go in list order and can miss a vehicle that only mattered
+// together with one already gone. Returns true when no removal kept the failure.
+template <typename OutOfBudget>
+bool remove_vehicles(Scenario& current, const std::function<bool(const Scenario&)>& keeps_failure, ShrinkOutcome& outcome,
+                     const OutOfBudget& out_of_budget) {
+  auto try_candidate = [&](const Scenario& candidate) {
+    if (out_of_budget(outcome.attempts) || !is_loadable(candidate)) return false;
+    ++outcome.attempts;
+    if (!keeps_failure(candidate)) return false;
+    current = candidate;
+    ++outcome.steps;
+    return true;
+  };
+  bool removed = true;
+  while (removed && current.vehicles.size() >= 3) {
+    removed = false;
+    const std::size_t n = current.vehicles.size();
+    for (std::size_t i = 0; i < n && !removed; ++i) removed = try_candidate(without(current, i));
+    for (std::size_t i = 0; i < n && !removed; ++i)
+      for (std::size_t j = i + 1; j < n && !removed; ++j) removed = try_candidate(without(current, i, j));
+    if (out_of_budget(outcome.attempts)) return false;
+  }
+  return true;
+}
+
+}  // namespace
 
 ShrinkOutcome shrink_scenario(const rc::Shrinkable<Scenario>& start,
                               const std::function<bool(const Scenario&)>& keeps_failure,
@@ -46,6 +86,7 @@ ShrinkOutcome shrink_scenario(const rc::Shrinkable<Scenario>& start,
     }
     if (!improved && !out_of_budget(outcome.attempts)) outcome.minimal = true;
   }
+  if (outcome.minimal) outcome.minimal = remove_vehicles(current_value, keeps_failure, outcome, out_of_budget);
   outcome.scenario = current_value;
   return outcome;
 }

@@ -1,6 +1,7 @@
 // Minimising a failing scenario while it keeps its failure signature: greedy descent over
 // RapidCheck's shrink tree (the first simpler candidate that still fails is taken, until no
-// candidate does), within a budget. Candidates the loader would reject are skipped, so the
+// candidate does), then, if three or more vehicles are left, removal of each vehicle and each
+// pair, within a budget. Candidates the loader would reject are skipped, so the
 // result is always a valid, self-contained scenario.
 #pragma once
 
@@ -23,7 +24,9 @@ struct ShrinkOutcome {
   Scenario scenario;
   int steps = 0;        // accepted simplifications
   int attempts = 0;     // candidates checked
-  bool minimal = false; // no candidate of the final scenario keeps the failure (budget not hit)
+  // A local minimum: no shrink-tree candidate kept the failure and, when three or more vehicles
+  // were left, neither did removing any one or any two of them (budget not hit).
+  bool minimal = false;
 };
 
 // `keeps_failure(s)` is true when s still fails with the same signature. `start` must fail.

@@ -113,7 +113,7 @@ std::map<std::string, std::string> write_liability_reports(const std::string& di
   return links;
 }
 
-void print_human(const fuzz::CampaignResult& r) {
+void print_human(const fuzz::CampaignOptions& o, const fuzz::CampaignResult& r) {
   std::cout << r.scenarios << " scenarios in " << r.seconds << " s (" << r.scenarios_per_second() << "/s)"
             << (r.interrupted ? ", interrupted by " + r.stop_signal : "") << ": " << r.failing_scenarios << " failing, "
             << r.signatures.size() << " signatures\n";
@@ -121,6 +121,8 @@ void print_human(const fuzz::CampaignResult& r) {
     std::cout << "  " << sig.key() << ": " << rec.count << " scenarios, first run " << rec.first_run
               << (rec.known_before ? " (already in the corpus)" : "") << (rec.case_path.empty() ? "" : " -> " + rec.case_path)
               << "\n";
+  for (const std::string& line : fuzz::coverage_warnings(o, r))
+    if (line.rfind("Warning", 0) == 0) std::cout << line << "\n";
 }
 
 // I/O failures during the campaign (a full disk) end it with a one-line error and exit 2 (main);
@@ -145,11 +147,15 @@ int run_fuzz(const std::vector<std::string>& args) {
   app.add_option("--report", report_dir, "write report.json, report.md, report.html here");
   app.add_flag("--json", json, "print one JSON summary on stdout");
   app.add_option("--max-vehicles", o.gen.max_vehicles, "main-lane vehicles per scenario, 0..N (default 6)");
+  std::string families = "mixed";
+  app.add_option("--families", families, "mixed (default: uniform plus the targeted families) or uniform")
+      ->check(CLI::IsMember({"mixed", "uniform"}));
   app.add_option("--determinism-every", o.determinism_every, "check determinism on every k-th run (0: never; default 8)");
   app.add_option("--shrink-attempts", o.shrink.max_attempts, "candidate checks per shrink (default 600)");
   app.add_option("--shrink-time", o.shrink.max_seconds, "seconds per shrink (default 60)");
   if (!parse_args(app, args)) return kExitOk;
   parse_shard(shard, o);
+  o.gen.targeted_families = families == "mixed";
   if (time_opt->count() > 0) o.time_s = time_s;
   else o.runs = runs_opt->count() > 0 ? runs : 1000;
 
@@ -171,7 +177,7 @@ int run_fuzz(const std::vector<std::string>& args) {
   if (::isatty(STDERR_FILENO)) std::cerr << "\n";
   if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, write_liability_reports(report_dir, result));
   if (json) std::cout << fuzz::campaign_summary_json(o, result).dump(2) << "\n";
-  else print_human(result);
+  else print_human(o, result);
   if (result.interrupted) return kExitInterrupted;
   return result.failing_scenarios > 0 ? kExitViolation : kExitOk;
 }

@@ -12,6 +12,7 @@
 
 #include "core/input_error.h"
 #include "fake_check.h"
+#include "fuzz/campaign_report.h"
 #include "fuzz/corpus_case.h"
 #include "fuzz/replay.h"
 
@@ -246,6 +247,31 @@ TEST(Campaign, NonsenseOptionsAreRejected) {
   o.shard_index = 3;
   o.shard_count = 3;
   EXPECT_THROW(run_campaign(o, fake_factory()), std::invalid_argument);
+}
+
+// The progress samples behind the report's findings-over-time plot: in time order, never
+// decreasing, ending at the campaign's final counts.
+TEST(CampaignTimeline, SamplesTheCampaignInOrderAndEndsAtItsResult) {
+  CampaignOptions o = options(0, 1, "");
+  o.runs.reset();
+  o.time_s = 2.5;
+  const CampaignResult r = run_campaign(o, [] { return CheckFn(test::fake_check); });
+  ASSERT_GE(r.timeline.size(), 2u);
+  EXPECT_LE(r.timeline.size(), kMaxTimelineSamples);
+  for (std::size_t k = 1; k < r.timeline.size(); ++k) {
+    EXPECT_GE(r.timeline[k].elapsed_s, r.timeline[k - 1].elapsed_s);
+    EXPECT_GE(r.timeline[k].scenarios, r.timeline[k - 1].scenarios);
+    EXPECT_GE(r.timeline[k].failing_scenarios, r.timeline[k - 1].failing_scenarios);
+  }
+  EXPECT_EQ(r.timeline.back().scenarios, r.scenarios);
+  EXPECT_EQ(r.timeline.back().failing_scenarios, r.failing_scenarios);
+  const auto dir = scratch_dir("timeline");
+  fs::create_directories(dir);
+  write_campaign_report(dir.string(), o, r, {});
+  std::ifstream in(dir / "report.html");
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("<h2>Findings over time</h2>"), std::string::npos);
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -1,0 +1,65 @@
+#include "fuzz/rule_coverage.h"
+
+#include <algorithm>
+
+#include "rules/rule_catalog.h"
+
+namespace mg::fuzz {
+namespace {
+
+const char* const kNoV2vRequests =
+    "the planner never sends a V2V request, and Definition 2's rules judge the ego's requests and what follows them";
+const char* const kNoDeclaredDef1Merges =
+    "these rules judge the Definition 1 merges a planner declares (T_dec, gap, v_e*), and the baseline declares none "
+    "(docs/rules.md)";
+
+std::map<std::string, std::string> definition2_rules() {
+  std::map<std::string, std::string> out;
+  for (const char* id : {"def2_1a_request", "def2_1b_responder", "def2_2a_ego_brake", "def2_2b_responder", "def2_3_fallback"})
+    out[id] = kNoV2vRequests;
+  return out;
+}
+
+}  // namespace
+
+std::map<std::string, std::string> rules_not_applicable(const std::string& planner) {
+  if (planner == "rcpp") return definition2_rules();
+  if (planner == "tripfield") {
+    std::map<std::string, std::string> out = definition2_rules();
+    for (const char* id : {"def1_1_gap", "def1_1_follower", "def1_2_gap", "def1_2_leader"}) out[id] = kNoDeclaredDef1Merges;
+    return out;
+  }
+  return {};
+}
+
+std::vector<RuleCoverage> rule_coverage(const std::string& planner, const CampaignResult& result) {
+  const auto not_applicable = rules_not_applicable(planner);
+  std::vector<std::string> ids;
+  for (const RuleSpec& spec : rule_catalog()) ids.push_back(spec.id);
+  for (const auto& [id, stats] : result.margins)  // a check outside the catalogue (tests) comes last
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+  std::vector<RuleCoverage> out;
+  for (const std::string& id : ids) {
+    RuleCoverage c;
+    c.rule = id;
+    if (const auto m = result.margins.find(id); m != result.margins.end()) {
+      c.scenarios = m->second.scenarios;
+      c.exercised = m->second.exercised;
+    }
+    if (const auto na = not_applicable.find(id); na != not_applicable.end()) {
+      c.applicable = false;
+      c.not_applicable_why = na->second;
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<std::string> rules_never_exercised(const std::string& planner, const CampaignResult& result) {
+  std::vector<std::string> out;
+  for (const RuleCoverage& c : rule_coverage(planner, result))
+    if (c.applicable && c.scenarios > 0 && c.exercised == 0) out.push_back(c.rule);
+  return out;
+}
+
+}  // namespace mg::fuzz

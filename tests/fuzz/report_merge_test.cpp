@@ -1,0 +1,84 @@
+#include "fuzz/report_merge.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "core/input_error.h"
+#include "fake_check.h"
+#include "fuzz/campaign_report.h"
+
+namespace mg::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch_dir(const std::string& tag) {
+  const auto dir = fs::temp_directory_path() / ("mg_report_merge_test_" + std::to_string(::getpid()) + "_" + tag);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+CampaignOptions options(int shard, int shards, std::uint64_t seed = 11) {
+  CampaignOptions o;
+  o.seed = seed;
+  o.runs = 300;
+  o.planner = "fake";
+  o.corpus_dir = "";
+  o.gen.max_vehicles = 3;
+  o.shard_index = shard;
+  o.shard_count = shards;
+  return o;
+}
+
+std::string write_summary(const fs::path& dir, const std::string& name, const CampaignOptions& o) {
+  const CampaignResult r = run_campaign(o, [] { return CheckFn(test::fake_check); });
+  const std::string path = (dir / name).string();
+  std::ofstream(path) << campaign_summary_json(o, r).dump(2);
+  return path;
+}
+
+nlohmann::json without_timing(nlohmann::json j) {
+  for (const char* k : {"seconds", "scenarios_per_second", "date", "jobs"}) j.erase(k);
+  return j;
+}
+
+TEST(ReportMerge, TheShardsOfACampaignMergeIntoExactlyTheUnshardedSummary) {
+  const auto dir = scratch_dir("exact");
+  const std::string whole = write_summary(dir, "whole.json", options(0, 1));
+  const std::vector<std::string> parts = {write_summary(dir, "s2.json", options(2, 3)), write_summary(dir, "s0.json", options(0, 3)),
+                                          write_summary(dir, "s1.json", options(1, 3))};
+  const MergedReport m = merge_reports(parts, false);
+  EXPECT_TRUE(m.complete());
+  EXPECT_EQ(m.shards, (std::vector<int>{0, 1, 2}));
+  std::ifstream in(whole);
+  const auto expected = without_timing(nlohmann::json::parse(in));
+  EXPECT_EQ(without_timing(campaign_summary_json(m.options, m.result)), expected);
+  EXPECT_GT(m.result.failing_scenarios, 0u);  // the planted failure: signatures, counts and margins merged
+  fs::remove_all(dir);
+}
+
+TEST(ReportMerge, RefusesShardsOfDifferentCampaignsAMissingShardAndADuplicate) {
+  const auto dir = scratch_dir("refuse");
+  const std::string s0 = write_summary(dir, "s0.json", options(0, 2));
+  const std::string s1 = write_summary(dir, "s1.json", options(1, 2));
+  const std::string other_seed = write_summary(dir, "o1.json", options(1, 2, 12));
+  EXPECT_THROW(merge_reports({s0, other_seed}, false), InputError);
+  EXPECT_THROW(merge_reports({s0}, false), InputError);
+  EXPECT_THROW(merge_reports({s0, s0, s1}, false), InputError);
+  const MergedReport partial = merge_reports({s1}, true);
+  EXPECT_FALSE(partial.complete());
+  std::ofstream(dir / "broken.json") << "{\"planner\": \"fake\"}";
+  try {
+    merge_reports({s0, (dir / "broken.json").string()}, false);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.json"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mg::fuzz

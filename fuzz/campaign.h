@@ -82,6 +82,7 @@ struct CampaignResult {
   std::uint64_t property_failures = 0;   // (scenario, signature) pairs
   double seconds = 0.0;
   bool interrupted = false;
+  std::string stop_signal;                     // e.g. "SIGTERM" when interrupted (set by the CLI)
   std::map<Signature, SignatureRecord> signatures;
   std::map<std::string, std::uint64_t> by_property, by_rule, by_party;  // (scenario, signature) counts
   std::map<std::string, MarginStats> margins;  // per rule, over every checked scenario (rule_coverage.h)

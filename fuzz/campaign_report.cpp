@@ -280,6 +280,7 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
           {"corpus", o.corpus_dir},
           {"families", o.gen.targeted_families ? "mixed" : "uniform"},
           {"interrupted", r.interrupted},
+          {"signal", r.interrupted && !r.stop_signal.empty() ? json(r.stop_signal) : json(nullptr)},
           {"scenarios", r.scenarios},
           {"seconds", r.seconds},
           {"scenarios_per_second", r.scenarios_per_second()},
@@ -330,9 +331,9 @@ void write_campaign_report(const std::string& dir, const CampaignOptions& o, con
   page += over_time + histogram_section(o, r);
   page += "</body></html>\n";
   const std::filesystem::path base(dir);
-  write_file_atomic((base / "report.json").string(), campaign_summary_json(o, r).dump(2) + "\n");
-  write_file_atomic((base / "report.md").string(), md);
-  write_file_atomic((base / "report.html").string(), page);
+  write_files_atomic({{(base / "report.json").string(), campaign_summary_json(o, r).dump(2) + "\n"},
+                      {(base / "report.md").string(), md},
+                      {(base / "report.html").string(), page}});
 }
 
 }  // namespace mg::fuzz

@@ -52,8 +52,7 @@ const std::vector<MonitorEntry>& rule_monitors() {
 
 std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const RightOfWay& row,
                                      std::vector<std::vector<double>>* margins) {
-  const PairTable pairs(s, t);
-  const MonitorContext ctx{s, t, row, catalog_params(), pairs};
+  const MonitorContext ctx{s, t, row, catalog_params()};
   std::vector<RuleResult> results;
   results.reserve(rule_monitors().size());
   for (const MonitorEntry& m : rule_monitors()) {

@@ -25,12 +25,13 @@ struct MonitorContext {
   const Trace& trace;
   const RightOfWay& row;
   const CatalogParams& params;
-  const PairTable& pairs;  // RSS geometry of every pair at every step
 };
 
 struct MonitorOutput {
   RuleResult result;
-  std::vector<double> margin;  // one value per trace step; NaN = not applicable
+  // One value per trace step; NaN = not applicable. Pair monitors (RSS longitudinal, collision)
+  // leave out the pairs too far apart to lower the rule's minimum (MarginAccumulator::min_margin).
+  std::vector<double> margin;
 };
 
 // Folds per-step margins into a RuleResult: minimum margin and its time, first violation time
@@ -63,6 +64,11 @@ class MarginAccumulator {
   }
   void set_detail(std::string detail) { out_.result.detail = std::move(detail); }
   bool violated() const { return out_.result.first_violation_time_s.has_value(); }
+  // The smallest margin recorded so far (+inf before the first). A record of a margin at least
+  // this large, and not negative, changes nothing in the RuleResult: monitors skip computing
+  // such margins for pairs too far apart to interact (issue 20, docs/performance.md), so their
+  // per-step margins leave out records that could not lower the rule's minimum.
+  double min_margin() const { return out_.result.min_margin; }
   MonitorOutput finish();
 
  private:

@@ -1,8 +1,10 @@
-// Longitudinal and lateral RSS geometry of every vehicle pair at every trace step (RCPP eq. 1,
-// 2), computed once per check and shared by the RSS monitors and the reports.
+// Longitudinal and lateral RSS geometry of vehicle pairs at a trace step (RCPP eq. 1, 2), for
+// the RSS monitors and the reports.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/scenario.h"
@@ -24,18 +26,57 @@ struct PairGeometry {
 
 PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j);
 
-// All pairs (i < j, in the order i = 0..n-1, j = i+1..n-1) at all steps.
-class PairTable {
+namespace pair_detail {
+struct PairMemo;
+}  // namespace pair_detail
+// The same for one pair along a trace: `memo` (one per pair, steps in order) reuses the RSS
+// distances while their inputs repeat bit for bit; the result is the same.
+PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j,
+                           pair_detail::PairMemo& memo);
+// pair_geometry(s, step, i, j, memo).lat_unsafe() without the longitudinal half.
+bool pair_lat_unsafe(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j,
+                     pair_detail::PairMemo& memo);
+
+namespace pair_detail {
+struct Kinematics {
+  double x_m, y_m, vx_mps, vy_mps;  // road frame
+};
+// The RSS distances of a pair are pure functions of who is rear (left) and the speeds: a pair
+// whose inputs repeat, bit for bit, those of its previous step (vehicles at constant speed, no
+// lateral motion: most pairs most of the time) reuses them.
+struct PairMemo {
+  std::size_t rear = 0, left = 0;
+  std::uint64_t v_rear = 0, v_front = 0, vy_left = 0, vy_right = 0;
+  double d_lon_m = std::numeric_limits<double>::quiet_NaN();
+  double d_lat_m = std::numeric_limits<double>::quiet_NaN();
+};
+}  // namespace pair_detail
+
+// The geometry of vehicle pairs one trace step at a time (issue 20): the monitors walk the trace
+// in step order, so nothing is kept per step; memory is one memo per pair. Pairs are indexed
+// i < j in the order i = 0..n-1, j = i+1..n-1 (index()).
+class PairStepper {
  public:
-  PairTable(const Scenario& s, const Trace& t);
-  std::size_t pairs() const { return pairs_; }
-  const PairGeometry& at(std::size_t step, std::size_t pair) const { return geometry_[step * pairs_ + pair]; }
+  explicit PairStepper(const Scenario& s);
+  // Makes `step` the current step (every vehicle's road-frame kinematics).
+  void load(const TraceStep& step);
+  // Vehicles i < j at the current step; p = index(n, i, j). A pair's RSS distances are reused
+  // while their inputs repeat bit for bit, so the result equals pair_geometry() exactly.
+  PairGeometry at(std::size_t p, std::size_t i, std::size_t j);
+  // at(p, i, j).lat_unsafe() without the longitudinal half (its RSS distance).
+  bool lat_unsafe(std::size_t p, std::size_t i, std::size_t j);
+  std::size_t vehicles() const { return n_; }
+  // Road-frame X and longitudinal speed of vehicle v at the current step, as at() uses them.
+  double x_m(std::size_t v) const { return kinematics_[v].x_m; }
+  double road_vx_mps(std::size_t v) const { return kinematics_[v].vx_mps; }
   // Pair index of vehicles i < j among n vehicles.
   static std::size_t index(std::size_t n, std::size_t i, std::size_t j) { return i * (2 * n - i - 1) / 2 + (j - i - 1); }
 
  private:
-  std::size_t pairs_ = 0;
-  std::vector<PairGeometry> geometry_;
+  const Scenario& scenario_;
+  std::size_t n_ = 0;
+  std::vector<pair_detail::Kinematics> kinematics_;
+  std::vector<pair_detail::PairMemo> memo_;
 };
 
 }  // namespace mg

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -62,6 +63,36 @@ svg::Series box_outline(const BoxPose& p, const std::string& colour) {
   return s;
 }
 
+// One series built point by point, one point per trace step: kept whole when every point can
+// show (at most 4 per pixel column), thinned as it is built otherwise, so that the plot data of
+// a long trace never exist in full (svg::render thins a plot with many series further).
+class SeriesBuilder {
+ public:
+  SeriesBuilder(const svg::Series& style, svg::Range x_range, int width_px, std::size_t points)
+      : whole_(points <= 4 * static_cast<std::size_t>(width_px)), plain_(style), thinner_(style, x_range, width_px) {}
+  void add(double x, double y) {
+    if (!whole_) return thinner_.add(x, y);
+    plain_.x.push_back(x);
+    plain_.y.push_back(y);
+  }
+  svg::Series take() { return whole_ ? std::move(plain_) : thinner_.take(); }
+
+ private:
+  bool whole_;
+  svg::Series plain_;
+  svg::Thinner thinner_;
+};
+
+svg::Range time_range(const Trace& t) { return {t.steps.front().time_s, t.steps.back().time_s}; }
+
+// Lists longer than this show their first entries and say how many more report.json holds.
+constexpr std::size_t kMaxListedEntries = 400;
+
+void more_entries_note(std::ostringstream& h, std::size_t total) {
+  if (total > kMaxListedEntries)
+    h << "<li>&hellip; " << total - kMaxListedEntries << " more (report.json lists all)</li>\n";
+}
+
 std::string vehicle_label(const Scenario& s, std::size_t k) { return party_name(party_of(s, k)); }
 
 svg::Plot top_down_plot(const Scenario& s, const CheckResult& r) {
@@ -75,19 +106,19 @@ svg::Plot top_down_plot(const Scenario& s, const CheckResult& r) {
   const std::size_t n = s.vehicles.size() + 1;
   const double w = s.road.lane_width_m;
   double x_lo = steps.front().ego.x_m, x_hi = x_lo;
+  for (const TraceStep& st : steps)  // steps outside, vehicles inside: the trace's memory order
+    for (std::size_t k = 0; k < n; ++k) x_lo = std::min(x_lo, state_of(st, k).x_m), x_hi = std::max(x_hi, state_of(st, k).x_m);
+  std::vector<SeriesBuilder> paths;
   for (std::size_t k = 0; k < n; ++k) {
     svg::Series path;
     path.label = vehicle_label(s, k);
     path.colour = colour_of(k);
     path.dash = k == 0 ? "" : "5 3";
-    for (const TraceStep& st : steps) {
-      path.x.push_back(state_of(st, k).x_m);
-      path.y.push_back(state_of(st, k).y_m);
-      x_lo = std::min(x_lo, state_of(st, k).x_m);
-      x_hi = std::max(x_hi, state_of(st, k).x_m);
-    }
-    p.series.push_back(std::move(path));
+    paths.emplace_back(path, svg::Range{x_lo, x_hi}, p.width_px, steps.size());
   }
+  for (const TraceStep& st : steps)
+    for (std::size_t k = 0; k < n; ++k) paths[k].add(state_of(st, k).x_m, state_of(st, k).y_m);
+  for (SeriesBuilder& b : paths) p.series.push_back(b.take());
   for (double t : key_moments(r)) {
     const TraceStep& st = steps[step_at(r.trace, t)];
     for (std::size_t k = 0; k < n; ++k) p.series.push_back(box_outline(box_pose_of(s, st, k), colour_of(k)));
@@ -125,38 +156,43 @@ svg::Plot time_plot(std::string title, std::string y_label) {
 
 svg::Plot gap_plot(const Scenario& s, const CheckResult& r) {
   svg::Plot p = time_plot("Ego to each vehicle: centre gap |dX| against D_lon (eq. 1), while laterally unsafe", "distance [m]");
+  const auto& steps = r.trace.steps;
+  std::vector<SeriesBuilder> series;  // gap and D_lon of vehicle k at 2 (k - 1) and 2 (k - 1) + 1
   for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
     svg::Series gap, dlon;
     gap.label = "gap to " + vehicle_label(s, k);
     dlon.label = "D_lon with " + vehicle_label(s, k);
     gap.colour = dlon.colour = colour_of(k);
     dlon.dash = "6 3";
-    for (const TraceStep& st : r.trace.steps) {
-      const PairGeometry g = pair_geometry(s, st, 0, k);
-      const double nan = std::nan("");
-      gap.x.push_back(st.time_s);
-      dlon.x.push_back(st.time_s);
-      gap.y.push_back(g.lat_unsafe() ? g.gap_m : nan);
-      dlon.y.push_back(g.lat_unsafe() ? g.d_lon_m : nan);
-    }
-    p.series.push_back(std::move(gap));
-    p.series.push_back(std::move(dlon));
+    series.emplace_back(gap, time_range(r.trace), p.width_px, steps.size());
+    series.emplace_back(dlon, time_range(r.trace), p.width_px, steps.size());
   }
+  std::vector<pair_detail::PairMemo> memo(s.vehicles.size());
+  const double nan = std::nan("");
+  for (const TraceStep& st : steps) {
+    for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
+      const bool shown = pair_lat_unsafe(s, st, 0, k, memo[k - 1]);
+      const PairGeometry g = shown ? pair_geometry(s, st, 0, k, memo[k - 1]) : PairGeometry{};
+      series[2 * (k - 1)].add(st.time_s, shown ? g.gap_m : nan);
+      series[2 * (k - 1) + 1].add(st.time_s, shown ? g.d_lon_m : nan);
+    }
+  }
+  for (SeriesBuilder& b : series) p.series.push_back(b.take());
   return p;
 }
 
 svg::Plot speed_plot(const Scenario& s, const CheckResult& r) {
   svg::Plot p = time_plot("Speeds", "speed [m/s]");
+  std::vector<SeriesBuilder> series;
   for (std::size_t k = 0; k <= s.vehicles.size(); ++k) {
     svg::Series v;
     v.label = vehicle_label(s, k);
     v.colour = colour_of(k);
-    for (const TraceStep& st : r.trace.steps) {
-      v.x.push_back(st.time_s);
-      v.y.push_back(speed_of(state_of(st, k)));
-    }
-    p.series.push_back(std::move(v));
+    series.emplace_back(v, time_range(r.trace), p.width_px, r.trace.steps.size());
   }
+  for (const TraceStep& st : r.trace.steps)
+    for (std::size_t k = 0; k <= s.vehicles.size(); ++k) series[k].add(st.time_s, speed_of(state_of(st, k)));
+  for (SeriesBuilder& b : series) p.series.push_back(b.take());
   return p;
 }
 
@@ -169,17 +205,14 @@ svg::Plot sideslip_plot(const CheckResult& r) {
   hi.colour = lo.colour = "#555555";
   hi.dash = lo.dash = "4 4";
   const double limit = catalog_params().sideslip_max_rad;
-  for (const TraceStep& st : r.trace.steps) {
-    beta.x.push_back(st.time_s);
-    beta.y.push_back(st.ego.vx_mps >= catalog_params().sideslip_min_speed_mps ? std::atan2(st.ego.vy_mps, st.ego.vx_mps)
-                                                                              : std::nan(""));
-  }
-  if (!beta.x.empty()) {
-    hi.x = lo.x = {beta.x.front(), beta.x.back()};
-    hi.y = {limit, limit};
-    lo.y = {-limit, -limit};
-  }
-  p.series = {beta, hi, lo};
+  SeriesBuilder b(beta, time_range(r.trace), p.width_px, r.trace.steps.size());
+  for (const TraceStep& st : r.trace.steps)
+    b.add(st.time_s, st.ego.vx_mps >= catalog_params().sideslip_min_speed_mps ? std::atan2(st.ego.vy_mps, st.ego.vx_mps)
+                                                                               : std::nan(""));
+  hi.x = lo.x = {r.trace.steps.front().time_s, r.trace.steps.back().time_s};
+  hi.y = {limit, limit};
+  lo.y = {-limit, -limit};
+  p.series = {b.take(), hi, lo};
   return p;
 }
 
@@ -220,9 +253,11 @@ std::string report_html(const Scenario& s, const CheckResult& r) {
     << "</code>. " << escape(s.description) << "</p>\n<h2>Violations</h2>\n";
   violations_table(h, r);
   h << "<h2>Right of way</h2>\n<ul>\n";
-  for (const auto& [t, holder] : r.right_of_way) {
+  for (std::size_t k = 0; k < std::min(r.right_of_way.size(), kMaxListedEntries); ++k) {
+    const auto& [t, holder] = r.right_of_way[k];
     h << "<li>from t = " << format_number(t, 2) << " s: " << escape(party_name(holder)) << "</li>\n";
   }
+  more_entries_note(h, r.right_of_way.size());
   h << "</ul>\n";
   if (!r.trace.steps.empty()) {
     h << "<h2>Trajectories</h2>\n" << inline_svg(svg::render(top_down_plot(s, r))) << "\n";
@@ -241,10 +276,12 @@ std::string report_html(const Scenario& s, const CheckResult& r) {
       << "</td><td>" << escape(spec.liability) << "</td></tr>\n";
   }
   h << "</table>\n<h2>Timeline</h2>\n<ul>\n";
-  for (const TraceEvent& e : r.trace.events) {
+  for (std::size_t k = 0; k < std::min(r.trace.events.size(), kMaxListedEntries); ++k) {
+    const TraceEvent& e = r.trace.events[k];
     h << "<li>t = " << format_number(e.time_s, 2) << " s &mdash; " << escape(to_string(e.kind)) << " ("
       << escape(party_name(e.vehicle_id)) << "): " << escape(e.detail) << "</li>\n";
   }
+  more_entries_note(h, r.trace.events.size());
   h << "</ul>\n</body></html>\n";
   return h.str();
 }

@@ -16,9 +16,9 @@ nlohmann::json report_json(const Scenario& s, const CheckResult& r) {
 
 void write_check_reports(const std::string& dir, const Scenario& s, const CheckResult& r) {
   const std::string base = dir.empty() ? std::string(".") : dir;
-  write_file_atomic(base + "/report.json", report_json(s, r).dump(2) + "\n");
-  write_file_atomic(base + "/report.md", report_markdown(s, r));
-  write_file_atomic(base + "/report.html", report_html(s, r));
+  write_files_atomic({{base + "/report.json", report_json(s, r).dump(2) + "\n"},
+                      {base + "/report.md", report_markdown(s, r)},
+                      {base + "/report.html", report_html(s, r)}});
 }
 
 }  // namespace mg

@@ -5,6 +5,8 @@
 #include <limits>
 #include <sstream>
 
+#include "rules/near_pairs.h"
+
 
 namespace mg {
 namespace {
@@ -24,15 +26,36 @@ struct Episode {
 
 std::size_t pair_count(std::size_t n) { return n * (n - 1) / 2; }
 
-template <typename Fn>
-void for_each_pair(std::size_t n, Fn&& fn) {
-  std::size_t p = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 1; j < n; ++j) fn(p++, i, j);
-  }
+std::string describe(const Scenario& s, std::size_t k) { return party_name(party_of(s, k)); }
+
+// Interaction bound of RCPP eq. (1): whatever the front vehicle does, D_lon <= (l_r + l_f)/2 + the
+// rear vehicle's worst-case stopping distance v T + a T^2/2 + (v + a T)^2 / (2 b_min) (the front
+// vehicle only moves forward). reach_m = that distance + l_r/2, padded against rounding.
+double lon_reach_m(const Scenario& s, std::size_t v, double road_vx_mps) {
+  const Limits& l = limits_of(s, v);
+  const double T = s.params.rss.response_time_s, speed = std::max(road_vx_mps, 0.0);
+  const double after_t = speed + l.accel_max_mps2 * T;
+  const double stop_m = speed * T + 0.5 * l.accel_max_mps2 * T * T + after_t * after_t / (2.0 * l.brake_min_mps2);
+  return (0.5 * size_of(s, v).length_m + stop_m) * (1.0 + 1e-9) + 1e-9;
 }
 
-std::string describe(const Scenario& s, std::size_t k) { return party_name(party_of(s, k)); }
+// gap - (that bound) for vehicles i, j: when >= 0 the pair is longitudinally safe (gap >= D_lon).
+double slack_beyond_reach_m(const Scenario& s, const PairStepper& pairs, const std::vector<double>& reach_m,
+                            std::size_t i, std::size_t j) {
+  const bool i_rear = pairs.x_m(i) <= pairs.x_m(j);
+  const std::size_t rear = i_rear ? i : j, front = i_rear ? j : i;
+  const double gap_m = pairs.x_m(front) - pairs.x_m(rear);
+  return gap_m - (reach_m[rear] + 0.5 * size_of(s, front).length_m * (1.0 + 1e-9));
+}
+
+// A pair that far apart is longitudinally safe, so its only effect would be a margin
+// gap - D_lon >= the slack: when that is not below the smallest margin so far, it changes
+// nothing (exact) and the pair's RSS distances are not computed.
+bool far_apart(const Scenario& s, const PairStepper& pairs, const std::vector<double>& reach_m, std::size_t i,
+               std::size_t j, double min_margin) {
+  const double slack_m = slack_beyond_reach_m(s, pairs, reach_m, i, j);
+  return slack_m >= 0.0 && slack_m >= min_margin;
+}
 
 }  // namespace
 
@@ -51,13 +74,25 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
   std::vector<double> stop_speed(n);
   for (std::size_t v = 0; v < n; ++v)
     stop_speed[v] = ctx.params.halted_speed_mps + limits_of(s, v).brake_min_mps2 * s.params.sim.step_s;
+  PairStepper pairs(s);
+  NearPairs near;
+  std::vector<double> reach_m(n), lo_m(n), hi_m(n);
+  std::vector<std::size_t> seen_step(pair_count(n), steps.size());  // main-lane pairs: last step visited
+  double max_half_length_m = 0.0;
+  for (std::size_t v = 0; v < n; ++v) max_half_length_m = std::max(max_half_length_m, 0.5 * size_of(s, v).length_m);
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const TraceStep& st = steps[k];
+    pairs.load(st);
+    for (std::size_t v = 0; v < n; ++v) {
+      reach_m[v] = lon_reach_m(s, v, pairs.road_vx_mps(v));
+      lo_m[v] = pairs.x_m(v);
+      hi_m[v] = lo_m[v] + reach_m[v] + max_half_length_m * (1.0 + 1e-9) + 1e-6;  // >= any bound with v as rear
+    }
     for (std::size_t v = 0; v < n; ++v) {
       if (state_of(st, v).accel_mps2 < -(limits_of(s, v).brake_max_mps2 + tol)) last_overbrake[v] = st.time_s;
     }
-    for_each_pair(n, [&](std::size_t p, std::size_t i, std::size_t j) {
-      const PairGeometry& g = ctx.pairs.at(k, p);
+    const auto visit = [&](std::size_t p, std::size_t i, std::size_t j) {
+      const PairGeometry g = pairs.at(p, i, j);
       Episode& e = episodes[p];
       const bool was_lon_only = prev_lon_only[p] != 0;
       prev_lon_only[p] = g.lon_unsafe() && !g.lat_unsafe();
@@ -116,7 +151,29 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
       }
       const double margin = e.breach == kNobody ? 0.0 : g.gap_m - g.d_lon_m;
       if (acc.record(k, st.time_s, margin, e.breach, g.d_lon_m, g.gap_m)) acc.set_detail(why);
-    });
+    };
+    // Pair order as over all pairs: the ego's pairs (p = j - 1) first, then the main-lane pairs
+    // near enough to matter. A main-lane pair left out, laterally safe, or too far apart to lower
+    // the minimum does nothing but end its episode (prev_lon_only is read for ego pairs only).
+    for (std::size_t j = 1; j < n; ++j) {
+      if (far_apart(s, pairs, reach_m, 0, j, acc.min_margin())) {
+        prev_lon_only[j - 1] = 0;  // longitudinally safe
+        episodes[j - 1].active = false;
+      } else {
+        visit(j - 1, 0, j);
+      }
+    }
+    for (const auto& [i, j] : near.find(lo_m, hi_m, acc.min_margin())) {
+      if (i == 0) continue;
+      const std::size_t p = PairStepper::index(n, i, j);
+      if (seen_step[p] + 1 != k) episodes[p].active = false;  // left out at the previous step
+      seen_step[p] = k;
+      if (far_apart(s, pairs, reach_m, i, j, acc.min_margin()) || !pairs.lat_unsafe(p, i, j)) {
+        episodes[p].active = false;
+        continue;
+      }
+      visit(p, i, j);
+    }
   }
   return acc.finish();
 }
@@ -129,10 +186,18 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
   const double tol = ctx.params.speed_tolerance_mps;
   MarginAccumulator acc("rss_lateral", steps.size());
   std::vector<Episode> episodes(n - 1);  // only ego pairs: main-lane vehicles keep their lane
+  PairStepper pairs(s);
+  std::vector<double> reach_m(n);
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const TraceStep& st = steps[k];
+    pairs.load(st);
+    for (std::size_t v = 0; v < n; ++v) reach_m[v] = lon_reach_m(s, v, pairs.road_vx_mps(v));
     for (std::size_t j = 1; j < n; ++j) {
-      const PairGeometry& g = ctx.pairs.at(k, PairTable::index(n, 0, j));
+      if (slack_beyond_reach_m(s, pairs, reach_m, 0, j) >= 0.0) {  // longitudinally safe: not dangerous
+        episodes[j - 1].active = false;
+        continue;
+      }
+      const PairGeometry g = pairs.at(PairStepper::index(n, 0, j), 0, j);
       Episode& e = episodes[j - 1];
       // With the ego's centre in the other vehicle's lane the pair is a same-lane pair: its
       // distance is rss_longitudinal's (a cut-in is judged there), and the ego centring itself in

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
+#include "core/output_path.h"
 #include "core/scenario.h"
 #include "planner/planner.h"
 #include "rules/check.h"
@@ -43,6 +44,7 @@ int run_check(const std::vector<std::string>& args) {
   app.add_flag("--json", json, "print the report JSON on stdout");
   if (!parse_args(app, args)) return kExitOk;
   const Scenario scenario = load_scenario(path);
+  if (!report_dir.empty()) prepare_output_dir("--report", report_dir);
   const CheckResult result = check_scenario(scenario, planner_name);
   if (!report_dir.empty()) write_check_reports(report_dir, scenario, result);
   if (json) {

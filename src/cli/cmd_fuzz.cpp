@@ -1,18 +1,22 @@
 // mergeguard fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P]
 //                 [--corpus DIR] [--report DIR] [--json]: a property-based fuzzing campaign
-// (DESIGN §9, §10; docs/fuzzing.md). Exit 0 when no scenario failed a property, 1 when one did.
+// (DESIGN §9, §10; docs/fuzzing.md). Exit 0 when no scenario failed a property, 1 when one did,
+// 3 when a signal (SIGINT, SIGTERM, SIGHUP) stopped it early (its report and summary still written).
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
-#include <map>
 #include <cstdio>
+#include <iterator>
+#include <map>
 #include <iostream>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
-#include "core/input_error.h"
+#include "core/atomic_file.h"
+#include "core/output_path.h"
 #include "fuzz/campaign.h"
 #include "fuzz/campaign_report.h"
 #include "fuzz/corpus_case.h"
@@ -24,28 +28,47 @@ namespace mg::cli {
 namespace {
 
 std::atomic<bool> g_stop{false};
+std::atomic<int> g_stop_signal{0};
 
-extern "C" void on_sigint(int) { g_stop.store(true); }  // lock-free atomic: async-signal-safe
+extern "C" void on_stop_signal(int sig) {  // lock-free atomics only: async-signal-safe
+  g_stop_signal.store(sig);
+  g_stop.store(true);
+}
 
-// Ctrl-C stops the campaign after the runs in flight (shrinking keeps its best so far); a second
-// Ctrl-C kills as usual (SA_RESETHAND). The previous handler is restored on scope exit.
-class SigintGuard {
+// SIGINT (Ctrl-C), SIGTERM (what Kubernetes, Slurm and CI runners send on preemption or
+// time-out) and SIGHUP (a closed terminal) stop the campaign after the runs in flight (shrinking
+// keeps its best so far); the same signal a second time kills as usual (SA_RESETHAND). The
+// previous handlers are restored on scope exit.
+class StopSignalGuard {
  public:
-  SigintGuard() {
+  static constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+  StopSignalGuard() {
     g_stop = false;
+    g_stop_signal = 0;
     struct sigaction sa {};
-    sa.sa_handler = on_sigint;
+    sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
     sa.sa_flags = SA_RESETHAND;
-    sigaction(SIGINT, &sa, &previous_);
+    for (std::size_t k = 0; k < std::size(kSignals); ++k) sigaction(kSignals[k], &sa, &previous_[k]);
   }
-  ~SigintGuard() { sigaction(SIGINT, &previous_, nullptr); }
-  SigintGuard(const SigintGuard&) = delete;
-  SigintGuard& operator=(const SigintGuard&) = delete;
+  ~StopSignalGuard() {
+    for (std::size_t k = 0; k < std::size(kSignals); ++k) sigaction(kSignals[k], &previous_[k], nullptr);
+  }
+  StopSignalGuard(const StopSignalGuard&) = delete;
+  StopSignalGuard& operator=(const StopSignalGuard&) = delete;
 
  private:
-  struct sigaction previous_ {};
+  struct sigaction previous_[std::size(kSignals)] {};
 };
+
+std::string signal_name(int sig) {
+  switch (sig) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    default: return sig == 0 ? "" : "signal " + std::to_string(sig);
+  }
+}
 
 std::string clock_time(double seconds) {
   const long s = static_cast<long>(seconds + 0.5);
@@ -92,7 +115,7 @@ std::map<std::string, std::string> write_liability_reports(const std::string& di
 
 void print_human(const fuzz::CampaignOptions& o, const fuzz::CampaignResult& r) {
   std::cout << r.scenarios << " scenarios in " << r.seconds << " s (" << r.scenarios_per_second() << "/s)"
-            << (r.interrupted ? ", interrupted" : "") << ": " << r.failing_scenarios << " failing, "
+            << (r.interrupted ? ", interrupted by " + r.stop_signal : "") << ": " << r.failing_scenarios << " failing, "
             << r.signatures.size() << " signatures\n";
   for (const auto& [sig, rec] : r.signatures)
     std::cout << "  " << sig.key() << ": " << rec.count << " scenarios, first run " << rec.first_run
@@ -102,7 +125,9 @@ void print_human(const fuzz::CampaignOptions& o, const fuzz::CampaignResult& r) 
     if (line.rfind("Warning", 0) == 0) std::cout << line << "\n";
 }
 
-int run_fuzz_checked(const std::vector<std::string>& args) {
+// I/O failures during the campaign (a full disk) end it with a one-line error and exit 2 (main);
+// cases already written stay.
+int run_fuzz(const std::vector<std::string>& args) {
   CLI::App app("Property-based fuzzing campaign", "mergeguard fuzz");
   fuzz::CampaignOptions o;
   o.planner = "rcpp";
@@ -138,29 +163,23 @@ int run_fuzz_checked(const std::vector<std::string>& args) {
   const fuzz::CheckFactory make_check = [planner] {
     return fuzz::CheckFn([planner](const Scenario& s) { return check_scenario(s, planner); });
   };
-  SigintGuard guard;
+  // Before any work: an overnight campaign must not lose its cases or report in the morning.
+  if (!o.corpus_dir.empty()) prepare_output_dir("--corpus", o.corpus_dir);
+  if (!report_dir.empty()) prepare_output_dir("--report", report_dir);
+  if (!o.corpus_dir.empty()) remove_stale_temporaries(o.corpus_dir);  // of campaigns killed while writing
+  StopSignalGuard guard;
   o.stop = &g_stop;
   o.on_progress = progress_printer(::isatty(STDERR_FILENO) != 0);
   if (!report_dir.empty())  // a killed campaign still leaves a report at most a minute old
     o.on_checkpoint = [&o, &report_dir](const fuzz::CampaignResult& r) { fuzz::write_campaign_report(report_dir, o, r, {}); };
-  const fuzz::CampaignResult result = fuzz::run_campaign(o, make_check);
+  fuzz::CampaignResult result = fuzz::run_campaign(o, make_check);
+  if (result.interrupted) result.stop_signal = signal_name(g_stop_signal.load());
   if (::isatty(STDERR_FILENO)) std::cerr << "\n";
   if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, write_liability_reports(report_dir, result));
   if (json) std::cout << fuzz::campaign_summary_json(o, result).dump(2) << "\n";
   else print_human(o, result);
+  if (result.interrupted) return kExitInterrupted;
   return result.failing_scenarios > 0 ? kExitViolation : kExitOk;
-}
-
-// I/O failures (an unwritable corpus or report directory, a full disk) end the campaign with a
-// one-line error and exit 2 instead of an uncaught exception; cases already written stay.
-int run_fuzz(const std::vector<std::string>& args) {
-  try {
-    return run_fuzz_checked(args);
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::runtime_error& e) {  // std::filesystem::filesystem_error included
-    throw UsageError(e.what());
-  }
 }
 
 const CommandRegistration kRegistration(

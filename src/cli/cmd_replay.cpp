@@ -11,6 +11,7 @@
 
 #include "cli/command.h"
 #include "core/input_error.h"
+#include "core/output_path.h"
 #include "fuzz/corpus_case.h"
 #include "fuzz/replay.h"
 #include "planner/planner.h"
@@ -37,6 +38,7 @@ int run_replay(const std::vector<std::string>& args) {
       fuzz::CorpusCase c = fuzz::load_case(file);
       if (!make_planner(c.signature.planner))
         throw InputError(file, "/planner", "unknown planner '" + c.signature.planner + "'");
+      if (update) check_output_file("--update", file);
       cases.emplace_back(file, std::move(c));
     }
 

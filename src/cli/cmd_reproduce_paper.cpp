@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
+#include "core/output_path.h"
 #include "core/scenario.h"
 #include "sim/paper_report.h"
 
@@ -23,6 +24,7 @@ int run(const std::vector<std::string>& args) {
   if (!parse_args(app, args)) return kExitOk;
 
   const Scenario scenario = load_scenario(scenario_path);
+  prepare_output_dir("--out", out_dir);
   const PaperExperiment experiment = run_paper_experiment(scenario, scenario_path);
   write_paper_report(experiment, out_dir);
   std::vector<std::string> why;

@@ -1,6 +1,7 @@
 // Subcommand registry of the mergeguard binary. Each cmd_<name>.cpp registers itself with a
 // static CommandRegistration; main.cpp dispatches. Exit codes (DESIGN §10): 0 holds,
-// 1 violation found, 2 bad input or usage (one-line error on stderr).
+// 1 violation found, 2 bad input, usage or I/O (one-line error on stderr), 3 a campaign stopped by
+// a signal.
 #pragma once
 
 #include <functional>
@@ -14,6 +15,7 @@ namespace mg::cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitViolation = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitInterrupted = 3;  // fuzz stopped by SIGINT, SIGTERM or SIGHUP
 
 // args excludes the program and subcommand names.
 using CommandFn = std::function<int(const std::vector<std::string>& args)>;

@@ -32,28 +32,77 @@ double safe_distance_behind(double speed_mps, double own_length_m, const Limits&
 
 }  // namespace
 
+namespace {
+
+Leader leader_of(const Scenario& s, const std::vector<VehicleState>& others, std::size_t j, double distance_m) {
+  return Leader{s.vehicles[j].id, distance_m, others[j].vx_mps, s.vehicles[j].size.length_m,
+                s.vehicles[j].limits.brake_max_mps2};
+}
+
+// The ego, once its box overlaps the lane of the vehicle at x, when nearer ahead than `main`.
+Leaders with_ego(const Scenario& s, int lane, double x, const std::optional<Leader>& main, const VehicleState& ego) {
+  Leaders leaders;
+  leaders.main_only = main;
+  leaders.with_ego = main;
+  const double half_overlap = 0.5 * (s.road.lane_width_m + s.ego.size.width_m);
+  const double d = ego.x_m - x;
+  if (std::abs(ego.y_m - lane_centre_y(s.road, lane)) < half_overlap && d > 0.0 && !(main && d >= main->distance_m))
+    leaders.with_ego = Leader{0, d, std::max(ego.road_vx_mps(), 0.0), s.ego.size.length_m, s.ego.limits.brake_max_mps2};
+  return leaders;
+}
+
+}  // namespace
+
 Leaders find_leaders(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
                      const VehicleState& ego) {
   assert(index < others.size() && others.size() == s.vehicles.size());
-  const MainVehicle& self = s.vehicles[index];
+  const int lane = s.vehicles[index].lane;
   const double x = others[index].x_m;
-  std::optional<Leader> best;
-  auto consider = [&](int id, double other_x, double speed, const VehicleSize& size, const Limits& limits) {
-    const double d = other_x - x;
-    if (d <= 0.0 || (best && d >= best->distance_m)) return;
-    best = Leader{id, d, speed, size.length_m, limits.brake_max_mps2};
-  };
+  std::optional<Leader> best;  // the nearest ahead; the lowest index among equal distances
   for (std::size_t j = 0; j < others.size(); ++j) {
-    if (j == index || s.vehicles[j].lane != self.lane) continue;
-    consider(s.vehicles[j].id, others[j].x_m, others[j].vx_mps, s.vehicles[j].size, s.vehicles[j].limits);
+    if (j == index || s.vehicles[j].lane != lane) continue;
+    const double d = others[j].x_m - x;
+    if (d > 0.0 && !(best && d >= best->distance_m)) best = leader_of(s, others, j, d);
   }
-  Leaders leaders;
-  leaders.main_only = best;
-  const double half_overlap = 0.5 * (s.road.lane_width_m + s.ego.size.width_m);
-  if (std::abs(ego.y_m - lane_centre_y(s.road, self.lane)) < half_overlap)
-    consider(0, ego.x_m, std::max(ego.road_vx_mps(), 0.0), s.ego.size, s.ego.limits);
-  leaders.with_ego = best;
-  return leaders;
+  return with_ego(s, lane, x, best, ego);
+}
+
+void LaneOrder::update(const Scenario& s, const std::vector<VehicleState>& others) {
+  if (position_.size() != others.size()) {
+    lanes_.assign(static_cast<std::size_t>(s.road.main_lanes), {});
+    for (std::size_t j = 0; j < others.size(); ++j) lanes_[static_cast<std::size_t>(s.vehicles[j].lane)].push_back(j);
+    position_.assign(others.size(), 0);
+  }
+  const auto before = [&others](std::size_t a, std::size_t b) {
+    return others[a].x_m < others[b].x_m || (others[a].x_m == others[b].x_m && a < b);
+  };
+  for (std::vector<std::size_t>& lane : lanes_) {
+    for (std::size_t k = 1; k < lane.size(); ++k) {  // insertion sort: nearly sorted already
+      const std::size_t v = lane[k];
+      std::size_t m = k;
+      for (; m > 0 && before(v, lane[m - 1]); --m) lane[m] = lane[m - 1];
+      lane[m] = v;
+    }
+    for (std::size_t k = 0; k < lane.size(); ++k) position_[lane[k]] = k;
+  }
+}
+
+Leaders LaneOrder::leaders(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
+                           const VehicleState& ego) const {
+  const int lane_index = s.vehicles[index].lane;
+  const std::vector<std::size_t>& lane = lanes_[static_cast<std::size_t>(lane_index)];
+  const double x = others[index].x_m;
+  std::size_t q = position_[index] + 1;
+  while (q < lane.size() && !(others[lane[q]].x_m - x > 0.0)) ++q;  // level with it: not ahead
+  std::optional<Leader> best;
+  if (q < lane.size()) {
+    // The nearest distance; of the vehicles at exactly that distance, the lowest index (as the scan).
+    const double d = others[lane[q]].x_m - x;
+    std::size_t j = lane[q];
+    for (std::size_t r = q + 1; r < lane.size() && others[lane[r]].x_m - x == d; ++r) j = std::min(j, lane[r]);
+    best = leader_of(s, others, j, d);
+  }
+  return with_ego(s, lane_index, x, best, ego);
 }
 
 double idm_accel_mps2(double speed_mps, double desired_speed_mps, const std::optional<Leader>& leader,

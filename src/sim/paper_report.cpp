@@ -382,10 +382,10 @@ std::string paper_report_markdown(const PaperExperiment& e) {
 
 void write_paper_report(const PaperExperiment& e, const std::string& out_dir) {
   const std::string dir = out_dir.empty() || out_dir.back() == '/' ? out_dir : out_dir + "/";
-  write_file_atomic(dir + "metrics.json", paper_metrics_json(e).dump(2) + "\n");
-  write_file_atomic(dir + "fig4_paths.svg", fig4_paths_svg(e));
-  write_file_atomic(dir + "fig5_motion.svg", fig5_motion_svg(e));
-  write_file_atomic(dir + "report.md", paper_report_markdown(e));
+  write_files_atomic({{dir + "metrics.json", paper_metrics_json(e).dump(2) + "\n"},
+                      {dir + "fig4_paths.svg", fig4_paths_svg(e)},
+                      {dir + "fig5_motion.svg", fig5_motion_svg(e)},
+                      {dir + "report.md", paper_report_markdown(e)}});
 }
 
 }  // namespace mg

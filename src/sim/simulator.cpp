@@ -173,11 +173,12 @@ class Run {
     // Every driver decides on the states at t before anyone moves.
     std::vector<double>& accel = accel_scratch_;
     accel.resize(others_.size());
+    lane_order_.update(s_, others_);
     for (std::size_t i = 0; i < others_.size(); ++i) {
       DriverInput in;
       in.time_s = t;
       in.speed_mps = others_[i].vx_mps;
-      const Leaders leaders = find_leaders(s_, others_, i, ego_);
+      const Leaders leaders = lane_order_.leaders(s_, others_, i, ego_);
       in.leader = leaders.with_ego;
       in.leader_main_only = leaders.main_only;
       in.ego_in_lane = std::abs(ego_.y_m - s_.vehicles[i].lane * s_.road.lane_width_m) < kInLaneOffsetM;
@@ -201,6 +202,7 @@ class Run {
   std::vector<bool> was_non_compliant_;
   std::vector<V2vMessage> inbox_;
   std::vector<double> accel_scratch_;  // advance()'s, kept to avoid an allocation every step
+  LaneOrder lane_order_;
   PlanOutput plan_;
   Trace trace_;
 };

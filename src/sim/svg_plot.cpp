@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -35,6 +36,25 @@ Range data_range(const Plot& p, bool x_axis) {
     return {lo - pad, hi + pad};
   }
   return {lo, hi};
+}
+
+// The plot's series, thinned to kMaxPointsPerPlot points in all when they hold more.
+std::vector<Series> shown_series(const Plot& p, Range xr) {
+  constexpr std::size_t kShort = 32;  // outlines and reference lines: kept whole
+  std::size_t points = 0, short_points = 0, long_series = 0;
+  for (const Series& s : p.series) {
+    const std::size_t k = std::min(s.x.size(), s.y.size());
+    points += k;
+    if (k <= kShort) short_points += k;
+    else ++long_series;
+  }
+  if (points <= kMaxPointsPerPlot || long_series == 0) return p.series;
+  const std::size_t left = kMaxPointsPerPlot > short_points ? kMaxPointsPerPlot - short_points : 0;
+  const int columns = static_cast<int>(std::max<std::size_t>(kShort / 4, left / (4 * long_series)));
+  std::vector<Series> out;
+  out.reserve(p.series.size());
+  for (const Series& s : p.series) out.push_back(thinned(s, xr, std::min(columns, p.width_px)));
+  return out;
 }
 
 // Draws one plot into `out` with its top-left corner at (ox, oy).
@@ -80,7 +100,7 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
   out << "<text transform=\"translate(" << ox + 16 << "," << num(0.5 * (y0 + y1))
       << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(p.y_label) << "</text>\n";
   // Data.
-  for (const Series& s : p.series) {
+  for (const Series& s : shown_series(p, xr)) {
     std::string d;
     bool pen_down = false;
     for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
@@ -129,6 +149,63 @@ std::string header(int w, int h) {
 }
 
 }  // namespace
+
+Thinner::Thinner(Series style, Range x_range, int columns) : out_(std::move(style)), lo_(x_range.lo) {
+  out_.x.clear();
+  out_.y.clear();
+  columns_ = std::max(columns, 1);
+  const double width = x_range.hi - x_range.lo;
+  scale_ = width > 0.0 && std::isfinite(width) ? static_cast<double>(columns_) / width : 0.0;
+}
+
+void Thinner::add(double x, double y) {
+  const std::size_t i = next_++;
+  if (!std::isfinite(x) || !std::isfinite(y)) {
+    if (in_run_) {  // one break marker per break
+      keep_run();
+      out_.x.push_back(x);
+      out_.y.push_back(std::nan(""));
+    }
+    in_run_ = false;
+    return;
+  }
+  const long c = std::clamp(static_cast<long>(std::floor((x - lo_) * scale_)), 0L, columns_ - 1);
+  if (in_run_ && c == run_column_) {
+    if (y < run_y_[1]) run_x_[1] = x, run_y_[1] = y, run_index_[1] = i;
+    if (y > run_y_[2]) run_x_[2] = x, run_y_[2] = y, run_index_[2] = i;
+    run_x_[3] = x, run_y_[3] = y, run_index_[3] = i;
+    return;
+  }
+  if (in_run_) keep_run();
+  in_run_ = true;
+  run_column_ = c;
+  for (int k = 0; k < 4; ++k) run_x_[k] = x, run_y_[k] = y, run_index_[k] = i;
+}
+
+// The run's first, lowest, highest and last point, in their order, each once.
+void Thinner::keep_run() {
+  int order[4] = {0, 1, 2, 3};
+  std::sort(std::begin(order), std::end(order), [this](int a, int b) { return run_index_[a] < run_index_[b]; });
+  for (int k = 0; k < 4; ++k) {
+    if (k > 0 && run_index_[order[k]] == run_index_[order[k - 1]]) continue;
+    out_.x.push_back(run_x_[order[k]]);
+    out_.y.push_back(run_y_[order[k]]);
+  }
+}
+
+Series Thinner::take() {
+  if (in_run_) keep_run();
+  in_run_ = false;
+  return std::move(out_);
+}
+
+Series thinned(const Series& s, Range x_range, int columns) {
+  const std::size_t n = std::min(s.x.size(), s.y.size());
+  if (columns < 1 || n <= 4 * static_cast<std::size_t>(columns)) return s;
+  Thinner t(s, x_range, columns);
+  for (std::size_t i = 0; i < n; ++i) t.add(s.x[i], s.y[i]);
+  return t.take();
+}
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return {lo};

@@ -3,6 +3,7 @@
 // Output is a standalone SVG document; several panels can share one document (a grid).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,37 @@ struct Plot {
   int width_px = 640;
   int height_px = 360;
 };
+
+// What a plot `columns` pixels wide shows of `s` over `x_range` (M4 thinning): of every unbroken
+// run of points in one column, its first, lowest, highest and last point, in order; line breaks
+// (non-finite points) are kept. A series of at most 4 x columns points is returned unchanged.
+Series thinned(const Series& s, Range x_range, int columns);
+
+// thinned() one point at a time, for series too long to hold (a report's plot of a long trace):
+// add the points in order, then take() the thinned series. It always thins: the size test of
+// thinned() is the caller's.
+class Thinner {
+ public:
+  Thinner(Series style, Range x_range, int columns);
+  void add(double x, double y);
+  Series take();
+
+ private:
+  void keep_run();
+  Series out_;
+  double lo_ = 0.0, scale_ = 0.0;
+  long columns_ = 1;
+  bool in_run_ = false;
+  long run_column_ = 0;
+  double run_x_[4] = {}, run_y_[4] = {};  // first, lowest, highest, last
+  std::size_t run_index_[4] = {};
+  std::size_t next_ = 0;
+};
+
+// render() thins a plot whose series hold more points than this, so that a report stays a few
+// megabytes for any scene (64 vehicles, an hour): each series keeps what its share of the
+// budget shows.
+inline constexpr std::size_t kMaxPointsPerPlot = 24000;
 
 // Round tick values ("1, 2, 5 x 10^k" steps) covering [lo, hi], about `target` of them.
 std::vector<double> nice_ticks(double lo, double hi, int target = 6);

@@ -1,5 +1,5 @@
 // `mergeguard fuzz` and `mergeguard replay` through the built binary (env MG_CLI): the JSON
-// summary contract, exit codes, determinism across --jobs, SIGINT, replay and --update.
+// summary contract, exit codes, determinism across --jobs, stop signals, replay and --update.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -154,21 +154,39 @@ TEST(CliFuzz, BadUsageExitsTwo) {
   EXPECT_EQ(run_cli({"replay", "/nonexistent/case.json"}).exit_code, 2);
 }
 
-TEST(CliFuzz, SigintStopsCleanlyAndStillReports) {
-  const auto dir = scratch("sigint");
-  // SIGINT once the first case is written: the campaign is then surely running and has found
-  // something to report.
-  const auto cases = dir / "cases";
-  const CliRun r = run_cli({"fuzz", "--planner", "tripfield", "--time", "600", "--shrink-attempts", "20", "--corpus",
-                            cases.string(), "--report", (dir / "report").string(), "--json"},
-                           Interrupt{SIGINT, [&](const fs::path&) { return finished_cases(cases) > 0; }, 0.0});
-  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.exit_code << " " << r.err;
-  const auto j = nlohmann::json::parse(r.out);
-  EXPECT_TRUE(j.at("interrupted").get<bool>());
-  EXPECT_TRUE(fs::exists(dir / "report" / "report.json"));
-  EXPECT_FALSE(j.at("new_cases").empty());
-  for (const auto& path : j.at("new_cases")) EXPECT_NO_THROW(load_case(path.get<std::string>()));
-  fs::remove_all(dir);
+// SIGINT (Ctrl-C), SIGTERM (preemption, time-outs) and SIGHUP all stop a campaign gracefully:
+// exit 3 ("interrupted", distinct from 0 and 1), the summary names the signal, the report and
+// every case found are written.
+TEST(CliFuzz, EveryStopSignalEndsTheCampaignCleanlyWithItsReport) {
+  const std::vector<std::pair<int, std::string>> signals = {{SIGINT, "SIGINT"}, {SIGTERM, "SIGTERM"}, {SIGHUP, "SIGHUP"}};
+  for (const auto& [sig, name] : signals) {
+    const auto dir = scratch("stop_" + name);
+    // The signal goes once the first case is written: the campaign is then surely running and
+    // has found something to report.
+    const auto cases = dir / "cases";
+    const CliRun r = run_cli({"fuzz", "--planner", "tripfield", "--time", "600", "--shrink-attempts", "20", "--corpus",
+                              cases.string(), "--report", (dir / "report").string(), "--json"},
+                             Interrupt{sig, [&](const fs::path&) { return finished_cases(cases) > 0; }, 0.0});
+    ASSERT_EQ(r.exit_code, 3) << name << ": " << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(j.at("interrupted").get<bool>()) << name;
+    EXPECT_EQ(j.at("signal"), name);
+    ASSERT_TRUE(fs::exists(dir / "report" / "report.json")) << name;
+    const auto report = nlohmann::json::parse(std::ifstream(dir / "report" / "report.json"));
+    EXPECT_EQ(report.at("signal"), name);
+    EXPECT_EQ(report.at("scenarios"), j.at("scenarios")) << name << ": the final report, not a checkpoint";
+    EXPECT_FALSE(j.at("new_cases").empty()) << name;
+    for (const auto& path : j.at("new_cases")) EXPECT_NO_THROW(load_case(path.get<std::string>())) << name;
+    fs::remove_all(dir);
+  }
+}
+
+TEST(CliFuzz, AnUninterruptedSummaryHasNoSignal) {
+  const auto corpus = scratch("nosignal");
+  const auto j = nlohmann::json::parse(run_cli(fuzz_args(corpus, "2", "1")).out);
+  EXPECT_FALSE(j.at("interrupted").get<bool>());
+  EXPECT_TRUE(j.at("signal").is_null());
+  fs::remove_all(corpus);
 }
 
 TEST(CliFuzz, SigkillNeverLeavesABrokenCase) {

@@ -135,5 +135,23 @@ TEST(Report, WriterPutsTheThreeFilesIntoTheDirectory) {
   fs::remove_all(dir);
 }
 
+// Reports stay readable at any size (issue 20): the largest scene the format allows (64
+// vehicles) over a long trace, with thousands of events, still gives an HTML page under 3 MB.
+TEST(Report, HtmlStaysUnderThreeMegabytesForTheLargestScene) {
+  Scenario s = test::base_scenario();
+  s.road.main_lanes = 4;
+  for (int k = 0; k < 64; ++k) {
+    MainVehicle v = test::vehicle(k + 1, -300.0 + 40.0 * (k / 4) + 9.0 * (k % 4), 20.0 + (k % 4));
+    v.lane = k % 4;
+    s.vehicles.push_back(v);
+  }
+  Trace t = test::constant_accel_trace(s, 120.0);  // 6001 steps: every series is thinned
+  for (int e = 0; e < 3000; ++e) t.events.push_back({e * 0.04, EventKind::kDecision, 0, "keep lane: no gap yet", std::nullopt});
+  const CheckResult r = check_trace(s, std::move(t));
+  const std::string html = report_html(s, r);
+  EXPECT_LT(html.size(), 3u * 1024u * 1024u);
+  EXPECT_NE(html.find("more (report.json lists all)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace mg

@@ -71,8 +71,7 @@ inline Trace constant_accel_trace(const Scenario& s, double duration_s, std::vec
 // Runs one monitor over a trace with the right of way derived from it.
 inline MonitorOutput run(MonitorFn fn, const Scenario& s, const Trace& t) {
   const RightOfWay row = compute_right_of_way(s, t);
-  const PairTable pairs(s, t);
-  return fn(MonitorContext{s, t, row, catalog_params(), pairs});
+  return fn(MonitorContext{s, t, row, catalog_params()});
 }
 
 inline TraceEvent message_event(double time_s, MessageType type, int from, int to, CoopCase c, double pc_m,

@@ -200,5 +200,45 @@ TEST(Behaviour, RssFollowerKeepsSafeDistanceBehindTheMergedEgo) {
   for (const TraceStep& step : t.steps) EXPECT_LT(step.others[0].x_m + 4.8, step.ego.x_m) << "no collision";
 }
 
+// LaneOrder finds the same leaders as find_leaders' scan, ties and the ego included, as the
+// vehicles move (and overtake) from one update to the next.
+RC_GTEST_PROP(Behaviour, LaneOrderFindsTheSameLeadersAsTheScan, ()) {
+  Scenario s;
+  s.road.main_lanes = *rc::gen::inRange(1, 4);
+  const int n = *rc::gen::inRange(1, 20);
+  std::vector<VehicleState> others(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    MainVehicle v;
+    v.id = k + 1;
+    v.lane = *rc::gen::inRange(0, s.road.main_lanes);
+    v.size.length_m = *rc::gen::element(4.8, 12.0);
+    s.vehicles.push_back(v);
+  }
+  LaneOrder order;
+  for (int step = 0; step < 4; ++step) {
+    for (VehicleState& o : others) {
+      o.x_m = *rc::gen::inRange(-20, 20) * 5.0;  // coarse: equal positions and distances happen
+      o.vx_mps = *rc::gen::inRange(0, 30);
+    }
+    VehicleState ego;
+    ego.x_m = *rc::gen::inRange(-20, 20) * 5.0;
+    ego.y_m = *rc::gen::inRange(-2, 2 * s.road.main_lanes) * 0.5 * s.road.lane_width_m;
+    ego.vx_mps = 20.0;
+    order.update(s, others);
+    for (std::size_t i = 0; i < others.size(); ++i) {
+      const Leaders a = find_leaders(s, others, i, ego), b = order.leaders(s, others, i, ego);
+      for (const auto& [x, y] : {std::pair{a.main_only, b.main_only}, std::pair{a.with_ego, b.with_ego}}) {
+        RC_ASSERT(x.has_value() == y.has_value());
+        if (!x) continue;
+        RC_ASSERT(x->id == y->id);
+        RC_ASSERT(x->distance_m == y->distance_m);
+        RC_ASSERT(x->speed_mps == y->speed_mps);
+        RC_ASSERT(x->length_m == y->length_m);
+        RC_ASSERT(x->brake_max_mps2 == y->brake_max_mps2);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mg

@@ -24,7 +24,7 @@ int run_merge(const std::vector<std::string>& args) {
   app.add_option("--into", into, "the corpus to merge into (created if missing; its cases take part)")->required();
   app.add_flag("--json", json, "print one JSON document");
   if (!parse_args(app, args)) return kExitOk;
-  prepare_output_dir("--into", into);  // issue 20: output paths before any work
+  prepare_output_dir("--into", into);
   const auto decisions = fuzz::merge_corpora(sources, into);
   nlohmann::json list = nlohmann::json::array();
   std::size_t written = 0;

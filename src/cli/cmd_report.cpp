@@ -26,8 +26,8 @@ int run_merge(const std::vector<std::string>& args) {
   app.add_flag("--partial", partial, "merge even when some shards are missing");
   app.add_flag("--json", json, "print the merged summary on stdout");
   if (!parse_args(app, args)) return kExitOk;
+  prepare_output_dir("--out", out);
   const fuzz::MergedReport m = fuzz::merge_reports(reports, partial);
-  prepare_output_dir("--out", out);  // issue 20: output paths before any work
   fuzz::write_campaign_report(out, m.options, m.result, {});
   if (json) {
     std::cout << fuzz::campaign_summary_json(m.options, m.result).dump(2) << "\n";

@@ -72,6 +72,18 @@ TEST(OutputPaths, ReproducePaperRefusesAnUnwritableOutputDirectory) {
   fs::remove_all(dir);
 }
 
+TEST(OutputPaths, CorpusAndReportMergeRefuseAnUnwritableTarget) {
+  const auto dir = scratch_dir();
+  const std::string cases = (fs::path(MG_SOURCE_DIR) / "corpus" / "cases").string();
+  const fs::path summary = dir / "report.json";
+  std::ofstream(summary) << "{}";
+  for (const BadPath& bad : bad_paths(dir)) {
+    expect_refused({"corpus", "merge", cases, "--into", bad.path}, "--into", bad);
+    expect_refused({"report", "merge", summary.string(), "--out", bad.path}, "--out", bad);
+  }
+  fs::remove_all(dir);
+}
+
 TEST(OutputPaths, ReplayUpdateRefusesACaseInAReadOnlyDirectory) {
   if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only directories";
   const auto dir = scratch_dir();

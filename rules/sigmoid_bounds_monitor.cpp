@@ -101,11 +101,18 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     const double ve = std::max(speed_of(st.ego), 0.0);
     const Decision* dec = merge_decision_before(ctx.trace, e.time_s);
     const bool def1 = dec != nullptr && dec->mode == DecisionMode::kDef1Merge;
-    const TraceStep& at_dec = steps[step_at(ctx.trace, def1 ? dec->time_s : e.time_s)];
-    const double since_dec_s = def1 ? e.time_s - dec->time_s : 0.0;
+    const bool def2 = dec != nullptr && dec->mode == DecisionMode::kDef2Merge;
+    const TraceStep& at_dec = steps[step_at(ctx.trace, def1 || def2 ? dec->time_s : e.time_s)];
+    const double since_dec_s = def1 || def2 ? e.time_s - dec->time_s : 0.0;
+    // Which gap vehicles Definition 1 predicts: both in a Def. 1 merge; in a Def. 2 merge the one
+    // that is not the partner (the planner holds it to ineq. (1) or (2); the partner is held to
+    // its accepted v_o* instead, and judged at its real position).
+    const auto predicted = [&](std::size_t k) {
+      return def1 || (def2 && party_of(s, k) != dec->coop_partner_id);
+    };
     // Margins against the real positions, and against the ones Definition 1 predicted at the
     // decision (the follower accelerating at a_accel^max until rho/2, then holding its speed; the
-    // leader holding its speed); the latter only for a Def. 1 merge.
+    // leader holding its speed).
     const double inf = std::numeric_limits<double>::infinity();
     double m_follower = inf, m_follower_pred = -inf, m_leader = inf, m_leader_pred = -inf;
     if (follower > 0) {
@@ -117,7 +124,7 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       };
       const VehicleState& f = state_of(st, follower);
       m_follower = margin(f.x_m, speed_of(f));
-      if (def1) {
+      if (predicted(follower)) {
         const auto [x, v] =
             def1_predicted(state_of(at_dec, follower), lf.accel_max_mps2, 0.5 * dec->merge_duration_s, since_dec_s);
         m_follower_pred = margin(x, v);
@@ -132,7 +139,7 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       };
       const VehicleState& l = state_of(st, leader);
       m_leader = margin(l.x_m, speed_of(l));
-      if (def1) {
+      if (predicted(leader)) {
         const auto [x, v] = def1_predicted(state_of(at_dec, leader), 0.0, 0.0, since_dec_s);
         m_leader_pred = margin(x, v);
       }

@@ -691,7 +691,12 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
   }
   if (pending_) {
     out.target_speed_mps = std::min(pending_->plan.ego_speed_after_mps, halt_cap);
-    out.accel_limit_mps2 = std::max(brake_limit, accel_limit_toward(s, v_e, out.target_speed_mps));
+    // Def. 2.2A: while its request is open the ego brakes at most b_min (ineq. (4) counts on
+    // it), so b_max only when b_min could no longer stop it before the side lane's end.
+    const bool ego_behind = pending_->plan.vo.coop_case == CoopCase::kEgoBehind;
+    const double pending_brake =
+        ego_behind && needed <= s.ego.limits.brake_min_mps2 ? s.ego.limits.brake_min_mps2 : brake_limit;
+    out.accel_limit_mps2 = std::max(pending_brake, accel_limit_toward(s, v_e, out.target_speed_mps));
     out.decision = pending_->plan.decision;
     if (out.outbox.empty())
       out.decision.reason = "waiting for vehicle " + std::to_string(pending_->plan.partner.id) + " until t = " +

@@ -468,8 +468,10 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
     if (w.ego.x_m >= sig.x_at_fraction_m(1.0 - kSigmoidEndFraction) || progress >= 1.0 - kSigmoidEndFraction) {
       merged_ = true;
       merge_.reset();
-    } else if (merge_->decision.mode == DecisionMode::kDef1Merge && !merge_->committed(w.ego.y_m) &&
-               can_still_halt(w) && (committed_bounds_crossed(w) || !committed_occupancy_clear(w))) {
+    } else if (!merge_->committed(w.ego.y_m) && can_still_halt(w) &&
+               (merge_->decision.mode == DecisionMode::kDef1Merge
+                    ? committed_bounds_crossed(w) || !committed_occupancy_clear(w)
+                    : committed_bounds_crossed(w))) {
       note = "merge aborted (P_c bounds crossed or lane occupied at the predicted positions); ";
       merge_.reset();
       no_merge_before_s_ = w.time_s + kMergeRetryAfterAbortS;
@@ -495,6 +497,10 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
   const double v_at = ramp.speed_at_mps(t);
   for (const ObservedVehicle& ov : w.others) {
     const MainLaneVehicle o = to_lane_vehicle(ov);
+    // A Def. 2 partner is held to its accepted v_o* (ineq. (3)/(4)), not to Definition 1's
+    // predictions; the gap's other vehicle is re-checked as in a Def. 1 merge (DESIGN §6: abort
+    // when the P_c bounds cross, e.g. behind a leader that brakes for slower traffic).
+    if (d.mode == DecisionMode::kDef2Merge && o.id == d.coop_partner_id) continue;
     if (d.gap && o.id == d.gap->follower_id) {
       const double v_f = o.speed_mps + o.limits.accel_max_mps2 * t;
       const double x_f = o.x_m + o.speed_mps * t + 0.5 * o.limits.accel_max_mps2 * t * t;

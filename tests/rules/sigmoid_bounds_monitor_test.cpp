@@ -103,6 +103,58 @@ TEST(SigmoidBoundsMonitor, LeaderAtItsPredictedSpeedButTooCloseBlamesTheEgo) {
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
 }
 
+// A Def. 2 merge decided at t = 0 with partner `partner` (its acceptance in hand).
+Trace with_def2_decision(Trace t, int partner) {
+  Decision d;
+  d.mode = DecisionMode::kDef2Merge;
+  d.coop_partner_id = partner;
+  d.pc_min_m = 0.0;
+  d.pc_m = 20.0;
+  d.pc_max_m = 40.0;
+  d.merge_duration_s = 2.0;
+  t.decisions.push_back(d);
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, NonPartnerLeaderThatSlowedWithinItsLimitsInADef2MergeLeavesThePairToTheRssRules) {
+  // The leader of the previous test, in a Def. 2.1 merge whose partner is vehicle 2, 60 m
+  // behind (20 m/s, 14.825 m clear). The planner held the leader to ineq. (2) as Definition 1
+  // does: predicted at 20 m/s it is 4.825 m clear. (Until session 7 a Def. 2 merge was judged at
+  // the real positions only: -3.6 m, the ego liable; campaign run 30286 of seed 1.)
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 50.0, 20.0), vehicle(2, -60.0, 20.0)};
+  const Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0, 0.0})), 2);
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 4.825, 1e-6);
+}
+
+TEST(SigmoidBoundsMonitor, PartnerLeaderIsJudgedAtItsRealPositionInADef2Merge) {
+  // The same braking leader as the Def. 2.2 partner: it is bound by its accepted v_o* (here 20
+  // m/s, from which it is 3 m/s away at the midpoint, beyond the 0.5 m/s tolerance), not by
+  // Definition 1's prediction: judged at its real position, 3.6 m inside, and liable.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 50.0, 20.0)};
+  Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0})), 1);
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoBehind, 20, 45, 20));
+  t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoBehind, 20, 45, 20));
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_LT(out.result.min_margin, -3.0);
+}
+
+TEST(SigmoidBoundsMonitor, NonPartnerLeaderAtItsPredictedSpeedButTooCloseInADef2MergeBlamesTheEgo) {
+  // The non-partner leader holding its speed 40 m ahead: -5.175 m at both positions.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 40.0, 20.0), vehicle(2, -60.0, 20.0)};
+  const Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0)), 2);
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
+}
+
 TEST(SigmoidBoundsMonitor, DecisionPcOutsideItsBoundsIsAViolation) {
   Scenario s = base_scenario();
   Trace t = constant_accel_trace(s, 1.0);

@@ -21,6 +21,8 @@ constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far insi
 constexpr double kNearPcBoundPenalty = 1e4;  // ... or pay this (far above any candidate's cost)
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
 constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
+// Times k dt and t_r + rho_c that are the same instant differ by rounding (~1e-15 s).
+constexpr double kDeadlineTieS = 1e-9;
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
 // After an abort the ego holds the side lane this long before it plans a new merge: re-planning
 // at once, every cycle, against a leader that keeps braking would weave (docs/planner.md).
@@ -40,9 +42,18 @@ Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
 
 CoopContext coop_context(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
-  return CoopContext{w.ego.x_m, ego_speed_mps(w), s.ego.size.length_m, s.ego.limits,
-                     s.params.rss.response_time_s, s.params.planner.merge_duration_s,
-                     s.params.planner.comm_threshold_s, s.road.speed_limit_mps};
+  // v_o* with slack: solved exactly, ineq. (3) left the responder 0.29 m inside the ego's safe
+  // distance at the midpoint once the request's latency delayed it (docs/planner.md).
+  return CoopContext{w.ego.x_m,
+                     ego_speed_mps(w),
+                     s.ego.size.length_m,
+                     s.ego.limits,
+                     s.params.rss.response_time_s,
+                     s.params.planner.merge_duration_s,
+                     s.params.planner.comm_threshold_s,
+                     s.road.speed_limit_mps,
+                     s.ego.v2v.latency_s,
+                     kOccupancyPlanningBufferM};
 }
 
 double observed_accel_mps2(const WorldSnapshot& w, int id) {
@@ -256,7 +267,8 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   const double v_after = coop_ego_speed_after_mps(c, k);
   const double t_c = c.comm_threshold_s + 0.5 * c.merge_duration_s;  // decision to P_c
   const double responder_at_pc_m = o.x_m + 0.5 * (o.speed_mps + vo.vo_star_mps) * c.comm_threshold_s +
-                                   vo.vo_star_mps * 0.5 * c.merge_duration_s;
+                                   vo.vo_star_mps * 0.5 * c.merge_duration_s +
+                                   c.request_latency_s * (o.speed_mps - vo.vo_star_mps);
   double pc_min = c.ego_x_m + coop_ego_travel_m(c, k);
   double pc_max = side_exit_limit_x_m(s);
   Gap gap;
@@ -626,7 +638,10 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     const int partner = pending_->plan.partner.id;
     for (const V2vMessage& m : w.inbox) {
       if (m.to_id != 0 || m.from_id != partner || m.sent_time_s < pending_->plan.decision.time_s) continue;
-      if (m.type == MessageType::kAccept && w.time_s <= pending_->deadline_s + s.params.sim.planner_cycle_s) {
+      // Def. 2.3: only an acceptance delivered within rho_c counts (the planner reads its inbox
+      // once a cycle, so one delivered after the deadline may still be read before the next).
+      const double delivered_s = std::isnan(m.delivered_time_s) ? w.time_s : m.delivered_time_s;
+      if (m.type == MessageType::kAccept && delivered_s <= pending_->deadline_s + kDeadlineTieS) {
         Decision d = pending_->plan.decision;
         d.mode = DecisionMode::kDef2Merge;
         d.reason = "vehicle " + std::to_string(partner) + " accepted: " + d.reason;

@@ -54,16 +54,26 @@ int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t l
   return kNobody;
 }
 
-// The responder k if it accepted a Def. 2 request before time_s and is, at time_s, still
-// farther than the yield tolerance from the v_o* it accepted (Def. 2.1B / 2.2B), else kNobody.
+// The responder k if it accepted a Def. 2 request before time_s and was farther than the yield
+// tolerance from the v_o* it accepted at time_s, or at any step from the yield deadline t_r +
+// rho_c + T to time_s (Def. 2.1B / 2.2B: a responder that did not yield in time and slowed only
+// later still explains the margin), else kNobody.
 int reneging_responder(const MonitorContext& ctx, std::size_t k, double time_s) {
   const int id = party_of(ctx.scenario, k);
-  const double v = speed_of(state_of(ctx.trace.steps[step_at(ctx.trace, time_s)], k));
+  const auto& steps = ctx.trace.steps;
+  const double tol = ctx.params.yield_speed_tolerance_mps;
+  const double yield_after_s = ctx.scenario.params.planner.comm_threshold_s + ctx.scenario.params.rss.response_time_s;
   for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
     if (x.request->to_id != id || x.accept_time_s < 0.0 || x.accept_time_s > time_s) continue;
     const double v_star = x.request->target_speed_mps;
-    const double tol = ctx.params.yield_speed_tolerance_mps;
-    if (x.request->coop_case == CoopCase::kEgoAhead ? v > v_star + tol : v < v_star - tol) return id;
+    const auto off = [&](std::size_t i) {
+      const double v = speed_of(state_of(steps[i], k));
+      return x.request->coop_case == CoopCase::kEgoAhead ? v > v_star + tol : v < v_star - tol;
+    };
+    const std::size_t last = step_at(ctx.trace, time_s);
+    if (off(last)) return id;
+    for (std::size_t i = step_at(ctx.trace, x.request_time_s + yield_after_s); i < last; ++i)
+      if (off(i)) return id;
   }
   return kNobody;
 }

@@ -155,6 +155,43 @@ TEST(SigmoidBoundsMonitor, NonPartnerLeaderAtItsPredictedSpeedButTooCloseInADef2
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
 }
 
+// Vehicle 1, 15 m behind the ego (both 20 m/s), accepted at 0.1 s the Def. 2.1 request of t = 0
+// for v_o* = 15 m/s; it must be within 0.5 m/s of it from t_r + rho_c + T = 1.5 s. It slows to
+// 15 m/s at `slows_at_s`. The merge midpoint is at 2 s: the ego 40 m, vehicle 1 about 25 m, inside
+// D_lon(15 behind 20) = 19.6 m by 4.6 m whatever its speed history.
+Trace responder_slowing_at(const Scenario& s, double slows_at_s) {
+  Trace t = constant_accel_trace(s, 3.0);
+  for (auto& st : t.steps) {
+    st.others[0].x_m = -15.0 + 20.0 * std::min(st.time_s, 1.0) + 15.0 * std::max(0.0, st.time_s - 1.0);
+    if (st.time_s >= slows_at_s - 1e-9) st.others[0].vx_mps = 15.0;
+  }
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 20, 15));
+  t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 20, 15));
+  t.events.push_back({2.0, EventKind::kMergeMidpoint, 0, "", std::nullopt});
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, ResponderThatYieldedLateIsLiableEvenAfterItSlowed) {
+  // It held 20 m/s until 1.8 s, past its yield deadline (1.5 s), and is at v_o* by the midpoint.
+  // Until session 7 only its speed at the midpoint counted, and the ego was liable (campaign run
+  // 6360 of seed 1: a reneging partner that braked for a stopped vehicle before the midpoint).
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -15.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.8));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+}
+
+TEST(SigmoidBoundsMonitor, ResponderThatYieldedInTimeLeavesTheEgoLiable) {
+  // The same margin with vehicle 1 at v_o* from 1.2 s, before its deadline: the ego is liable.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -15.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.2));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_LT(out.result.min_margin, -4.0);
+}
+
 TEST(SigmoidBoundsMonitor, DecisionPcOutsideItsBoundsIsAViolation) {
   Scenario s = base_scenario();
   Trace t = constant_accel_trace(s, 1.0);

@@ -711,7 +711,17 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     }
   }
   if (pending_) {
-    out.target_speed_mps = std::min(pending_->plan.ego_speed_after_mps, halt_cap);
+    // The request's P_c assumes Def. 2's speed profile over rho_c (2.1: v_e held; 2.2: b_min
+    // down to v_e - b_min rho_c). The comfortable halt profile left a braking ego behind its own
+    // P_c, inside the partner's safe distance at the midpoint (session 7, run 11450), so it
+    // applies only once b_min could no longer stop the ego before the side lane's end from
+    // where the request's profile has it at the deadline.
+    const double at_deadline_x = w.ego.x_m + v_e * std::max(0.0, pending_->deadline_s - w.time_s);
+    const double room_after_m = s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - at_deadline_x -
+                                v_e * p.comm_threshold_s;
+    const bool profile_can_halt = room_after_m > 0.0 && v_e * v_e / (2.0 * s.ego.limits.brake_min_mps2) < room_after_m;
+    out.target_speed_mps =
+        profile_can_halt ? pending_->plan.ego_speed_after_mps : std::min(pending_->plan.ego_speed_after_mps, halt_cap);
     // Def. 2.2A: while its request is open the ego brakes at most b_min (ineq. (4) counts on
     // it), so b_max only when b_min could no longer stop it before the side lane's end.
     const bool ego_behind = pending_->plan.vo.coop_case == CoopCase::kEgoBehind;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -38,6 +39,32 @@ std::pair<double, double> def1_predicted(const VehicleState& at_decision, double
   const double tau = std::min(dt, accel_for_s);
   return {at_decision.x_m + v0 * tau + 0.5 * accel_mps2 * tau * tau + (v0 + accel_mps2 * tau) * (dt - tau),
           v0 + accel_mps2 * tau};
+}
+
+// Where a Def. 2 partner (vehicle k) is `dt` after the merge decision `dec` had it followed the
+// profile it accepted: from its speed at the decision linearly to v_o* by t_r + rho_c (ineq. (3)
+// and (4) count on its mean speed over rho_c), then v_o* (capped by the speed limit for 2.2).
+// Returns {x, v}, or nullopt when no accepted request to k precedes the decision.
+std::optional<std::pair<double, double>> accepted_profile(const MonitorContext& ctx, std::size_t k,
+                                                          const Decision& dec, double dt) {
+  const Scenario& s = ctx.scenario;
+  const std::vector<CoopExchange> exchanges = coop_exchanges(ctx.trace);
+  const CoopExchange* accepted = nullptr;
+  for (const CoopExchange& x : exchanges)
+    if (x.request->to_id == party_of(s, k) && x.accept_time_s >= 0.0 && x.accept_time_s <= dec.time_s + 1e-9)
+      accepted = &x;
+  if (accepted == nullptr) return std::nullopt;
+  double v_star = accepted->request->target_speed_mps;
+  if (accepted->request->coop_case == CoopCase::kEgoBehind) v_star = std::min(v_star, s.road.speed_limit_mps);
+  VehicleState at_dec = state_of(ctx.trace.steps[step_at(ctx.trace, dec.time_s)], k);
+  const double ramp_s = accepted->request_time_s + s.params.planner.comm_threshold_s - dec.time_s;
+  if (ramp_s <= 0.0) {
+    at_dec.vx_mps = v_star;
+    at_dec.vy_mps = 0.0;
+    at_dec.yaw_rad = 0.0;
+    return def1_predicted(at_dec, 0.0, 0.0, dt);
+  }
+  return def1_predicted(at_dec, (v_star - speed_of(at_dec)) / ramp_s, ramp_s, dt);
 }
 
 // The main-lane vehicle that broke a declared limit in [from, to] (a follower accelerating
@@ -114,11 +141,12 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     const bool def2 = dec != nullptr && dec->mode == DecisionMode::kDef2Merge;
     const TraceStep& at_dec = steps[step_at(ctx.trace, def1 || def2 ? dec->time_s : e.time_s)];
     const double since_dec_s = def1 || def2 ? e.time_s - dec->time_s : 0.0;
-    // Which gap vehicles Definition 1 predicts: both in a Def. 1 merge; in a Def. 2 merge the one
-    // that is not the partner (the planner holds it to ineq. (1) or (2); the partner is held to
-    // its accepted v_o* instead, and judged at its real position).
-    const auto predicted = [&](std::size_t k) {
-      return def1 || (def2 && party_of(s, k) != dec->coop_partner_id);
+    // Which gap vehicles are predicted: both in a Def. 1 merge; in a Def. 2 merge the one that is
+    // not the partner as Definition 1 does (the planner holds it to ineq. (1) or (2)), and the
+    // partner on the profile it accepted (ineq. (3)/(4): to v_o* by t_r + rho_c, then v_o*).
+    const auto partner_prediction = [&](std::size_t k) -> std::optional<std::pair<double, double>> {
+      if (!def2 || party_of(s, k) != dec->coop_partner_id) return std::nullopt;
+      return accepted_profile(ctx, k, *dec, since_dec_s);
     };
     // Margins against the real positions, and against the ones Definition 1 predicted at the
     // decision (the follower accelerating at a_accel^max until rho/2, then holding its speed; the
@@ -134,7 +162,9 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       };
       const VehicleState& f = state_of(st, follower);
       m_follower = margin(f.x_m, speed_of(f));
-      if (predicted(follower)) {
+      if (const auto p = partner_prediction(follower)) {
+        m_follower_pred = margin(p->first, p->second);
+      } else if (def1 || def2) {
         const auto [x, v] =
             def1_predicted(state_of(at_dec, follower), lf.accel_max_mps2, 0.5 * dec->merge_duration_s, since_dec_s);
         m_follower_pred = margin(x, v);
@@ -149,7 +179,9 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       };
       const VehicleState& l = state_of(st, leader);
       m_leader = margin(l.x_m, speed_of(l));
-      if (predicted(leader)) {
+      if (const auto p = partner_prediction(leader)) {
+        m_leader_pred = margin(p->first, p->second);
+      } else if (def1 || def2) {
         const auto [x, v] = def1_predicted(state_of(at_dec, leader), 0.0, 0.0, since_dec_s);
         m_leader_pred = margin(x, v);
       }

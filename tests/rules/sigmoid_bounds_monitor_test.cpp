@@ -155,14 +155,14 @@ TEST(SigmoidBoundsMonitor, NonPartnerLeaderAtItsPredictedSpeedButTooCloseInADef2
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
 }
 
-// Vehicle 1, 15 m behind the ego (both 20 m/s), accepted at 0.1 s the Def. 2.1 request of t = 0
+// Vehicle 1, 10 m behind the ego (both 20 m/s), accepted at 0.1 s the Def. 2.1 request of t = 0
 // for v_o* = 15 m/s; it must be within 0.5 m/s of it from t_r + rho_c + T = 1.5 s. It slows to
 // 15 m/s at `slows_at_s`. The merge midpoint is at 2 s: the ego 40 m, vehicle 1 about 25 m, inside
 // D_lon(15 behind 20) = 19.6 m by 4.6 m whatever its speed history.
 Trace responder_slowing_at(const Scenario& s, double slows_at_s) {
   Trace t = constant_accel_trace(s, 3.0);
   for (auto& st : t.steps) {
-    st.others[0].x_m = -15.0 + 20.0 * std::min(st.time_s, 1.0) + 15.0 * std::max(0.0, st.time_s - 1.0);
+    st.others[0].x_m = -10.0 + 20.0 * std::min(st.time_s, 1.0) + 15.0 * std::max(0.0, st.time_s - 1.0);
     if (st.time_s >= slows_at_s - 1e-9) st.others[0].vx_mps = 15.0;
   }
   t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 20, 15));
@@ -176,7 +176,7 @@ TEST(SigmoidBoundsMonitor, ResponderThatYieldedLateIsLiableEvenAfterItSlowed) {
   // Until session 7 only its speed at the midpoint counted, and the ego was liable (campaign run
   // 6360 of seed 1: a reneging partner that braked for a stopped vehicle before the midpoint).
   Scenario s = base_scenario();
-  s.vehicles = {vehicle(1, -15.0, 20.0)};
+  s.vehicles = {vehicle(1, -10.0, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.8));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, 1);
@@ -185,11 +185,45 @@ TEST(SigmoidBoundsMonitor, ResponderThatYieldedLateIsLiableEvenAfterItSlowed) {
 TEST(SigmoidBoundsMonitor, ResponderThatYieldedInTimeLeavesTheEgoLiable) {
   // The same margin with vehicle 1 at v_o* from 1.2 s, before its deadline: the ego is liable.
   Scenario s = base_scenario();
-  s.vehicles = {vehicle(1, -15.0, 20.0)};
+  s.vehicles = {vehicle(1, -10.0, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.2));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
   EXPECT_LT(out.result.min_margin, -4.0);
+}
+
+// A Def. 2.1 merge decided at 0.2 s with partner vehicle 1 (x0 behind the ego, both 20 m/s), which
+// accepted v_o* = 19.8 m/s and kept 20 m/s: within the 0.5 m/s yield tolerance. Midpoint at 2 s,
+// the ego at 40 m.
+Trace partner_within_tolerance(const Scenario& s) {
+  Trace t = with_def2_decision(constant_accel_trace(s, 3.0), 1);
+  t.decisions.back().time_s = 0.2;
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 44, 19.8));
+  t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 44, 19.8));
+  t.events.push_back({2.0, EventKind::kMergeMidpoint, 0, "", std::nullopt});
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, PartnerWithinItsYieldToleranceIsJudgedOnItsAcceptedProfileToo) {
+  // x0 = -45.075: really 0.1 m inside D_lon(20, 20) = 45.175 m. On its accepted profile (20 ->
+  // 19.8 m/s by t_r + rho_c = 1 s, then 19.8) it would be at -5.355 m with D_lon(19.8, 20) =
+  // 44.03 m: 1.325 m clear. Legal but not as accepted: left to rss_longitudinal. (Until session 7
+  // the ego was liable; campaign run 13765 of seed 1: 22.0 against 21.68 m/s, 0.89 m.)
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -45.075, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 1.325, 0.01);
+}
+
+TEST(SigmoidBoundsMonitor, PartnerTooCloseEvenOnItsAcceptedProfileBlamesTheEgo) {
+  // x0 = -30: -15.175 m really, -13.75 m on the accepted profile: the ego's P_c was wrong.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -30.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -13.75, 0.01);
 }
 
 TEST(SigmoidBoundsMonitor, DecisionPcOutsideItsBoundsIsAViolation) {

@@ -67,6 +67,16 @@ std::optional<std::pair<double, double>> accepted_profile(const MonitorContext& 
   return def1_predicted(at_dec, (v_star - speed_of(at_dec)) / ramp_s, ramp_s, dt);
 }
 
+// Whether the ego is the rear vehicle of an RSS-dangerous pair (both distances unsafe) at step i.
+bool ego_brakes_for_danger(const MonitorContext& ctx, std::size_t i) {
+  const std::size_t n = ctx.scenario.vehicles.size() + 1;
+  for (std::size_t j = 1; j < n; ++j) {
+    const PairGeometry& g = ctx.pairs.at(i, PairTable::index(n, 0, j));
+    if (g.rear == 0 && g.lat_unsafe() && g.lon_unsafe()) return true;
+  }
+  return false;
+}
+
 // The main-lane vehicle that broke a declared limit in [from, to] (a follower accelerating
 // beyond a_accel^max, a leader braking beyond a_brake^max), or kNobody.
 int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t leader, double from, double to) {
@@ -153,21 +163,28 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     // leader holding its speed).
     const double inf = std::numeric_limits<double>::infinity();
     double m_follower = inf, m_follower_pred = -inf, m_leader = inf, m_leader_pred = -inf;
+    // An ego braking as the rear vehicle of an RSS-dangerous pair at the midpoint (its proper
+    // response to a vehicle ahead) is slower than planned, which grows D_lon to its follower; the
+    // predicted margin takes the planned speed v_e* then, so that response does not count against
+    // the P_c bound (the follower's own response is rss_longitudinal's).
+    const double ve_pred = (def1 || def2) && ego_brakes_for_danger(ctx, i) && std::isfinite(dec->ve_star_mps)
+                               ? std::max(ve, dec->ve_star_mps)
+                               : ve;
     if (follower > 0) {
       const Limits& lf = limits_of(s, follower);
-      const auto margin = [&](double x_f, double v_f) {
+      const auto margin = [&](double x_f, double v_f, double v_e) {
         return st.ego.x_m - x_f -
-               rss_longitudinal_m({std::max(v_f, 0.0), ve, size_of(s, follower).length_m, s.ego.size.length_m, T,
+               rss_longitudinal_m({std::max(v_f, 0.0), v_e, size_of(s, follower).length_m, s.ego.size.length_m, T,
                                    lf.accel_max_mps2, lf.brake_min_mps2, s.ego.limits.brake_max_mps2});
       };
       const VehicleState& f = state_of(st, follower);
-      m_follower = margin(f.x_m, speed_of(f));
+      m_follower = margin(f.x_m, speed_of(f), ve);
       if (const auto p = partner_prediction(follower)) {
-        m_follower_pred = margin(p->first, p->second);
+        m_follower_pred = margin(p->first, p->second, ve_pred);
       } else if (def1 || def2) {
         const auto [x, v] =
             def1_predicted(state_of(at_dec, follower), lf.accel_max_mps2, 0.5 * dec->merge_duration_s, since_dec_s);
-        m_follower_pred = margin(x, v);
+        m_follower_pred = margin(x, v, ve_pred);
       }
     }
     if (leader > 0) {

@@ -226,6 +226,49 @@ TEST(SigmoidBoundsMonitor, PartnerTooCloseEvenOnItsAcceptedProfileBlamesTheEgo) 
   EXPECT_NEAR(out.result.min_margin, -13.75, 0.01);
 }
 
+// The partner (vehicle 1, 50 m behind, on its accepted 20 m/s) of a Def. 2.1 merge decided at
+// 0.2 s with v_e* = 20 m/s; the ego slows to 15 m/s from 1.5 s. At the midpoint (2 s, ego at 40 m)
+// D_lon(20 behind 15) = 56.11 m against 50 m: -6.11 m, 4.825 m at the planned 20 m/s.
+Trace slowed_ego_before_partner(const Scenario& s) {
+  Trace t = partner_within_tolerance(s);
+  t.decisions.back().ve_star_mps = 20.0;
+  for (auto& e : t.events)
+    if (e.message) e.message->target_speed_mps = 20.0;
+  for (auto& st : t.steps)
+    if (st.time_s >= 1.5 - 1e-9) st.ego.vx_mps = 15.0;
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, EgoSlowedByItsRssResponseIsJudgedAtItsPlannedSpeedBeforeThePartner) {
+  // Vehicle 2, 30 m ahead in the ego's lane, brakes at 6 m/s2 (b_max 8) from 1 s: at the midpoint
+  // it is 27 m ahead at 14 m/s, inside D_lon(15, 14) = 32.3 m: the ego brakes as the rear vehicle
+  // of a dangerous pair. Until session 7 the slower ego was liable toward the partner (-6.11 m;
+  // campaign run 3873 of seed 2); now the planned speed counts: 4.825 m.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -50.0, 20.0), vehicle(2, 30.0, 20.0)};
+  Trace t = slowed_ego_before_partner(s);
+  for (auto& st : t.steps) {
+    const double b = std::max(0.0, st.time_s - 1.0);
+    st.others[1].y_m = st.ego.y_m;
+    st.others[1].x_m = 30.0 + 20.0 * st.time_s - 3.0 * b * b;
+    st.others[1].vx_mps = 20.0 - 6.0 * b;
+    st.others[1].accel_mps2 = st.time_s > 1.0 ? -6.0 : 0.0;
+  }
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 4.825, 0.01);
+}
+
+TEST(SigmoidBoundsMonitor, EgoSlowerThanPlannedWithoutAnRssDangerIsLiableBeforeThePartner) {
+  // The same slowing with nobody ahead: nothing the ego had to answer, so its real speed counts.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -50.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, slowed_ego_before_partner(s));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -6.11, 0.02);
+}
+
 TEST(SigmoidBoundsMonitor, DecisionPcOutsideItsBoundsIsAViolation) {
   Scenario s = base_scenario();
   Trace t = constant_accel_trace(s, 1.0);

@@ -28,6 +28,11 @@ std::vector<CoopExchange> coop_exchanges(const Trace& t) {
 
 namespace {
 
+// Trace times are sums of k steps and t_r + rho_c is computed another way: the two differ by
+// rounding (~1e-15 s) when they are the same instant. Closed windows of Definition 2 include such
+// ties.
+constexpr double kTieS = 1e-9;
+
 // The ego's first merge midpoint after time_s: from then on the ego is in the lane and the
 // RSS rules, not Definition 2, govern the pair.
 double merge_midpoint_after(const Trace& t, double time_s) {
@@ -124,7 +129,38 @@ MonitorOutput monitor_def2_1a_request(const MonitorContext& ctx) {
 MonitorOutput monitor_def2_1b_responder(const MonitorContext& ctx) { return monitor_responder(ctx, CoopCase::kEgoAhead); }
 MonitorOutput monitor_def2_2b_responder(const MonitorContext& ctx) { return monitor_responder(ctx, CoopCase::kEgoBehind); }
 
-// Def. 2.2A: after its request the ego brakes at most b_min during rho_c.
+namespace {
+
+// When the ego's Def. 2.2A window [t_r, t_r + rho_c] ends early: at a refusal delivered to the
+// ego (Def. 2.3 then sends it back to Definition 1), or at the first step at which the ego is the
+// rear vehicle of an RSS-dangerous pair (the RSS proper response, braking at least b_min and up
+// to b_max, then governs its speed; rss_longitudinal judges it).
+double def2_2a_window_end_s(const MonitorContext& ctx, const CoopExchange& x) {
+  const double rho_c = ctx.scenario.params.planner.comm_threshold_s;
+  double end = x.request_time_s + rho_c;
+  for (const TraceEvent& e : ctx.trace.events) {
+    if (e.time_s > end + kTieS) break;
+    if (e.kind == EventKind::kMessageDelivered && e.message && e.message->type == MessageType::kRefuse &&
+        e.message->from_id == x.request->to_id && e.message->to_id == kEgoId && e.time_s >= x.request_time_s) {
+      end = e.time_s;
+      break;
+    }
+  }
+  const std::size_t n = ctx.scenario.vehicles.size() + 1;
+  for (std::size_t i = step_at(ctx.trace, x.request_time_s); i < ctx.trace.steps.size(); ++i) {
+    if (ctx.trace.steps[i].time_s > end + kTieS) break;
+    for (std::size_t j = 1; j < n; ++j) {
+      const PairGeometry& g = ctx.pairs.at(i, PairTable::index(n, 0, j));
+      if (g.rear == 0 && g.lat_unsafe() && g.lon_unsafe()) return ctx.trace.steps[i].time_s;
+    }
+  }
+  return end;
+}
+
+}  // namespace
+
+// Def. 2.2A: after its request the ego brakes at most b_min during rho_c (ineq. (4) counts on it),
+// unless the partner refused or an RSS danger with the ego behind came first.
 MonitorOutput monitor_def2_2a_ego_brake(const MonitorContext& ctx) {
   const Scenario& s = ctx.scenario;
   const auto& steps = ctx.trace.steps;
@@ -134,7 +170,8 @@ MonitorOutput monitor_def2_2a_ego_brake(const MonitorContext& ctx) {
     if (x.request->coop_case != CoopCase::kEgoBehind || steps.empty()) continue;
     const std::size_t first = step_at(ctx.trace, x.request_time_s);
     const double v0 = speed_of(steps[first].ego);
-    for (std::size_t i = first; i < steps.size() && steps[i].time_s <= x.request_time_s + s.params.planner.comm_threshold_s; ++i) {
+    const double end = def2_2a_window_end_s(ctx, x) + kTieS;
+    for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end; ++i) {
       const double floor_v = v0 - b_min * (steps[i].time_s - x.request_time_s);
       const double v = speed_of(steps[i].ego);
       if (acc.record(i, steps[i].time_s, v - floor_v + ctx.params.speed_tolerance_mps, kEgoId, floor_v, v)) {
@@ -168,7 +205,9 @@ MonitorOutput monitor_def2_3_fallback(const MonitorContext& ctx) {
     }
     const double accepted = acceptance_time(ctx.trace, d.coop_partner_id, d.time_s);
     const bool valid = request_time >= 0.0 && accepted >= request_time;
-    const double m = valid ? request_time + rho_c - accepted : -rho_c;
+    // The window is closed: an acceptance delivered at t_r + rho_c itself is in time.
+    double m = valid ? request_time + rho_c - accepted : -rho_c;
+    if (valid && m < 0.0 && m >= -kTieS) m = 0.0;
     if (acc.record(step_at(ctx.trace, d.time_s), d.time_s, m, kEgoId, request_time + rho_c, accepted)) {
       std::ostringstream os;
       os << "ego started a Def. 2 merge with " << party_name(d.coop_partner_id) << " at t = " << d.time_s << " s "

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -40,6 +41,42 @@ std::pair<double, double> def1_predicted(const VehicleState& at_decision, double
           v0 + accel_mps2 * tau};
 }
 
+// Where a Def. 2 partner (vehicle k) is `dt` after the merge decision `dec` had it followed the
+// profile it accepted: from its speed at the decision linearly to v_o* by t_r + rho_c (ineq. (3)
+// and (4) count on its mean speed over rho_c), then v_o* (capped by the speed limit for 2.2).
+// Returns {x, v}, or nullopt when no accepted request to k precedes the decision.
+std::optional<std::pair<double, double>> accepted_profile(const MonitorContext& ctx, std::size_t k,
+                                                          const Decision& dec, double dt) {
+  const Scenario& s = ctx.scenario;
+  const std::vector<CoopExchange> exchanges = coop_exchanges(ctx.trace);
+  const CoopExchange* accepted = nullptr;
+  for (const CoopExchange& x : exchanges)
+    if (x.request->to_id == party_of(s, k) && x.accept_time_s >= 0.0 && x.accept_time_s <= dec.time_s + 1e-9)
+      accepted = &x;
+  if (accepted == nullptr) return std::nullopt;
+  double v_star = accepted->request->target_speed_mps;
+  if (accepted->request->coop_case == CoopCase::kEgoBehind) v_star = std::min(v_star, s.road.speed_limit_mps);
+  VehicleState at_dec = state_of(ctx.trace.steps[step_at(ctx.trace, dec.time_s)], k);
+  const double ramp_s = accepted->request_time_s + s.params.planner.comm_threshold_s - dec.time_s;
+  if (ramp_s <= 0.0) {
+    at_dec.vx_mps = v_star;
+    at_dec.vy_mps = 0.0;
+    at_dec.yaw_rad = 0.0;
+    return def1_predicted(at_dec, 0.0, 0.0, dt);
+  }
+  return def1_predicted(at_dec, (v_star - speed_of(at_dec)) / ramp_s, ramp_s, dt);
+}
+
+// Whether the ego is the rear vehicle of an RSS-dangerous pair (both distances unsafe) at step i.
+bool ego_brakes_for_danger(const MonitorContext& ctx, std::size_t i) {
+  const std::size_t n = ctx.scenario.vehicles.size() + 1;
+  for (std::size_t j = 1; j < n; ++j) {
+    const PairGeometry& g = ctx.pairs.at(i, PairTable::index(n, 0, j));
+    if (g.rear == 0 && g.lat_unsafe() && g.lon_unsafe()) return true;
+  }
+  return false;
+}
+
 // The main-lane vehicle that broke a declared limit in [from, to] (a follower accelerating
 // beyond a_accel^max, a leader braking beyond a_brake^max), or kNobody.
 int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t leader, double from, double to) {
@@ -54,16 +91,26 @@ int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t l
   return kNobody;
 }
 
-// The responder k if it accepted a Def. 2 request before time_s and is, at time_s, still
-// farther than the yield tolerance from the v_o* it accepted (Def. 2.1B / 2.2B), else kNobody.
+// The responder k if it accepted a Def. 2 request before time_s and was farther than the yield
+// tolerance from the v_o* it accepted at time_s, or at any step from the yield deadline t_r +
+// rho_c + T to time_s (Def. 2.1B / 2.2B: a responder that did not yield in time and slowed only
+// later still explains the margin), else kNobody.
 int reneging_responder(const MonitorContext& ctx, std::size_t k, double time_s) {
   const int id = party_of(ctx.scenario, k);
-  const double v = speed_of(state_of(ctx.trace.steps[step_at(ctx.trace, time_s)], k));
+  const auto& steps = ctx.trace.steps;
+  const double tol = ctx.params.yield_speed_tolerance_mps;
+  const double yield_after_s = ctx.scenario.params.planner.comm_threshold_s + ctx.scenario.params.rss.response_time_s;
   for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
     if (x.request->to_id != id || x.accept_time_s < 0.0 || x.accept_time_s > time_s) continue;
     const double v_star = x.request->target_speed_mps;
-    const double tol = ctx.params.yield_speed_tolerance_mps;
-    if (x.request->coop_case == CoopCase::kEgoAhead ? v > v_star + tol : v < v_star - tol) return id;
+    const auto off = [&](std::size_t i) {
+      const double v = speed_of(state_of(steps[i], k));
+      return x.request->coop_case == CoopCase::kEgoAhead ? v > v_star + tol : v < v_star - tol;
+    };
+    const std::size_t last = step_at(ctx.trace, time_s);
+    if (off(last)) return id;
+    for (std::size_t i = step_at(ctx.trace, x.request_time_s + yield_after_s); i < last; ++i)
+      if (off(i)) return id;
   }
   return kNobody;
 }
@@ -101,26 +148,43 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     const double ve = std::max(speed_of(st.ego), 0.0);
     const Decision* dec = merge_decision_before(ctx.trace, e.time_s);
     const bool def1 = dec != nullptr && dec->mode == DecisionMode::kDef1Merge;
-    const TraceStep& at_dec = steps[step_at(ctx.trace, def1 ? dec->time_s : e.time_s)];
-    const double since_dec_s = def1 ? e.time_s - dec->time_s : 0.0;
+    const bool def2 = dec != nullptr && dec->mode == DecisionMode::kDef2Merge;
+    const TraceStep& at_dec = steps[step_at(ctx.trace, def1 || def2 ? dec->time_s : e.time_s)];
+    const double since_dec_s = def1 || def2 ? e.time_s - dec->time_s : 0.0;
+    // Which gap vehicles are predicted: both in a Def. 1 merge; in a Def. 2 merge the one that is
+    // not the partner as Definition 1 does (the planner holds it to ineq. (1) or (2)), and the
+    // partner on the profile it accepted (ineq. (3)/(4): to v_o* by t_r + rho_c, then v_o*).
+    const auto partner_prediction = [&](std::size_t k) -> std::optional<std::pair<double, double>> {
+      if (!def2 || party_of(s, k) != dec->coop_partner_id) return std::nullopt;
+      return accepted_profile(ctx, k, *dec, since_dec_s);
+    };
     // Margins against the real positions, and against the ones Definition 1 predicted at the
     // decision (the follower accelerating at a_accel^max until rho/2, then holding its speed; the
-    // leader holding its speed); the latter only for a Def. 1 merge.
+    // leader holding its speed).
     const double inf = std::numeric_limits<double>::infinity();
     double m_follower = inf, m_follower_pred = -inf, m_leader = inf, m_leader_pred = -inf;
+    // An ego braking as the rear vehicle of an RSS-dangerous pair at the midpoint (its proper
+    // response to a vehicle ahead) is slower than planned, which grows D_lon to its follower; the
+    // predicted margin takes the planned speed v_e* then, so that response does not count against
+    // the P_c bound (the follower's own response is rss_longitudinal's).
+    const double ve_pred = (def1 || def2) && ego_brakes_for_danger(ctx, i) && std::isfinite(dec->ve_star_mps)
+                               ? std::max(ve, dec->ve_star_mps)
+                               : ve;
     if (follower > 0) {
       const Limits& lf = limits_of(s, follower);
-      const auto margin = [&](double x_f, double v_f) {
+      const auto margin = [&](double x_f, double v_f, double v_e) {
         return st.ego.x_m - x_f -
-               rss_longitudinal_m({std::max(v_f, 0.0), ve, size_of(s, follower).length_m, s.ego.size.length_m, T,
+               rss_longitudinal_m({std::max(v_f, 0.0), v_e, size_of(s, follower).length_m, s.ego.size.length_m, T,
                                    lf.accel_max_mps2, lf.brake_min_mps2, s.ego.limits.brake_max_mps2});
       };
       const VehicleState& f = state_of(st, follower);
-      m_follower = margin(f.x_m, speed_of(f));
-      if (def1) {
+      m_follower = margin(f.x_m, speed_of(f), ve);
+      if (const auto p = partner_prediction(follower)) {
+        m_follower_pred = margin(p->first, p->second, ve_pred);
+      } else if (def1 || def2) {
         const auto [x, v] =
             def1_predicted(state_of(at_dec, follower), lf.accel_max_mps2, 0.5 * dec->merge_duration_s, since_dec_s);
-        m_follower_pred = margin(x, v);
+        m_follower_pred = margin(x, v, ve_pred);
       }
     }
     if (leader > 0) {
@@ -132,7 +196,9 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       };
       const VehicleState& l = state_of(st, leader);
       m_leader = margin(l.x_m, speed_of(l));
-      if (def1) {
+      if (const auto p = partner_prediction(leader)) {
+        m_leader_pred = margin(p->first, p->second);
+      } else if (def1 || def2) {
         const auto [x, v] = def1_predicted(state_of(at_dec, leader), 0.0, 0.0, since_dec_s);
         m_leader_pred = margin(x, v);
       }

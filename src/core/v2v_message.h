@@ -2,6 +2,7 @@
 // and the responder's acceptance or refusal.
 #pragma once
 
+#include <limits>
 #include <string>
 
 namespace mg {
@@ -23,6 +24,9 @@ struct V2vMessage {
   double pc_m = 0.0;            // P_c of the ego's sigmoid (request)
   double d_lon_star_m = 0.0;    // D*_lon: the ego's predicted safe distance at P_c (request)
   double target_speed_mps = 0.0;// v_o* asked of the responder (request)
+  // When the channel delivered it (NaN until then): the receiver knows when a message arrived,
+  // and Def. 2.3's rho_c window is about that instant, not the planner cycle that reads it.
+  double delivered_time_s = std::numeric_limits<double>::quiet_NaN();
   bool operator==(const V2vMessage&) const = default;
 };
 

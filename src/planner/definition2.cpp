@@ -14,6 +14,11 @@ double d_lon_ego_rear_m(const CoopContext& c, const MainLaneVehicle& responder, 
                              c.ego_limits.brake_min_mps2, responder.limits.brake_max_mps2});
 }
 
+// The responder starts when the request arrives: request_latency_s late at v_o instead of v_o*.
+double latency_shift_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps) {
+  return c.request_latency_s * (responder.speed_mps - vo_star_mps);
+}
+
 }  // namespace
 
 double coop_ego_speed_after_mps(const CoopContext& c, CoopCase k) {
@@ -41,21 +46,24 @@ double d_lon_star_m(const CoopContext& c, const MainLaneVehicle& responder, doub
 // RCPP ineq. (3); Def. 2.1 B.
 double ineq3_margin_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps) {
   const double responder_x_m = responder.x_m + 0.5 * (responder.speed_mps + vo_star_mps) * c.comm_threshold_s +
-                               vo_star_mps * 0.5 * c.merge_duration_s;
-  return coop_pc_m(c, CoopCase::kEgoAhead) - d_lon_star_m(c, responder, vo_star_mps) - responder_x_m;
+                               vo_star_mps * 0.5 * c.merge_duration_s + latency_shift_m(c, responder, vo_star_mps);
+  return coop_pc_m(c, CoopCase::kEgoAhead) - d_lon_star_m(c, responder, vo_star_mps) - responder_x_m -
+         c.planning_buffer_m;
 }
 
 double ineq3_start_margin_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps) {
-  const double responder_x_m = responder.x_m + 0.5 * (responder.speed_mps + vo_star_mps) * c.comm_threshold_s;
+  const double responder_x_m = responder.x_m + 0.5 * (responder.speed_mps + vo_star_mps) * c.comm_threshold_s +
+                               latency_shift_m(c, responder, vo_star_mps);
   return c.ego_x_m + coop_ego_travel_m(c, CoopCase::kEgoAhead) - d_lon_star_m(c, responder, vo_star_mps) -
-         responder_x_m;
+         responder_x_m - c.planning_buffer_m;
 }
 
 // RCPP ineq. (4); Def. 2.2 B.
 double ineq4_margin_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps) {
-  const double responder_side_m = responder.x_m + 0.5 * (vo_star_mps + responder.speed_mps) * c.comm_threshold_s -
+  const double responder_side_m = responder.x_m + 0.5 * (vo_star_mps + responder.speed_mps) * c.comm_threshold_s +
+                                  latency_shift_m(c, responder, vo_star_mps) -
                                   d_lon_ego_rear_m(c, responder, vo_star_mps);
-  return responder_side_m - (c.ego_x_m + coop_ego_travel_m(c, CoopCase::kEgoBehind));
+  return responder_side_m - (c.ego_x_m + coop_ego_travel_m(c, CoopCase::kEgoBehind)) - c.planning_buffer_m;
 }
 
 SpeedInterval vo_star_domain(const CoopContext& c, const MainLaneVehicle& responder, CoopCase k) {

@@ -18,6 +18,11 @@ struct CoopContext {
   double merge_duration_s = 0.0;  // rho_m
   double comm_threshold_s = 0.0;  // rho_c
   double speed_limit_mps = 0.0;
+  // The planner's slack over the paper's inequalities (both 0 = ineq. (3)/(4) as written): the
+  // responder starts changing speed only when the request arrives, request_latency_s after T_dec,
+  // which shifts it by latency (v_o - v_o*); and v_o* leaves planning_buffer_m beyond D_lon.
+  double request_latency_s = 0.0;
+  double planning_buffer_m = 0.0;
 };
 
 // The ego's speed once the exchange window rho_c is over: unchanged in Def. 2.1; after braking at

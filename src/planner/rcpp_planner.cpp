@@ -21,6 +21,8 @@ constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far insi
 constexpr double kNearPcBoundPenalty = 1e4;  // ... or pay this (far above any candidate's cost)
 constexpr int kFieldSamples = 16;           // time samples of the potential along a candidate
 constexpr double kRetryAfterRhoC = 3.0;     // a refused/silent partner may be asked again after 3 rho_c
+// Times k dt and t_r + rho_c that are the same instant differ by rounding (~1e-15 s).
+constexpr double kDeadlineTieS = 1e-9;
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
 // After an abort the ego holds the side lane this long before it plans a new merge: re-planning
 // at once, every cycle, against a leader that keeps braking would weave (docs/planner.md).
@@ -40,9 +42,18 @@ Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
 
 CoopContext coop_context(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
-  return CoopContext{w.ego.x_m, ego_speed_mps(w), s.ego.size.length_m, s.ego.limits,
-                     s.params.rss.response_time_s, s.params.planner.merge_duration_s,
-                     s.params.planner.comm_threshold_s, s.road.speed_limit_mps};
+  // v_o* with slack: solved exactly, ineq. (3) left the responder 0.29 m inside the ego's safe
+  // distance at the midpoint once the request's latency delayed it (docs/planner.md).
+  return CoopContext{w.ego.x_m,
+                     ego_speed_mps(w),
+                     s.ego.size.length_m,
+                     s.ego.limits,
+                     s.params.rss.response_time_s,
+                     s.params.planner.merge_duration_s,
+                     s.params.planner.comm_threshold_s,
+                     s.road.speed_limit_mps,
+                     s.ego.v2v.latency_s,
+                     kOccupancyPlanningBufferM};
 }
 
 double observed_accel_mps2(const WorldSnapshot& w, int id) {
@@ -256,7 +267,8 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   const double v_after = coop_ego_speed_after_mps(c, k);
   const double t_c = c.comm_threshold_s + 0.5 * c.merge_duration_s;  // decision to P_c
   const double responder_at_pc_m = o.x_m + 0.5 * (o.speed_mps + vo.vo_star_mps) * c.comm_threshold_s +
-                                   vo.vo_star_mps * 0.5 * c.merge_duration_s;
+                                   vo.vo_star_mps * 0.5 * c.merge_duration_s +
+                                   c.request_latency_s * (o.speed_mps - vo.vo_star_mps);
   double pc_min = c.ego_x_m + coop_ego_travel_m(c, k);
   double pc_max = side_exit_limit_x_m(s);
   Gap gap;
@@ -468,8 +480,10 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
     if (w.ego.x_m >= sig.x_at_fraction_m(1.0 - kSigmoidEndFraction) || progress >= 1.0 - kSigmoidEndFraction) {
       merged_ = true;
       merge_.reset();
-    } else if (merge_->decision.mode == DecisionMode::kDef1Merge && !merge_->committed(w.ego.y_m) &&
-               can_still_halt(w) && (committed_bounds_crossed(w) || !committed_occupancy_clear(w))) {
+    } else if (!merge_->committed(w.ego.y_m) && can_still_halt(w) &&
+               (merge_->decision.mode == DecisionMode::kDef1Merge
+                    ? committed_bounds_crossed(w) || !committed_occupancy_clear(w)
+                    : committed_bounds_crossed(w))) {
       note = "merge aborted (P_c bounds crossed or lane occupied at the predicted positions); ";
       merge_.reset();
       no_merge_before_s_ = w.time_s + kMergeRetryAfterAbortS;
@@ -495,6 +509,10 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
   const double v_at = ramp.speed_at_mps(t);
   for (const ObservedVehicle& ov : w.others) {
     const MainLaneVehicle o = to_lane_vehicle(ov);
+    // A Def. 2 partner is held to its accepted v_o* (ineq. (3)/(4)), not to Definition 1's
+    // predictions; the gap's other vehicle is re-checked as in a Def. 1 merge (DESIGN §6: abort
+    // when the P_c bounds cross, e.g. behind a leader that brakes for slower traffic).
+    if (d.mode == DecisionMode::kDef2Merge && o.id == d.coop_partner_id) continue;
     if (d.gap && o.id == d.gap->follower_id) {
       const double v_f = o.speed_mps + o.limits.accel_max_mps2 * t;
       const double x_f = o.x_m + o.speed_mps * t + 0.5 * o.limits.accel_max_mps2 * t * t;
@@ -620,7 +638,10 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     const int partner = pending_->plan.partner.id;
     for (const V2vMessage& m : w.inbox) {
       if (m.to_id != 0 || m.from_id != partner || m.sent_time_s < pending_->plan.decision.time_s) continue;
-      if (m.type == MessageType::kAccept && w.time_s <= pending_->deadline_s + s.params.sim.planner_cycle_s) {
+      // Def. 2.3: only an acceptance delivered within rho_c counts (the planner reads its inbox
+      // once a cycle, so one delivered after the deadline may still be read before the next).
+      const double delivered_s = std::isnan(m.delivered_time_s) ? w.time_s : m.delivered_time_s;
+      if (m.type == MessageType::kAccept && delivered_s <= pending_->deadline_s + kDeadlineTieS) {
         Decision d = pending_->plan.decision;
         d.mode = DecisionMode::kDef2Merge;
         d.reason = "vehicle " + std::to_string(partner) + " accepted: " + d.reason;
@@ -690,8 +711,23 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     }
   }
   if (pending_) {
-    out.target_speed_mps = std::min(pending_->plan.ego_speed_after_mps, halt_cap);
-    out.accel_limit_mps2 = std::max(brake_limit, accel_limit_toward(s, v_e, out.target_speed_mps));
+    // The request's P_c assumes Def. 2's speed profile over rho_c (2.1: v_e held; 2.2: b_min
+    // down to v_e - b_min rho_c). The comfortable halt profile left a braking ego behind its own
+    // P_c, inside the partner's safe distance at the midpoint (session 7, run 11450), so it
+    // applies only once b_min could no longer stop the ego before the side lane's end from
+    // where the request's profile has it at the deadline.
+    const double at_deadline_x = w.ego.x_m + v_e * std::max(0.0, pending_->deadline_s - w.time_s);
+    const double room_after_m = s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - at_deadline_x -
+                                v_e * p.comm_threshold_s;
+    const bool profile_can_halt = room_after_m > 0.0 && v_e * v_e / (2.0 * s.ego.limits.brake_min_mps2) < room_after_m;
+    out.target_speed_mps =
+        profile_can_halt ? pending_->plan.ego_speed_after_mps : std::min(pending_->plan.ego_speed_after_mps, halt_cap);
+    // Def. 2.2A: while its request is open the ego brakes at most b_min (ineq. (4) counts on
+    // it), so b_max only when b_min could no longer stop it before the side lane's end.
+    const bool ego_behind = pending_->plan.vo.coop_case == CoopCase::kEgoBehind;
+    const double pending_brake =
+        ego_behind && needed <= s.ego.limits.brake_min_mps2 ? s.ego.limits.brake_min_mps2 : brake_limit;
+    out.accel_limit_mps2 = std::max(pending_brake, accel_limit_toward(s, v_e, out.target_speed_mps));
     out.decision = pending_->plan.decision;
     if (out.outbox.empty())
       out.decision.reason = "waiting for vehicle " + std::to_string(pending_->plan.partner.id) + " until t = " +

@@ -61,8 +61,10 @@ std::vector<V2vMessage> V2vChannel::deliver_due(double time_s, std::vector<Trace
   });
   std::vector<V2vMessage> out;
   for (const InFlight& f : due) {
-    events.push_back({time_s, EventKind::kMessageDelivered, f.message.to_id, describe(f.message), f.message});
-    out.push_back(f.message);
+    V2vMessage m = f.message;
+    m.delivered_time_s = time_s;
+    events.push_back({time_s, EventKind::kMessageDelivered, m.to_id, describe(m), m});
+    out.push_back(m);
   }
   return out;
 }

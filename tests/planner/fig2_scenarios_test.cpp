@@ -91,13 +91,15 @@ TEST(Fig2, Situation3EgoAheadWithoutV2vDropsBackAndWithV2vAsksToSlowDown) {
   EXPECT_EQ(halt_or_longer.gap->leader_id, 1);
   EXPECT_GT(halt_or_longer.merge_duration_s, s.params.planner.merge_duration_s);
   // Def. 2.1: P_c = 50 + 20 (1.5 + 2) = 120 m. The binding condition is the start of the lateral
-  // motion (docs/planner.md): 80 - D*(v) >= 25 + 0.75 (20 + v), D*(v) = 0.5v + (v+1)^2/8 - 19.95
-  // <=> v^2 + 12v - 478.6 <= 0 -> v_o* = 16.683 m/s >= 20 - 4*1.5 = 14 (brake limit).
+  // motion (docs/planner.md): 80 - D*(v) >= 25 + 0.75 (20 + v), D*(v) = 0.5v + (v+1)^2/8 - 19.95,
+  // plus the planner's slack: the 1.5 m planning buffer and the request's latency 0.1 s at v_o
+  // instead of v (0.1 (20 - v)) <=> v^2 + 11.2v - 450.6 <= 0 -> v_o* = 16.353 m/s >= 20 - 4*1.5
+  // = 14 (brake limit). (The paper's ineq. (3) alone: v^2 + 12v - 478.6 <= 0, 16.683 m/s.)
   const PlanOutput out = plan_initial(s, "rcpp-coop");
   const Decision& d = out.decision;
   EXPECT_EQ(d.mode, DecisionMode::kDef2Request);
   EXPECT_EQ(d.coop_partner_id, 1);
-  EXPECT_NEAR(d.vo_star_mps, (-12 + std::sqrt(144 + 4 * 478.6)) / 2, 1e-4);
+  EXPECT_NEAR(d.vo_star_mps, (-11.2 + std::sqrt(11.2 * 11.2 + 4 * 450.6)) / 2, 1e-4);
   EXPECT_DOUBLE_EQ(d.pc_m, 120.0);
   const double v = d.vo_star_mps;
   EXPECT_NEAR(d.d_lon_star_m, 4.8 + 0.5 * v + 0.25 + (v + 1) * (v + 1) / 8 - 25, 1e-9);

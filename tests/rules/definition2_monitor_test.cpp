@@ -81,6 +81,63 @@ TEST(Def2Monitor, EgoBrakingHarderThanBminAfterA22RequestIsLiable) {
   EXPECT_NEAR(ok.result.min_margin, 0.2, 1e-9);
 }
 
+// A refusal of the request of t = 0 delivered to the ego at `time_s`.
+TraceEvent refusal_delivered(double time_s) {
+  TraceEvent e = message_event(time_s, MessageType::kRefuse, 1, 0, CoopCase::kEgoBehind, 50, 30, 22);
+  e.kind = EventKind::kMessageDelivered;
+  return e;
+}
+
+TEST(Def2Monitor, EgoBrakingHarderThanBminAfterARefusalOfItsA22RequestHolds) {
+  // Coasting until the refusal is delivered at t = 0.3 s, then braking at 7 > b_min 4 m/s2 (Def.
+  // 2.3 sends the ego back to Definition 1, which may halt it). Until session 7 the window ran to
+  // rho_c = 1 s regardless: v(1 s) = 20 - 7 * 0.7 = 15.1 < floor 16, margin -0.7 m/s. Judged up
+  // to the refusal, the ego kept its speed: the smallest margin is the tolerance, at t = 0.
+  const Scenario s = coop_scenario();
+  Trace t = constant_accel_trace(s, 2.0);
+  for (auto& st : t.steps) st.ego.vx_mps = 20.0 - 7.0 * std::max(0.0, st.time_s - 0.3);
+  t.events.push_back(message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoBehind, 50, 30, 22));
+  const MonitorOutput old_window = test::run(monitor_def2_2a_ego_brake, s, t);
+  ASSERT_FALSE(old_window.result.holds);  // no refusal: the window runs to rho_c
+  EXPECT_NEAR(old_window.result.min_margin, -0.7, 1e-9);
+  t.events.push_back(refusal_delivered(0.3));
+  const MonitorOutput out = test::run(monitor_def2_2a_ego_brake, s, t);
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 0.2, 1e-9);
+}
+
+TEST(Def2Monitor, EgoBrakingHarderThanBminBeforeTheRefusalArrivesIsLiable) {
+  // Braking at 6 m/s2 from t = 0, the refusal delivered at 0.5 s: at 0.5 s v = 17 < floor 18 -
+  // 0.2, margin -0.8 m/s, before the window ends.
+  const Scenario s = coop_scenario();
+  Trace t = constant_accel_trace(s, 2.0, {-6.0, 0.0});
+  t.events.push_back(message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoBehind, 50, 30, 22));
+  t.events.push_back(refusal_delivered(0.5));
+  const MonitorOutput out = test::run(monitor_def2_2a_ego_brake, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -0.8, 1e-9);
+}
+
+TEST(Def2Monitor, EgoBrakingAsAnRssProperResponseAfterA22RequestHolds) {
+  // Vehicle 1 is 20 m ahead of the ego in its lane, both at 20 m/s: a dangerous pair from t = 0
+  // with the ego behind (D_lon is 45 m). The ego brakes at 6 m/s2, its RSS proper response
+  // (at least b_min, at most b_max = 8): rss_longitudinal governs, not Def. 2.2A, which judged it
+  // until session 7 (v = 14 against a floor of 16 at rho_c: margin -1.8 m/s).
+  Scenario s = coop_scenario();
+  s.vehicles[0].x_m = 20.0;
+  Trace t = with_exchange(constant_accel_trace(s, 2.0, {-6.0, 0.0}), CoopCase::kEgoBehind, 22.0);
+  for (auto& st : t.steps) st.others[0].y_m = st.ego.y_m;
+  const MonitorOutput out = test::run(monitor_def2_2a_ego_brake, s, t);
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 0.2, 1e-9);  // only t = 0 is judged
+  // The same braking with vehicle 1 in its own lane (no danger) is the ego's violation.
+  Trace safe = with_exchange(constant_accel_trace(s, 2.0, {-6.0, 0.0}), CoopCase::kEgoBehind, 22.0);
+  const MonitorOutput broke = test::run(monitor_def2_2a_ego_brake, s, safe);
+  ASSERT_FALSE(broke.result.holds);
+  EXPECT_EQ(broke.result.liable_id, kEgoId);
+}
+
 TEST(Def2Monitor, ResponderThatDoesNotSpeedUpForA22RequestIsLiable) {
   // v_o* = 24 m/s; vehicle 1 stays at 20: from 1.5 s the margin is 20 - (24 - 0.5) = -3.5 m/s.
   const Scenario s = coop_scenario();
@@ -118,6 +175,34 @@ TEST(Def2Monitor, CooperativeMergeNeedsAnAcceptanceWithinRhoC) {
   ASSERT_FALSE(broke.result.holds);
   EXPECT_EQ(broke.result.liable_id, kEgoId);
   EXPECT_NEAR(broke.result.min_margin, -1.0, 1e-9);
+}
+
+TEST(Def2Monitor, AnAcceptanceDeliveredAtTheDeadlineItselfIsInTime) {
+  // Run 60204 of the seed-1 campaign: the request at step 455 (t = 9.1 s), rho_c = 1.2 s, the
+  // acceptance delivered at step 515 (t = 10.3 s). As trace times they differ from t_r + rho_c by
+  // rounding, and the margin was -1.8e-15 s (the ego liable); the window is closed, so a tie
+  // holds with margin 0. One step later (10.32 s) is late: margin -0.02 s.
+  const Scenario s = coop_scenario();
+  const auto traced = [&](double accept_time_s) {
+    Trace t = with_coop_merge(constant_accel_trace(s, 11.0), accept_time_s);
+    const double t_r = t.steps[455].time_s;
+    t.events.push_back(message_event(t_r, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 50, 30, 16));
+    TraceEvent delivered = message_event(accept_time_s, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 50, 30, 16);
+    delivered.kind = EventKind::kMessageDelivered;
+    t.events.push_back(delivered);
+    return t;
+  };
+  Scenario tie = s;
+  tie.params.planner.comm_threshold_s = 1.2;
+  const Trace on_time = traced(constant_accel_trace(s, 11.0).steps[515].time_s);
+  ASSERT_LT(on_time.steps[455].time_s + 1.2 - on_time.steps[515].time_s, 0.0);  // the rounding of the finding
+  const MonitorOutput held = test::run(monitor_def2_3_fallback, tie, on_time);
+  EXPECT_TRUE(held.result.holds);
+  EXPECT_EQ(held.result.min_margin, 0.0);
+  const MonitorOutput late = test::run(monitor_def2_3_fallback, tie, traced(constant_accel_trace(s, 11.0).steps[516].time_s));
+  ASSERT_FALSE(late.result.holds);
+  EXPECT_EQ(late.result.liable_id, kEgoId);
+  EXPECT_NEAR(late.result.min_margin, -0.02, 1e-9);
 }
 
 }  // namespace

@@ -103,6 +103,172 @@ TEST(SigmoidBoundsMonitor, LeaderAtItsPredictedSpeedButTooCloseBlamesTheEgo) {
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
 }
 
+// A Def. 2 merge decided at t = 0 with partner `partner` (its acceptance in hand).
+Trace with_def2_decision(Trace t, int partner) {
+  Decision d;
+  d.mode = DecisionMode::kDef2Merge;
+  d.coop_partner_id = partner;
+  d.pc_min_m = 0.0;
+  d.pc_m = 20.0;
+  d.pc_max_m = 40.0;
+  d.merge_duration_s = 2.0;
+  t.decisions.push_back(d);
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, NonPartnerLeaderThatSlowedWithinItsLimitsInADef2MergeLeavesThePairToTheRssRules) {
+  // The leader of the previous test, in a Def. 2.1 merge whose partner is vehicle 2, 60 m
+  // behind (20 m/s, 14.825 m clear). The planner held the leader to ineq. (2) as Definition 1
+  // does: predicted at 20 m/s it is 4.825 m clear. (Until session 7 a Def. 2 merge was judged at
+  // the real positions only: -3.6 m, the ego liable; campaign run 30286 of seed 1.)
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 50.0, 20.0), vehicle(2, -60.0, 20.0)};
+  const Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0, 0.0})), 2);
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 4.825, 1e-6);
+}
+
+TEST(SigmoidBoundsMonitor, PartnerLeaderIsJudgedAtItsRealPositionInADef2Merge) {
+  // The same braking leader as the Def. 2.2 partner: it is bound by its accepted v_o* (here 20
+  // m/s, from which it is 3 m/s away at the midpoint, beyond the 0.5 m/s tolerance), not by
+  // Definition 1's prediction: judged at its real position, 3.6 m inside, and liable.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 50.0, 20.0)};
+  Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0})), 1);
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoBehind, 20, 45, 20));
+  t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoBehind, 20, 45, 20));
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_LT(out.result.min_margin, -3.0);
+}
+
+TEST(SigmoidBoundsMonitor, NonPartnerLeaderAtItsPredictedSpeedButTooCloseInADef2MergeBlamesTheEgo) {
+  // The non-partner leader holding its speed 40 m ahead: -5.175 m at both positions.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, 40.0, 20.0), vehicle(2, -60.0, 20.0)};
+  const Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0)), 2);
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
+}
+
+// Vehicle 1, 10 m behind the ego (both 20 m/s), accepted at 0.1 s the Def. 2.1 request of t = 0
+// for v_o* = 15 m/s; it must be within 0.5 m/s of it from t_r + rho_c + T = 1.5 s. It slows to
+// 15 m/s at `slows_at_s`. The merge midpoint is at 2 s: the ego 40 m, vehicle 1 about 25 m, inside
+// D_lon(15 behind 20) = 19.6 m by 4.6 m whatever its speed history.
+Trace responder_slowing_at(const Scenario& s, double slows_at_s) {
+  Trace t = constant_accel_trace(s, 3.0);
+  for (auto& st : t.steps) {
+    st.others[0].x_m = -10.0 + 20.0 * std::min(st.time_s, 1.0) + 15.0 * std::max(0.0, st.time_s - 1.0);
+    if (st.time_s >= slows_at_s - 1e-9) st.others[0].vx_mps = 15.0;
+  }
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 20, 15));
+  t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 20, 15));
+  t.events.push_back({2.0, EventKind::kMergeMidpoint, 0, "", std::nullopt});
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, ResponderThatYieldedLateIsLiableEvenAfterItSlowed) {
+  // It held 20 m/s until 1.8 s, past its yield deadline (1.5 s), and is at v_o* by the midpoint.
+  // Until session 7 only its speed at the midpoint counted, and the ego was liable (campaign run
+  // 6360 of seed 1: a reneging partner that braked for a stopped vehicle before the midpoint).
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -10.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.8));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+}
+
+TEST(SigmoidBoundsMonitor, ResponderThatYieldedInTimeLeavesTheEgoLiable) {
+  // The same margin with vehicle 1 at v_o* from 1.2 s, before its deadline: the ego is liable.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -10.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.2));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_LT(out.result.min_margin, -4.0);
+}
+
+// A Def. 2.1 merge decided at 0.2 s with partner vehicle 1 (x0 behind the ego, both 20 m/s), which
+// accepted v_o* = 19.8 m/s and kept 20 m/s: within the 0.5 m/s yield tolerance. Midpoint at 2 s,
+// the ego at 40 m.
+Trace partner_within_tolerance(const Scenario& s) {
+  Trace t = with_def2_decision(constant_accel_trace(s, 3.0), 1);
+  t.decisions.back().time_s = 0.2;
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 44, 19.8));
+  t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 44, 19.8));
+  t.events.push_back({2.0, EventKind::kMergeMidpoint, 0, "", std::nullopt});
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, PartnerWithinItsYieldToleranceIsJudgedOnItsAcceptedProfileToo) {
+  // x0 = -45.075: really 0.1 m inside D_lon(20, 20) = 45.175 m. On its accepted profile (20 ->
+  // 19.8 m/s by t_r + rho_c = 1 s, then 19.8) it would be at -5.355 m with D_lon(19.8, 20) =
+  // 44.03 m: 1.325 m clear. Legal but not as accepted: left to rss_longitudinal. (Until session 7
+  // the ego was liable; campaign run 13765 of seed 1: 22.0 against 21.68 m/s, 0.89 m.)
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -45.075, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 1.325, 0.01);
+}
+
+TEST(SigmoidBoundsMonitor, PartnerTooCloseEvenOnItsAcceptedProfileBlamesTheEgo) {
+  // x0 = -30: -15.175 m really, -13.75 m on the accepted profile: the ego's P_c was wrong.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -30.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -13.75, 0.01);
+}
+
+// The partner (vehicle 1, 50 m behind, on its accepted 20 m/s) of a Def. 2.1 merge decided at
+// 0.2 s with v_e* = 20 m/s; the ego slows to 15 m/s from 1.5 s. At the midpoint (2 s, ego at 40 m)
+// D_lon(20 behind 15) = 56.11 m against 50 m: -6.11 m, 4.825 m at the planned 20 m/s.
+Trace slowed_ego_before_partner(const Scenario& s) {
+  Trace t = partner_within_tolerance(s);
+  t.decisions.back().ve_star_mps = 20.0;
+  for (auto& e : t.events)
+    if (e.message) e.message->target_speed_mps = 20.0;
+  for (auto& st : t.steps)
+    if (st.time_s >= 1.5 - 1e-9) st.ego.vx_mps = 15.0;
+  return t;
+}
+
+TEST(SigmoidBoundsMonitor, EgoSlowedByItsRssResponseIsJudgedAtItsPlannedSpeedBeforeThePartner) {
+  // Vehicle 2, 30 m ahead in the ego's lane, brakes at 6 m/s2 (b_max 8) from 1 s: at the midpoint
+  // it is 27 m ahead at 14 m/s, inside D_lon(15, 14) = 32.3 m: the ego brakes as the rear vehicle
+  // of a dangerous pair. Until session 7 the slower ego was liable toward the partner (-6.11 m;
+  // campaign run 3873 of seed 2); now the planned speed counts: 4.825 m.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -50.0, 20.0), vehicle(2, 30.0, 20.0)};
+  Trace t = slowed_ego_before_partner(s);
+  for (auto& st : t.steps) {
+    const double b = std::max(0.0, st.time_s - 1.0);
+    st.others[1].y_m = st.ego.y_m;
+    st.others[1].x_m = 30.0 + 20.0 * st.time_s - 3.0 * b * b;
+    st.others[1].vx_mps = 20.0 - 6.0 * b;
+    st.others[1].accel_mps2 = st.time_s > 1.0 ? -6.0 : 0.0;
+  }
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 4.825, 0.01);
+}
+
+TEST(SigmoidBoundsMonitor, EgoSlowerThanPlannedWithoutAnRssDangerIsLiableBeforeThePartner) {
+  // The same slowing with nobody ahead: nothing the ego had to answer, so its real speed counts.
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -50.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, slowed_ego_before_partner(s));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -6.11, 0.02);
+}
+
 TEST(SigmoidBoundsMonitor, DecisionPcOutsideItsBoundsIsAViolation) {
   Scenario s = base_scenario();
   Trace t = constant_accel_trace(s, 1.0);

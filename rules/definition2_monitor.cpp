@@ -146,13 +146,9 @@ double def2_2a_window_end_s(const MonitorContext& ctx, const CoopExchange& x) {
       break;
     }
   }
-  const std::size_t n = ctx.scenario.vehicles.size() + 1;
   for (std::size_t i = step_at(ctx.trace, x.request_time_s); i < ctx.trace.steps.size(); ++i) {
     if (ctx.trace.steps[i].time_s > end + kTieS) break;
-    for (std::size_t j = 1; j < n; ++j) {
-      const PairGeometry& g = ctx.pairs.at(i, PairTable::index(n, 0, j));
-      if (g.rear == 0 && g.lat_unsafe() && g.lon_unsafe()) return ctx.trace.steps[i].time_s;
-    }
+    if (ego_rear_in_rss_danger(ctx, i)) return ctx.trace.steps[i].time_s;
   }
   return end;
 }

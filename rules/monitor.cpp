@@ -41,4 +41,12 @@ std::size_t step_at(const Trace& t, double time_s) {
 
 double speed_of(const VehicleState& v) { return v.road_vx_mps(); }
 
+bool ego_rear_in_rss_danger(const MonitorContext& ctx, std::size_t step) {
+  for (std::size_t j = 1; j <= ctx.scenario.vehicles.size(); ++j) {
+    const PairGeometry g = pair_geometry(ctx.scenario, ctx.trace.steps[step], 0, j);
+    if (g.rear == 0 && g.lat_unsafe() && g.lon_unsafe()) return true;
+  }
+  return false;
+}
+
 }  // namespace mg

@@ -91,6 +91,9 @@ int index_of_party(const Scenario& s, int party_id);
 // Index of the trace step nearest to time_s.
 std::size_t step_at(const Trace& t, double time_s);
 double speed_of(const VehicleState& v);  // road-frame longitudinal speed
+// Whether the ego is the rear vehicle of an RSS-dangerous pair (both distances unsafe) at step i:
+// its RSS proper response then governs its speed.
+bool ego_rear_in_rss_danger(const MonitorContext& ctx, std::size_t step);
 
 inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
 

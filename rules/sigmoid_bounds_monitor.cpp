@@ -67,16 +67,6 @@ std::optional<std::pair<double, double>> accepted_profile(const MonitorContext& 
   return def1_predicted(at_dec, (v_star - speed_of(at_dec)) / ramp_s, ramp_s, dt);
 }
 
-// Whether the ego is the rear vehicle of an RSS-dangerous pair (both distances unsafe) at step i.
-bool ego_brakes_for_danger(const MonitorContext& ctx, std::size_t i) {
-  const std::size_t n = ctx.scenario.vehicles.size() + 1;
-  for (std::size_t j = 1; j < n; ++j) {
-    const PairGeometry& g = ctx.pairs.at(i, PairTable::index(n, 0, j));
-    if (g.rear == 0 && g.lat_unsafe() && g.lon_unsafe()) return true;
-  }
-  return false;
-}
-
 // The main-lane vehicle that broke a declared limit in [from, to] (a follower accelerating
 // beyond a_accel^max, a leader braking beyond a_brake^max), or kNobody.
 int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t leader, double from, double to) {
@@ -167,7 +157,7 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     // response to a vehicle ahead) is slower than planned, which grows D_lon to its follower; the
     // predicted margin takes the planned speed v_e* then, so that response does not count against
     // the P_c bound (the follower's own response is rss_longitudinal's).
-    const double ve_pred = (def1 || def2) && ego_brakes_for_danger(ctx, i) && std::isfinite(dec->ve_star_mps)
+    const double ve_pred = (def1 || def2) && ego_rear_in_rss_danger(ctx, i) && std::isfinite(dec->ve_star_mps)
                                ? std::max(ve, dec->ve_star_mps)
                                : ve;
     if (follower > 0) {

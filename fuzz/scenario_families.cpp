@@ -65,7 +65,7 @@ rc::Gen<PartnerDraw> gen_partner_draw(const GenConfig& config, const Shape& shap
       rc::gen::set(&PartnerDraw::speed_delta_mps, gen_real(shape.speed_delta)),
       rc::gen::set(&PartnerDraw::overbrake_start_s, gen_real(range::kOverbrakeStart)),
       rc::gen::set(&PartnerDraw::overbrake_duration_s, gen_real(range::kOverbrakeDuration)),
-      rc::gen::set(&PartnerDraw::link, gen_link(range::kLatency)));
+      rc::gen::set(&PartnerDraw::link, gen_link(range::kCoopLatency)));
 }
 
 // The chosen vehicle is the first (rearmost) of the target lane, at the drawn offset from the
@@ -117,10 +117,10 @@ std::vector<std::pair<std::uint64_t, ScenarioFamily>> family_weights(const GenCo
   // A third uniform; Def. 2.2 applies in fewer of its family's scenarios than Def. 2.1 in its
   // own, hence twice the weight; the follower family keeps Def. 1.1's and the P_c rule's shares
   // (docs/fuzzing.md "Scenario families").
-  return {{2, ScenarioFamily::kUniform},
-          {1, ScenarioFamily::kCoopBehind},
-          {2, ScenarioFamily::kCoopAhead},
-          {1, ScenarioFamily::kFollowerBehind}};
+  return {{3, ScenarioFamily::kUniform},
+          {2, ScenarioFamily::kCoopBehind},
+          {5, ScenarioFamily::kCoopAhead},
+          {2, ScenarioFamily::kFollowerBehind}};
 }
 
 rc::Gen<ScenarioFamily> gen_family(const GenConfig& config) { return gen_choice<ScenarioFamily>(family_weights(config)); }

@@ -70,6 +70,7 @@ inline constexpr RealRange kCoopAheadSpeedDelta{-1.5, 2.5, 0.5, 0.1}; // m/s, a 
 inline constexpr RealRange kCoopBehindOffset{-40.0, -2.0, -20.0, 0.5};// m: partner behind, ego ahead (Def. 2.1)
 inline constexpr RealRange kCoopAheadOffset{-4.0, 12.0, 4.0, 0.5};    // m: partner ahead, ego behind (Def. 2.2)
 inline constexpr RealRange kFollowerOffset{-80.0, -15.0, -40.0, 0.5};  // m: a follower behind the ego (no V2V needed)
+inline constexpr RealRange kCoopLatency{0.0, 0.6, 0.1, 0.01};         // s, the partner's link: an answer later than rho_c is Def. 2.3's fallback, which latency up to 1 s in the uniform family already reaches
 inline constexpr RealRange kCoopLoss{0.0, 0.5, 0.0, 0.05};            // probability, drawn on one link in four
 inline constexpr RealRange kOverbrakeStart{0.0, 6.0, 1.0, 0.5};       // s: the partner's over-braking burst ...
 inline constexpr RealRange kOverbrakeDuration{0.5, 4.0, 1.0, 0.5};    // s: ... and its length

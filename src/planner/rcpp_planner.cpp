@@ -713,7 +713,7 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
   if (pending_) {
     // The request's P_c assumes Def. 2's speed profile over rho_c (2.1: v_e held; 2.2: b_min
     // down to v_e - b_min rho_c). The comfortable halt profile left a braking ego behind its own
-    // P_c, inside the partner's safe distance at the midpoint (session 7, run 11450), so it
+    // P_c, inside the partner's safe distance at the midpoint, so it
     // applies only once b_min could no longer stop the ego before the side lane's end from
     // where the request's profile has it at the deadline.
     const double at_deadline_x = w.ego.x_m + v_e * std::max(0.0, pending_->deadline_s - w.time_s);

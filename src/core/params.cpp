@@ -5,6 +5,34 @@
 namespace mg {
 namespace {
 
+RuleParams read_rules(const ObjectReader& r) {
+  r.only_keys({"merge_duration_s", "comm_threshold_s", "merge_start_lat_speed_mps", "merge_start_offset_m",
+               "accel_tolerance_mps2", "speed_tolerance_mps", "yield_speed_tolerance_mps", "halted_speed_mps",
+               "road_edge_tolerance_m", "lat_speed_hysteresis_mps", "max_lat_speed_sign_changes_per_merge",
+               "sideslip_max_rad", "sideslip_min_speed_mps", "progress_grace_s", "progress_gap_margin_m",
+               "progress_leader_braking_mps2"});
+  RuleParams p;
+  p.merge_duration_s = r.number_or("merge_duration_s", p.merge_duration_s, 0.5, 20.0);
+  p.comm_threshold_s = r.number_or("comm_threshold_s", p.comm_threshold_s, 0.05, 10.0);
+  p.merge_start_lat_speed_mps = r.number_or("merge_start_lat_speed_mps", p.merge_start_lat_speed_mps, 0.01, 2.0);
+  p.merge_start_offset_m = r.number_or("merge_start_offset_m", p.merge_start_offset_m, 0.0, 2.0);
+  p.accel_tolerance_mps2 = r.number_or("accel_tolerance_mps2", p.accel_tolerance_mps2, 0.0, 2.0);
+  p.speed_tolerance_mps = r.number_or("speed_tolerance_mps", p.speed_tolerance_mps, 0.0, 5.0);
+  p.yield_speed_tolerance_mps = r.number_or("yield_speed_tolerance_mps", p.yield_speed_tolerance_mps, 0.0, 5.0);
+  p.halted_speed_mps = r.number_or("halted_speed_mps", p.halted_speed_mps, 0.0, 1.0);
+  p.road_edge_tolerance_m = r.number_or("road_edge_tolerance_m", p.road_edge_tolerance_m, 0.0, 1.0);
+  p.lat_speed_hysteresis_mps = r.number_or("lat_speed_hysteresis_mps", p.lat_speed_hysteresis_mps, 0.0, 2.0);
+  p.max_lat_speed_sign_changes_per_merge = static_cast<int>(
+      r.integer_or("max_lat_speed_sign_changes_per_merge", p.max_lat_speed_sign_changes_per_merge, 0, 100));
+  p.sideslip_max_rad = r.positive_or("sideslip_max_rad", p.sideslip_max_rad, 1.0);
+  p.sideslip_min_speed_mps = r.number_or("sideslip_min_speed_mps", p.sideslip_min_speed_mps, 0.0, 100.0);
+  p.progress_grace_s = r.number_or("progress_grace_s", p.progress_grace_s, 0.0, 600.0);
+  p.progress_gap_margin_m = r.number_or("progress_gap_margin_m", p.progress_gap_margin_m, 0.0, 100.0);
+  p.progress_leader_braking_mps2 =
+      r.number_or("progress_leader_braking_mps2", p.progress_leader_braking_mps2, 0.0, 15.0);
+  return p;
+}
+
 RssParams read_rss(const ObjectReader& r) {
   r.only_keys({"response_time_s", "fluctuation_margin_m"});
   RssParams p;
@@ -54,18 +82,51 @@ SimParams read_sim(const ObjectReader& r) {
 
 Params params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
   ObjectReader r(j, source, path);
-  r.only_keys({"rss", "planner", "sim"});
+  r.only_keys({"rss", "planner", "sim", "rules"});
   Params p;
+  if (r.has("rules")) p.rules = read_rules(r.object("rules"));
   if (r.has("rss")) p.rss = read_rss(r.object("rss"));
   if (r.has("planner")) p.planner = read_planner(r.object("planner"));
   if (r.has("sim")) p.sim = read_sim(r.object("sim"));
   return p;
 }
 
+RuleParams rule_params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
+  return read_rules(ObjectReader(j, source, path));
+}
+
+RssParams rss_params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
+  return read_rss(ObjectReader(j, source, path));
+}
+
+nlohmann::json rss_params_to_json(const RssParams& p) {
+  return {{"response_time_s", p.response_time_s}, {"fluctuation_margin_m", p.fluctuation_margin_m}};
+}
+
+nlohmann::json rule_params_to_json(const RuleParams& p) {
+  return {{"merge_duration_s", p.merge_duration_s},
+          {"comm_threshold_s", p.comm_threshold_s},
+          {"merge_start_lat_speed_mps", p.merge_start_lat_speed_mps},
+          {"merge_start_offset_m", p.merge_start_offset_m},
+          {"accel_tolerance_mps2", p.accel_tolerance_mps2},
+          {"speed_tolerance_mps", p.speed_tolerance_mps},
+          {"yield_speed_tolerance_mps", p.yield_speed_tolerance_mps},
+          {"halted_speed_mps", p.halted_speed_mps},
+          {"road_edge_tolerance_m", p.road_edge_tolerance_m},
+          {"lat_speed_hysteresis_mps", p.lat_speed_hysteresis_mps},
+          {"max_lat_speed_sign_changes_per_merge", p.max_lat_speed_sign_changes_per_merge},
+          {"sideslip_max_rad", p.sideslip_max_rad},
+          {"sideslip_min_speed_mps", p.sideslip_min_speed_mps},
+          {"progress_grace_s", p.progress_grace_s},
+          {"progress_gap_margin_m", p.progress_gap_margin_m},
+          {"progress_leader_braking_mps2", p.progress_leader_braking_mps2}};
+}
+
 nlohmann::json params_to_json(const Params& p) {
   const auto& pl = p.planner;
   return {
-      {"rss", {{"response_time_s", p.rss.response_time_s}, {"fluctuation_margin_m", p.rss.fluctuation_margin_m}}},
+      {"rss", rss_params_to_json(p.rss)},
+      {"rules", rule_params_to_json(p.rules)},
       {"planner",
        {{"merge_duration_s", pl.merge_duration_s},
         {"comm_threshold_s", pl.comm_threshold_s},

@@ -38,6 +38,29 @@ struct PlannerParams {
   bool operator==(const PlannerParams&) const = default;
 };
 
+// The rule monitors' own parameters (docs/spec.md §5): the durations Definitions 1 and 2 are
+// judged with, how a merge is recognised in the observed motion, and the tolerances. A planner
+// may use other values (PlannerParams) and is still judged by these.
+struct RuleParams {
+  double merge_duration_s = 4.0;        // rho_m of Def. 1, [0.5, 20]
+  double comm_threshold_s = 1.0;        // rho_c of Def. 2, [0.05, 10]
+  double merge_start_lat_speed_mps = 0.1;  // ego moving toward the main lane faster than this ... [0.01, 2]
+  double merge_start_offset_m = 0.05;   // ... and this far from its side-lane centre starts a merge, [0, 2]
+  double accel_tolerance_mps2 = 0.05;   // measured accelerations beyond a declared limit by less are within it, [0, 2]
+  double speed_tolerance_mps = 0.2;     // speed comparisons, [0, 5]
+  double yield_speed_tolerance_mps = 0.5;  // a responder "at v_o*" within this, [0, 5]
+  double halted_speed_mps = 0.05;       // below this a vehicle is at rest, [0, 1]
+  double road_edge_tolerance_m = 0.05;  // road-edge containment, [0, 1]
+  double lat_speed_hysteresis_mps = 0.1;// lateral motion below this has no direction, [0, 2]
+  int max_lat_speed_sign_changes_per_merge = 2;  // smoothness, [0, 100]
+  double sideslip_max_rad = 0.05;       // (0, 1]
+  double sideslip_min_speed_mps = 2.0;  // sideslip judged above this speed, [0, 100]
+  double progress_grace_s = 3.0;        // progress: how long a feasible gap may go unused, [0, 600]
+  double progress_gap_margin_m = 5.0;   // progress: slack a gap must have to count as feasible, [0, 100]
+  double progress_leader_braking_mps2 = 0.5;  // progress: leader braking that excuses waiting, [0, 15]
+  bool operator==(const RuleParams&) const = default;
+};
+
 // Simulation parameters (DESIGN §7).
 struct SimParams {
   double step_s = 0.02;           // fixed integration step, [1e-3, 0.5]
@@ -50,6 +73,7 @@ struct Params {
   RssParams rss;
   PlannerParams planner;
   SimParams sim;
+  RuleParams rules;
   bool operator==(const Params&) const = default;
 };
 
@@ -57,5 +81,10 @@ struct Params {
 // `source` and the JSON path on unknown keys, wrong types or out-of-range values.
 Params params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path);
 nlohmann::json params_to_json(const Params& p);
+// The "rules" object alone (every key optional), for traces and `--params`.
+RuleParams rule_params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path);
+nlohmann::json rule_params_to_json(const RuleParams& p);
+RssParams rss_params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path);
+nlohmann::json rss_params_to_json(const RssParams& p);
 
 }  // namespace mg

@@ -6,7 +6,8 @@ namespace mg {
 namespace {
 
 RuleParams read_rules(const ObjectReader& r) {
-  r.only_keys({"merge_duration_s", "comm_threshold_s", "merge_start_lat_speed_mps", "merge_start_offset_m",
+  r.only_keys({"merge_duration_s", "comm_threshold_s", "merge_start_offset_m", "merge_abort_offset_m",
+               "merge_complete_offset_m", "merge_complete_yaw_rad",
                "accel_tolerance_mps2", "speed_tolerance_mps", "yield_speed_tolerance_mps", "halted_speed_mps",
                "road_edge_tolerance_m", "lat_speed_hysteresis_mps", "max_lat_speed_sign_changes_per_merge",
                "sideslip_max_rad", "sideslip_min_speed_mps", "progress_grace_s", "progress_gap_margin_m",
@@ -14,8 +15,12 @@ RuleParams read_rules(const ObjectReader& r) {
   RuleParams p;
   p.merge_duration_s = r.number_or("merge_duration_s", p.merge_duration_s, 0.5, 20.0);
   p.comm_threshold_s = r.number_or("comm_threshold_s", p.comm_threshold_s, 0.05, 10.0);
-  p.merge_start_lat_speed_mps = r.number_or("merge_start_lat_speed_mps", p.merge_start_lat_speed_mps, 0.01, 2.0);
-  p.merge_start_offset_m = r.number_or("merge_start_offset_m", p.merge_start_offset_m, 0.0, 2.0);
+  p.merge_start_offset_m = r.number_or("merge_start_offset_m", p.merge_start_offset_m, 0.01, 2.0);
+  p.merge_abort_offset_m = r.number_or("merge_abort_offset_m", p.merge_abort_offset_m, 0.0, p.merge_start_offset_m);
+  if (p.merge_abort_offset_m >= p.merge_start_offset_m)
+    r.fail("merge_abort_offset_m", "must be below merge_start_offset_m (the hysteresis)");
+  p.merge_complete_offset_m = r.positive_or("merge_complete_offset_m", p.merge_complete_offset_m, 2.0);
+  p.merge_complete_yaw_rad = r.positive_or("merge_complete_yaw_rad", p.merge_complete_yaw_rad, 0.5);
   p.accel_tolerance_mps2 = r.number_or("accel_tolerance_mps2", p.accel_tolerance_mps2, 0.0, 2.0);
   p.speed_tolerance_mps = r.number_or("speed_tolerance_mps", p.speed_tolerance_mps, 0.0, 5.0);
   p.yield_speed_tolerance_mps = r.number_or("yield_speed_tolerance_mps", p.yield_speed_tolerance_mps, 0.0, 5.0);
@@ -106,8 +111,10 @@ nlohmann::json rss_params_to_json(const RssParams& p) {
 nlohmann::json rule_params_to_json(const RuleParams& p) {
   return {{"merge_duration_s", p.merge_duration_s},
           {"comm_threshold_s", p.comm_threshold_s},
-          {"merge_start_lat_speed_mps", p.merge_start_lat_speed_mps},
           {"merge_start_offset_m", p.merge_start_offset_m},
+          {"merge_abort_offset_m", p.merge_abort_offset_m},
+          {"merge_complete_offset_m", p.merge_complete_offset_m},
+          {"merge_complete_yaw_rad", p.merge_complete_yaw_rad},
           {"accel_tolerance_mps2", p.accel_tolerance_mps2},
           {"speed_tolerance_mps", p.speed_tolerance_mps},
           {"yield_speed_tolerance_mps", p.yield_speed_tolerance_mps},

@@ -44,8 +44,14 @@ struct PlannerParams {
 struct RuleParams {
   double merge_duration_s = 4.0;        // rho_m of Def. 1, [0.5, 20]
   double comm_threshold_s = 1.0;        // rho_c of Def. 2, [0.05, 10]
-  double merge_start_lat_speed_mps = 0.1;  // ego moving toward the main lane faster than this ... [0.01, 2]
-  double merge_start_offset_m = 0.05;   // ... and this far from its side-lane centre starts a merge, [0, 2]
+  // A merge starts when the ego's centre leaves its side-lane centre toward the main lane by more
+  // than merge_start_offset_m; back within merge_abort_offset_m (before the lane line) it has been
+  // aborted; within merge_complete_offset_m of the main-lane centre, heading within
+  // merge_complete_yaw_rad, it is complete (docs/spec.md §4.1).
+  double merge_start_offset_m = 0.1;    // [0.01, 2]
+  double merge_abort_offset_m = 0.05;   // [0, merge_start_offset_m)
+  double merge_complete_offset_m = 0.2; // (0, 2]
+  double merge_complete_yaw_rad = 0.02; // (0, 0.5]
   double accel_tolerance_mps2 = 0.05;   // measured accelerations beyond a declared limit by less are within it, [0, 2]
   double speed_tolerance_mps = 0.2;     // speed comparisons, [0, 5]
   double yield_speed_tolerance_mps = 0.5;  // a responder "at v_o*" within this, [0, 5]

@@ -51,6 +51,7 @@ CaseViolation violation_from(const ObjectReader& r) {
   r.only_keys({"rule", "liable_id", "liable", "time_s", "margin", "unit"});
   CaseViolation v{r.string("rule"), liable_from(r), std::nullopt, r.number("margin", -kAnyReal, kAnyReal),
                   r.string_or("unit", "")};
+  if (!r.has("time_s")) r.fail("time_s", "missing required key (null when the rule held)");
   if (!r.value().at("time_s").is_null()) v.time_s = r.number("time_s", 0.0, kAnyReal);
   return v;
 }
@@ -70,6 +71,7 @@ json verdict_to_json(const CaseVerdict& v) {
 }
 
 std::uint64_t unsigned_from(const ObjectReader& r, std::string_view key) {
+  if (!r.has(key)) r.fail(key, "missing required key");
   const json& v = r.value().at(std::string(key));
   if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<long long>() >= 0))
     r.fail(key, "expected a non-negative integer");

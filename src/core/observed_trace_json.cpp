@@ -107,7 +107,9 @@ ObservedState read_state(const json& row, const std::string& source, const std::
   if (!row.is_array() || row.size() != kColumns.size())
     throw InputError(source, path,
                      "must be an array of 6 numbers [x_m, y_m, yaw_rad, vx_mps, vy_mps, accel_mps2], got " +
-                         (row.is_array() ? std::to_string(row.size()) + " elements" : std::string("a ") + row.type_name()));
+                         (row.is_array()    ? std::to_string(row.size()) + " elements"
+                          : row.is_object() ? std::string("an object")
+                                            : std::string("a ") + row.type_name()));
   std::array<double, kColumns.size()> v{};
   for (std::size_t c = 0; c < kColumns.size(); ++c) {
     const json& x = row[c];

@@ -245,7 +245,7 @@ TEST(ObservedTraceJson, EveryDefectIsRejectedWithItsJsonPath) {
       {"vehicle missing from a step", [](json& j) { j["steps"][1]["states"].erase(2); }, "/steps/1/states: 2 states for 3 declared vehicles (vehicle 3 missing)"},
       {"extra state in a step", [](json& j) { j["steps"][1]["states"].push_back(j["steps"][1]["states"][0]); }, "/steps/1/states: 4 states for 3 declared vehicles (1 extra)"},
       {"short state row", [](json& j) { j["steps"][1]["states"][1].erase(5); }, "/steps/1/states/1: must be an array of 6 numbers [x_m, y_m, yaw_rad, vx_mps, vy_mps, accel_mps2], got 5 elements"},
-      {"state row as object", [](json& j) { j["steps"][1]["states"][1] = json::object(); }, "/steps/1/states/1: must be an array of 6 numbers"},
+      {"state row as object", [](json& j) { j["steps"][1]["states"][1] = json::object(); }, "/steps/1/states/1: must be an array of 6 numbers [x_m, y_m, yaw_rad, vx_mps, vy_mps, accel_mps2], got an object"},
       {"null in a state", [](json& j) { j["steps"][1]["states"][1][2] = nullptr; }, "/steps/1/states/1/2: yaw_rad must be a number, got null"},
       {"NaN in a state", [](json& j) { j["steps"][1]["states"][1][0] = kNaN; }, "/steps/1/states/1/0: x_m must be finite"},
       {"absurd position", [](json& j) { j["steps"][0]["states"][0][1] = 2e6; }, "/steps/0/states/0/1: y_m must be in [-1000000.0, 1000000.0], got 2000000.0"},

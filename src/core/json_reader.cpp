@@ -3,7 +3,9 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
+#include <vector>
 
 namespace mg {
 namespace {
@@ -42,13 +44,59 @@ void check_depth(const std::string& text, const std::string& source) {
   }
 }
 
+// Parser callback that rejects a repeated key in any object. It keeps, per open container, the
+// keys seen (objects) or the element index (arrays), which is also the JSON path of the error.
+class UniqueKeys {
+ public:
+  explicit UniqueKeys(const std::string& source) : source_(source) {}
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, const nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    switch (event) {
+      case E::object_start: frames_.push_back({false, 0, {}, {}}); break;
+      case E::array_start: frames_.push_back({true, 0, {}, {}}); break;
+      case E::key: {
+        Frame& f = frames_.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second) throw InputError(source_, path(), "duplicate key '" + f.key + "'");
+        break;
+      }
+      case E::object_end:
+      case E::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case E::value: element_done(); break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::size_t index;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  void element_done() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  }
+  std::string path() const {
+    std::string p;
+    for (const auto& f : frames_) p += "/" + (f.array ? std::to_string(f.index) : f.key);
+    return p;
+  }
+  const std::string& source_;
+  std::vector<Frame> frames_;
+};
+
 }  // namespace
 
-nlohmann::json parse_json_text(const std::string& text, const std::string& source) {
+nlohmann::json parse_json_text(const std::string& text, const std::string& source, DuplicateKeys duplicates) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw InputError(source, "", "empty input, expected a JSON object");
   check_depth(text, source);
   try {
+    if (duplicates == DuplicateKeys::kReject) return nlohmann::json::parse(text, UniqueKeys(source));
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     std::string what = e.what();
@@ -62,7 +110,7 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& sourc
   }
 }
 
-nlohmann::json parse_json_stream(std::istream& in, const std::string& source) {
+nlohmann::json parse_json_stream(std::istream& in, const std::string& source, DuplicateKeys duplicates) {
   std::string text;
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
@@ -70,13 +118,13 @@ nlohmann::json parse_json_stream(std::istream& in, const std::string& source) {
     if (text.size() > kMaxInputBytes)
       throw InputError(source, "", "input larger than " + std::to_string(kMaxInputBytes / (1024 * 1024)) + " MiB");
   }
-  return parse_json_text(text, source);
+  return parse_json_text(text, source, duplicates);
 }
 
-nlohmann::json parse_json_file(const std::string& path) {
+nlohmann::json parse_json_file(const std::string& path, DuplicateKeys duplicates) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot open file");
-  return parse_json_stream(in, path);
+  return parse_json_stream(in, path, duplicates);
 }
 
 ObjectReader::ObjectReader(const nlohmann::json& value, std::string source, std::string path)

@@ -13,13 +13,20 @@
 
 namespace mg {
 
+// What to do with an object that holds the same key twice. nlohmann keeps the last one
+// silently; formats that reject it (traces, docs/trace_format.md) ask for kReject, and the error
+// names the JSON path of the repeated key.
+enum class DuplicateKeys { kKeepLast, kReject };
+
 // Parses text as JSON; malformed or empty input raises InputError naming `source`.
 // Nesting deeper than kMaxJsonDepth is rejected (hostile input guard).
-nlohmann::json parse_json_text(const std::string& text, const std::string& source);
+nlohmann::json parse_json_text(const std::string& text, const std::string& source,
+                               DuplicateKeys duplicates = DuplicateKeys::kKeepLast);
 // Reads a whole stream (at most kMaxInputBytes) and parses it; `source` names it in errors.
-nlohmann::json parse_json_stream(std::istream& in, const std::string& source);
+nlohmann::json parse_json_stream(std::istream& in, const std::string& source,
+                                 DuplicateKeys duplicates = DuplicateKeys::kKeepLast);
 // Opens and parses a file (same bounds).
-nlohmann::json parse_json_file(const std::string& path);
+nlohmann::json parse_json_file(const std::string& path, DuplicateKeys duplicates = DuplicateKeys::kKeepLast);
 
 inline constexpr std::size_t kMaxInputBytes = 64u * 1024u * 1024u;
 inline constexpr int kMaxJsonDepth = 64;

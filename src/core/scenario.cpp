@@ -185,12 +185,6 @@ void check_no_initial_overlap(const Scenario& s, const ObjectReader& root) {
   }
 }
 
-nlohmann::json limits_to_json(const Limits& l) {
-  return {{"accel_max_mps2", l.accel_max_mps2},         {"brake_min_mps2", l.brake_min_mps2},
-          {"brake_max_mps2", l.brake_max_mps2},         {"lat_accel_max_mps2", l.lat_accel_max_mps2},
-          {"lat_brake_min_mps2", l.lat_brake_min_mps2}};
-}
-
 nlohmann::json v2v_to_json(const V2v& v) {
   return {{"capable", v.capable}, {"latency_s", v.latency_s}, {"loss_prob", v.loss_prob}};
 }
@@ -278,12 +272,7 @@ nlohmann::json scenario_to_json(const Scenario& s) {
       {"format_version", kScenarioFormatVersion},
       {"name", s.name},
       {"description", s.description},
-      {"road",
-       {{"lane_width_m", s.road.lane_width_m},
-        {"main_lanes", s.road.main_lanes},
-        {"side_lane_start_x_m", s.road.side_lane_start_x_m},
-        {"side_lane_end_x_m", s.road.side_lane_end_x_m},
-        {"speed_limit_mps", s.road.speed_limit_mps}}},
+      {"road", road_to_json(s.road)},
       {"ego",
        {{"x_m", s.ego.x_m},
         {"y_m", s.ego.y_m},
@@ -305,6 +294,38 @@ nlohmann::json scenario_to_json(const Scenario& s) {
       {"vehicles", vehicles},
       {"params", params_to_json(s.params)},
   };
+}
+
+Road road_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
+  return read_road(ObjectReader(j, source, path));
+}
+
+Limits limits_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
+  return read_limits(ObjectReader(j, source, path));
+}
+
+VehicleSize vehicle_size_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
+  const ObjectReader r(j, source, path);
+  r.only_keys({"length_m", "width_m", "height_m"});
+  return read_size(r, VehicleSize{});
+}
+
+nlohmann::json road_to_json(const Road& road) {
+  return {{"lane_width_m", road.lane_width_m},
+          {"main_lanes", road.main_lanes},
+          {"side_lane_start_x_m", road.side_lane_start_x_m},
+          {"side_lane_end_x_m", road.side_lane_end_x_m},
+          {"speed_limit_mps", road.speed_limit_mps}};
+}
+
+nlohmann::json limits_to_json(const Limits& l) {
+  return {{"accel_max_mps2", l.accel_max_mps2},         {"brake_min_mps2", l.brake_min_mps2},
+          {"brake_max_mps2", l.brake_max_mps2},         {"lat_accel_max_mps2", l.lat_accel_max_mps2},
+          {"lat_brake_min_mps2", l.lat_brake_min_mps2}};
+}
+
+nlohmann::json vehicle_size_to_json(const VehicleSize& size) {
+  return {{"length_m", size.length_m}, {"width_m", size.width_m}, {"height_m", size.height_m}};
 }
 
 void write_scenario(const Scenario& s, const std::string& path) {

@@ -148,6 +148,17 @@ nlohmann::json scenario_to_json(const Scenario& s);
 // Writes atomically (temporary file, flush, rename).
 void write_scenario(const Scenario& s, const std::string& path);
 
+// The road, declared limits and vehicle size as the scenario reads them (same keys, defaults and
+// ranges), shared with the trace format (core/observed_trace_json.h) so that both validate a
+// declaration alike. `path` is the object's JSON path, for errors. The size object holds only
+// length_m, width_m, height_m (a scenario's vehicles carry them flat instead).
+Road road_from_json(const nlohmann::json& j, const std::string& source, const std::string& path);
+Limits limits_from_json(const nlohmann::json& j, const std::string& source, const std::string& path);
+VehicleSize vehicle_size_from_json(const nlohmann::json& j, const std::string& source, const std::string& path);
+nlohmann::json road_to_json(const Road& road);
+nlohmann::json limits_to_json(const Limits& l);
+nlohmann::json vehicle_size_to_json(const VehicleSize& size);
+
 std::string to_string(BehaviourType t);
 std::string to_string(NonComplianceType t);
 

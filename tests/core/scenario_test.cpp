@@ -11,6 +11,7 @@
 
 #include "core/input_error.h"
 #include "core/json_reader.h"
+#include "input_error_cases.h"
 
 namespace mg {
 namespace {
@@ -31,12 +32,7 @@ json minimal_scenario() {
 
 // Loads `j` and returns the error message ("" when it loads).
 std::string load_error(const json& j) {
-  try {
-    scenario_from_json(j, "scenario.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test_support::input_error_of([&] { scenario_from_json(j, "scenario.json"); });
 }
 
 TEST(ScenarioLoader, MinimalScenarioGetsDocumentedDefaults) {
@@ -63,12 +59,7 @@ TEST(ScenarioLoader, WriteThenLoadGivesEqualScenario) {
 }
 
 TEST(ScenarioLoader, ErrorsNameFileAndJsonPath) {
-  struct Case {
-    const char* what;
-    std::function<void(json&)> mutate;
-    const char* expected;  // substring of the one-line message
-  };
-  const std::vector<Case> cases = {
+  const std::vector<test_support::MutationCase> cases = {
       {"negative length", [](json& j) { j["vehicles"][1]["length_m"] = -4.0; }, "scenario.json: /vehicles/1/length_m: must be > 0"},
       {"zero width", [](json& j) { j["ego"]["width_m"] = 0; }, "/ego/width_m: must be > 0"},
       {"speed above light", [](json& j) { j["ego"]["speed_mps"] = 3e8; }, "/ego/speed_mps: must be in [0, 100]"},
@@ -87,13 +78,7 @@ TEST(ScenarioLoader, ErrorsNameFileAndJsonPath) {
       {"vehicles not an array", [](json& j) { j["vehicles"] = 3; }, "/vehicles: must be an array"},
       {"negative loss probability", [](json& j) { j["vehicles"][1]["v2v"]["loss_prob"] = -0.1; }, "/vehicles/1/v2v/loss_prob: must be in [0, 1]"},
   };
-  for (const auto& c : cases) {
-    json j = minimal_scenario();
-    c.mutate(j);
-    const std::string message = load_error(j);
-    EXPECT_NE(message.find(c.expected), std::string::npos) << c.what << ": got '" << message << "'";
-    EXPECT_EQ(message.find('\n'), std::string::npos) << c.what << ": message must be one line";
-  }
+  test_support::expect_input_errors(minimal_scenario(), cases, [](const json& j) { scenario_from_json(j, "scenario.json"); });
 }
 
 TEST(ScenarioLoader, RejectsTooManyVehicles) {

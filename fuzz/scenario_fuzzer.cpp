@@ -1,6 +1,7 @@
 // libFuzzer entry point (issue #6 item 6; docs/fuzzing.md "Coverage-guided fuzzing"): bytes ->
 // scenario -> check -> abort on a property failure. Inputs that start with '{' are JSON and go
-// through the strict loaders instead (a scenario, or a corpus case when it has a "scenario" key):
+// through the strict loaders instead (a scenario, a corpus case when it has a "scenario" key, an
+// observable trace when it has a "format" key):
 // rejected input is fine, a crash or sanitizer report is not (issue #7 item 4).
 // Environment: MG_FUZZ_PLANNER (default rcpp); MG_FUZZ_CASE_DIR: write each failure there as a
 // corpus case (found_by "libFuzzer", not shrunk) before aborting; MG_FUZZ_LOADERS_ONLY=1: every
@@ -12,6 +13,7 @@
 
 #include "core/input_error.h"
 #include "core/json_reader.h"
+#include "core/observed_trace_json.h"
 #include "fuzz/byte_scenario.h"
 #include "fuzz/corpus_case.h"
 #include "fuzz/properties.h"
@@ -38,6 +40,7 @@ void load_json(const std::uint8_t* data, std::size_t size) {
   try {
     const nlohmann::json j = mg::parse_json_text(std::string(reinterpret_cast<const char*>(data), size), "fuzz input");
     if (j.is_object() && j.contains("scenario")) mg::fuzz::case_from_json(j, "fuzz input");
+    else if (j.is_object() && j.contains("format")) mg::observed_trace_from_json(j, "fuzz input");
     else mg::scenario_from_json(j, "fuzz input");
   } catch (const mg::InputError&) {
   }

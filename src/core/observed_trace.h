@@ -1,7 +1,8 @@
-// The observable trace (docs/spec.md §2, issue #15): what anyone watching the road and the V2V
-// channel could record of a merge, and nothing a planner says about itself. The rule monitors
-// and the liability engine read only this, the declarations in it and the rule parameters.
-// Written by the simulator, loaded from JSON (`mergeguard check-trace`, docs/trace_format.md).
+// The observable trace (issue #15): what anyone watching the road and the V2V channel could
+// record of a merge, and nothing a planner says about itself: the input of the independent
+// oracle, whose rule monitors read only this, its declarations and the rule parameters. In this
+// release the format and its strict loader and writer exist (docs/trace_format.md); the monitors
+// that judge it, `check --save-trace` and `check-trace` are on the `oracle` branch.
 #pragma once
 
 #include <cstddef>
@@ -70,7 +71,7 @@ struct ObservedTrace {
   std::vector<ObservedStep> steps;       // strictly increasing times
   std::vector<ChannelEvent> channel;     // non-decreasing times
   // What the planner said about itself (decisions, reasons; free-form for outside planners).
-  // Reports show it beside the verdict; no rule reads it (docs/spec.md §2.3). Null when absent.
+  // Reports show it beside the verdict; no rule reads it. Null when absent.
   nlohmann::json planner_annotations;
   bool operator==(const ObservedTrace&) const = default;
 

@@ -38,16 +38,17 @@ struct PlannerParams {
   bool operator==(const PlannerParams&) const = default;
 };
 
-// The rule monitors' own parameters (docs/spec.md §5): the durations Definitions 1 and 2 are
-// judged with, how a merge is recognised in the observed motion, and the tolerances. A planner
-// may use other values (PlannerParams) and is still judged by these.
+// The rule monitors' own parameters (issue #15): the durations Definitions 1 and 2 are judged
+// with, how a merge is recognised in the observed motion, and the tolerances. A planner may use
+// other values (PlannerParams) and is still judged by these. In this release they are validated
+// and kept (docs/scenario_format.md); the oracle that reads them is on the `oracle` branch.
 struct RuleParams {
   double merge_duration_s = 4.0;        // rho_m of Def. 1, [0.5, 20]
   double comm_threshold_s = 1.0;        // rho_c of Def. 2, [0.05, 10]
   // A merge starts when the ego's centre leaves its side-lane centre toward the main lane by more
   // than merge_start_offset_m; back within merge_abort_offset_m (before the lane line) it has been
   // aborted; within merge_complete_offset_m of the main-lane centre, heading within
-  // merge_complete_yaw_rad, it is complete (docs/spec.md §4.1).
+  // merge_complete_yaw_rad, it is complete (the simulator's merge events use the same values).
   double merge_start_offset_m = 0.1;    // [0.01, 2]
   double merge_abort_offset_m = 0.05;   // [0, merge_start_offset_m)
   double merge_complete_offset_m = 0.2; // (0, 2]

@@ -6,6 +6,7 @@
 #include <exception>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -31,6 +32,7 @@ class Campaign {
     if (opt_.time_s) deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(*opt_.time_s));
     if (opt_.runs) shard_runs_ = runs_in_shard(*opt_.runs, opt_.shard_index, opt_.shard_count);
     if (!opt_.corpus_dir.empty()) known_ = corpus_signatures(opt_.corpus_dir);
+    if (opt_.search == SearchMode::kGuided) history_ = std::make_unique<PoolHistory>(opt_.guided);
   }
 
   CampaignResult run() {
@@ -47,7 +49,8 @@ class Campaign {
  private:
   bool externally_stopped() const { return opt_.stop != nullptr && opt_.stop->load(); }
   bool should_stop() const {
-    return abort_.load() || externally_stopped() || (deadline_ && Clock::now() >= *deadline_);
+    return abort_.load() || externally_stopped() || (opt_.stop_on_failure && failing_.load() > 0) ||
+           (deadline_ && Clock::now() >= *deadline_);
   }
 
   void work(WorkerStats& stats) {
@@ -56,19 +59,65 @@ class Campaign {
       while (!should_stop()) {
         const std::uint64_t j = next_.fetch_add(1);
         if (shard_runs_ && j >= *shard_runs_) break;
-        run_one(check, static_cast<std::uint64_t>(opt_.shard_index) + static_cast<std::uint64_t>(opt_.shard_count) * j, stats);
+        run_one(check, static_cast<std::uint64_t>(opt_.shard_index) + static_cast<std::uint64_t>(opt_.shard_count) * j, j, stats);
       }
     } catch (...) {
-      std::lock_guard lock(mutex_);
-      if (!error_) error_ = std::current_exception();
-      abort_ = true;
+      {
+        std::lock_guard lock(mutex_);
+        if (!error_) error_ = std::current_exception();
+        abort_ = true;
+      }
+      if (history_) history_->wake();  // guided runs waiting for this worker's batch give up
     }
     --active_;
   }
 
-  void run_one(const CheckFn& check, std::uint64_t i, WorkerStats& stats) {
-    const rc::Shrinkable<Scenario> generated = generate_scenario(run_seed(opt_.seed, i), opt_.gen);
-    const Scenario scenario = generated.value();
+  // Run i's scenario: the random campaign's, or in a guided run a perturbed elite. The spec is
+  // kept (guided search only) so that the run can become an elite itself.
+  struct Draw {
+    std::shared_ptr<const Candidate> spec;
+    rc::Shrinkable<Scenario> scenario;
+    bool guided = false;
+  };
+
+  // nullopt when a guided run gave up waiting for its pool (the campaign is aborting).
+  std::optional<Draw> draw(std::uint64_t i, std::uint64_t j) const {
+    if (!history_) return Draw{nullptr, generate_scenario(run_seed(opt_.seed, i), opt_.gen), false};
+    std::shared_ptr<const Candidate> candidate;
+    if (is_guided_run(opt_.seed, i, j, opt_.guided)) {
+      const auto pool = history_->pool_for(j, [this] { return abort_.load(); });
+      if (!pool) return std::nullopt;
+      if (!pool->empty()) candidate = perturbed(*pool, i);
+    }
+    const bool guided = candidate != nullptr;
+    if (!guided) {
+      const rc::Shrinkable<ScenarioSpec> spec = generate_spec(run_seed(opt_.seed, i), opt_.gen);
+      candidate = std::make_shared<const Candidate>(Candidate{spec.value(), spec});
+    }
+    return Draw{candidate, rc::shrinkable::map(candidate->shrinkable, assemble_scenario), guided};
+  }
+
+  std::shared_ptr<const Candidate> perturbed(const ElitePool& pool, std::uint64_t i) const {
+    rc::Random random(run_seed(opt_.seed ^ 0x7065727475726221ULL, i));  // "perturb!"
+    const Candidate& parent = *pool.pick(random).candidate;
+    const Perturbation steps = draw_perturbation(parent.spec, random);
+    return std::make_shared<const Candidate>(
+        Candidate{apply_perturbation(parent.spec, steps),
+                  rc::shrinkable::map(parent.shrinkable, [steps](ScenarioSpec s) { return apply_perturbation(std::move(s), steps); })});
+  }
+
+  static Offers offers_of(const RunOutcome& outcome, std::uint64_t i, const std::shared_ptr<const Candidate>& spec) {
+    Offers offers;
+    if (outcome.result)
+      for (const RuleResult& r : outcome.result->rules)
+        if (r.holds && std::isfinite(r.min_margin)) offers.emplace_back(r.rule_id, Elite{r.min_margin, i, spec});
+    return offers;
+  }
+
+  void run_one(const CheckFn& check, std::uint64_t i, std::uint64_t j, WorkerStats& stats) {
+    const std::optional<Draw> drawn = draw(i, j);
+    if (!drawn) return;
+    const Scenario scenario = drawn->scenario.value();
     const bool twice = opt_.determinism_every > 0 && i % static_cast<std::uint64_t>(opt_.determinism_every) == 0;
     const RunOutcome outcome = run_properties(scenario, check, opt_.planner, twice);
     if (outcome.result)
@@ -77,18 +126,32 @@ class Campaign {
         m.unit = r.unit;
         m.add(r.min_margin, r.holds);
       }
+    // Before shrinking, which can take a minute: guided runs of later batches wait for this one.
+    if (history_) history_->complete(j, offers_of(outcome, i, drawn->spec));
     std::map<Signature, PropertyFailure> distinct;  // first failure per signature in this scenario
     for (const PropertyFailure& f : outcome.failures) distinct.try_emplace(signature_of(outcome.planner, f), f);
+    if (!distinct.empty()) note_failing_run(i, drawn->guided);
     for (const auto& [signature, failure] : distinct) {
-      if (claim_for_shrinking(signature, failure, i)) shrink_into_corpus(check, signature, failure, i, generated);
+      if (claim_for_shrinking(signature, failure, i, drawn->guided))
+        shrink_into_corpus(check, signature, failure, i, drawn->scenario);
     }
-    if (!distinct.empty()) ++failing_;
+    if (drawn->guided) ++guided_runs_;
     ++scenarios_;
+  }
+
+  void note_failing_run(std::uint64_t i, bool guided) {
+    {
+      std::lock_guard lock(mutex_);
+      if (!first_failure_run_ || i < *first_failure_run_) first_failure_run_ = i;
+      if (!first_failure_s_) first_failure_s_ = std::chrono::duration<double>(Clock::now() - start_).count();
+    }
+    if (guided) ++guided_failing_;
+    ++failing_;
   }
 
   // Counts the failure; true when run i is now the signature's lowest failing run and its case
   // is to be (re)written.
-  bool claim_for_shrinking(const Signature& signature, const PropertyFailure& failure, std::uint64_t i) {
+  bool claim_for_shrinking(const Signature& signature, const PropertyFailure& failure, std::uint64_t i, bool guided) {
     std::lock_guard lock(mutex_);
     auto [it, inserted] = signatures_.try_emplace(signature);
     SignatureRecord& rec = it->second;
@@ -100,6 +163,7 @@ class Campaign {
       return false;
     }
     rec.first_run = i;
+    rec.first_run_guided = guided;
     rec.example = failure;
     return !opt_.corpus_dir.empty() && !rec.known_before;
   }
@@ -204,9 +268,13 @@ class Campaign {
     r.failing_scenarios = failing_.load();
     r.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
     r.interrupted = externally_stopped();
+    r.guided_runs = guided_runs_.load();
+    r.guided_failing_scenarios = guided_failing_.load();
     {
       std::lock_guard lock(mutex_);
       r.signatures = signatures_;
+      r.first_failure_run = first_failure_run_;
+      r.first_failure_s = first_failure_s_;
     }
     for (const auto& [signature, rec] : r.signatures) {
       r.property_failures += rec.count;
@@ -233,11 +301,14 @@ class Campaign {
   std::optional<Clock::time_point> deadline_;
   std::optional<std::uint64_t> shard_runs_;
   std::set<Signature> known_;
-  std::atomic<std::uint64_t> next_{0}, scenarios_{0}, failing_{0};
+  std::atomic<std::uint64_t> next_{0}, scenarios_{0}, failing_{0}, guided_runs_{0}, guided_failing_{0};
+  std::unique_ptr<PoolHistory> history_;  // guided search only
   std::atomic<int> active_{0};
   std::atomic<bool> abort_{false};
-  std::mutex mutex_;  // guards signatures_, error_ and corpus writes
+  std::mutex mutex_;  // guards signatures_, first_failure_*, error_ and corpus writes
   std::map<Signature, SignatureRecord> signatures_;
+  std::optional<std::uint64_t> first_failure_run_;
+  std::optional<double> first_failure_s_;
   std::exception_ptr error_;
   std::vector<CampaignProgress> timeline_;  // the progress thread's only
 };
@@ -249,6 +320,9 @@ void validate(const CampaignOptions& o) {
   if (!o.runs && !o.time_s) throw std::invalid_argument("a campaign needs --runs or --time");
   if (o.time_s && !(*o.time_s > 0.0 && *o.time_s <= 1e7)) throw std::invalid_argument("--time must be in (0, 1e7] s");
   if (o.determinism_every < 0) throw std::invalid_argument("determinism period must be >= 0");
+  if (!(o.guided.guided_share >= 0.0 && o.guided.guided_share <= 1.0) || o.guided.pool_size < 1 || o.guided.batch_runs < 1 ||
+      o.guided.lag_batches < 1)
+    throw std::invalid_argument("guided search needs a share in [0, 1], a pool and batches of at least one");
   if (o.gen.max_vehicles < 0 || o.gen.max_vehicles > static_cast<int>(kMaxVehicles))
     throw std::invalid_argument("--max-vehicles must be in [0, " + std::to_string(kMaxVehicles) + "]");
 }

@@ -8,6 +8,8 @@
 // run index (a worker that finds a lower one re-shrinks and replaces the file), so with --runs
 // the counts, signatures and cases do not depend on --jobs. Workers share nothing mutable but
 // the counters and the signature table (under a mutex); each has its own check function.
+// With --search guided (fuzz/guided_search.h) a share of the runs perturbs low-margin scenarios
+// of earlier batches; the same guarantees hold (a shard steers by its own runs only).
 #pragma once
 
 #include <array>
@@ -20,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "fuzz/guided_search.h"
 #include "fuzz/properties.h"
 #include "fuzz/scenario_gen.h"
 #include "fuzz/shrink.h"
@@ -67,6 +70,7 @@ struct SignatureRecord {
   Signature signature;
   std::uint64_t count = 0;            // scenarios that failed with it
   std::uint64_t first_run = 0;        // lowest failing run index
+  bool first_run_guided = false;      // ... was a guided run (--search guided)
   bool known_before = false;          // already in the corpus when the campaign started
   PropertyFailure example;            // the failure at first_run (before shrinking)
   std::string case_path;              // written case (new signatures with a corpus only)
@@ -86,6 +90,10 @@ struct CampaignResult {
   std::map<Signature, SignatureRecord> signatures;
   std::map<std::string, std::uint64_t> by_property, by_rule, by_party;  // (scenario, signature) counts
   std::map<std::string, MarginStats> margins;  // per rule, over every checked scenario (rule_coverage.h)
+  std::uint64_t guided_runs = 0;               // runs that perturbed an elite (--search guided)
+  std::uint64_t guided_failing_scenarios = 0;  // ... of which failed a property
+  std::optional<std::uint64_t> first_failure_run;  // lowest failing run index
+  std::optional<double> first_failure_s;           // seconds from the start to the first failing run (timing)
   std::vector<std::string> new_cases;          // paths, sorted
   // Progress samples over the campaign (for the report's findings-over-time plot; timing, like
   // `seconds`): at most kMaxTimelineSamples, thinned by halving as the campaign goes on.
@@ -103,6 +111,9 @@ struct CampaignOptions {
   std::string planner;                 // recorded when the check throws (else the result's planner)
   std::string corpus_dir;              // cases are written here; empty: failures are counted only
   GenConfig gen;
+  SearchMode search = SearchMode::kRandom;
+  GuidedParams guided;
+  bool stop_on_failure = false;        // stop starting runs after the first failing scenario
   int determinism_every = 8;           // run i is checked twice when i % determinism_every == 0
   ShrinkBudget shrink;                 // `stop` is replaced by the campaign's own
   const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT) to stop after the runs in flight

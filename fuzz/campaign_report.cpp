@@ -86,12 +86,14 @@ Table count_table(const std::string& what, const std::map<std::string, std::uint
 
 Table signature_table(const CampaignResult& r, const std::string& dir, const std::map<std::string, std::string>& reports) {
   Table t{{"signature", "scenarios", "first run", "case", "vehicles", "shrink steps", "liability report"}, {}};
+  const bool guided = std::any_of(r.signatures.begin(), r.signatures.end(), [](const auto& kv) { return kv.second.first_run_guided; });
   for (const auto& [sig, rec] : r.signatures) {
     std::string case_cell = rec.known_before ? "already in corpus" : "not written";
     if (!rec.case_path.empty()) case_cell = "[" + std::filesystem::path(rec.case_path).filename().string() + "](" + relative_to(rec.case_path, dir) + ")";
     const auto report = reports.find(rec.case_path);
     const std::string report_cell = report == reports.end() ? "-" : "[report](" + report->second + ")";
-    t.rows.push_back({sig.key(), std::to_string(rec.count), std::to_string(rec.first_run), case_cell,
+    t.rows.push_back({sig.key(), std::to_string(rec.count),
+                      std::to_string(rec.first_run) + (guided && rec.first_run_guided ? " (guided)" : ""), case_cell,
                       rec.case_path.empty() ? "-" : std::to_string(rec.case_vehicles),
                       rec.case_path.empty() ? "-" : std::to_string(rec.shrink_steps) + (rec.shrink_minimal ? "" : " (budget)"),
                       report_cell});
@@ -205,6 +207,16 @@ std::string headline(const CampaignOptions& o, const CampaignResult& r) {
   for (const auto& [sig, rec] : r.signatures) minimal += !rec.case_path.empty() && rec.shrink_minimal ? 1 : 0;
   if (!r.new_cases.empty()) out << " (" << minimal << " of them local minima; the rest were cut by the shrink budget)";
   out << ".";
+  if (o.search == SearchMode::kGuided) {
+    std::size_t found = 0;
+    for (const auto& [sig, rec] : r.signatures) found += rec.first_run_guided ? 1 : 0;
+    const double share = r.scenarios > 0 ? 100.0 * static_cast<double>(r.guided_runs) / static_cast<double>(r.scenarios) : 0.0;
+    out << " Guided search: " << r.guided_runs << " runs (" << fixed(share, 1) << " %) perturbed low-margin scenarios; "
+        << r.guided_failing_scenarios << " of them failed, and " << found << " of the " << r.signatures.size()
+        << " signatures were first seen in a guided run.";
+  }
+  if (r.first_failure_run)
+    out << " First failing run: " << *r.first_failure_run << " (first failure after " << fixed(r.first_failure_s.value_or(0.0), 2) << " s).";
   return out.str();
 }
 
@@ -243,6 +255,7 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
                           {"party", sig.party},
                           {"scenarios", rec.count},
                           {"first_run", rec.first_run},
+                          {"first_run_guided", rec.first_run_guided},
                           {"known_before", rec.known_before},
                           {"case", rec.case_path.empty() ? json(nullptr) : json(rec.case_path)},
                           {"case_vehicles", rec.case_vehicles},
@@ -279,12 +292,18 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
           {"shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count)},
           {"corpus", o.corpus_dir},
           {"families", o.gen.targeted_families ? "mixed" : "uniform"},
+          {"search", to_string(o.search)},
+          {"stop_on_failure", o.stop_on_failure},
           {"interrupted", r.interrupted},
           {"signal", r.interrupted && !r.stop_signal.empty() ? json(r.stop_signal) : json(nullptr)},
           {"scenarios", r.scenarios},
           {"seconds", r.seconds},
           {"scenarios_per_second", r.scenarios_per_second()},
           {"violations", r.failing_scenarios},
+          {"guided_runs", r.guided_runs},
+          {"guided_violations", r.guided_failing_scenarios},
+          {"first_failure_run", r.first_failure_run ? json(*r.first_failure_run) : json(nullptr)},
+          {"first_failure_s", r.first_failure_s ? json(*r.first_failure_s) : json(nullptr)},
           {"property_failures", r.property_failures},
           {"signatures", r.signatures.size()},
           {"new_cases", r.new_cases},

@@ -70,6 +70,7 @@ SignatureRecord signature_of_entry(const json& e, const std::string& source, con
   r.shrink_steps = static_cast<int>(count(e, "shrink_steps", source, path));
   r.shrink_attempts = static_cast<int>(count(e, "shrink_attempts", source, path));
   r.shrink_minimal = field(e, "shrink_minimal", source, path).get<bool>();
+  r.first_run_guided = e.contains("first_run_guided") && field(e, "first_run_guided", source, path).get<bool>();
   r.example.property = r.signature.property;
   r.example.rule = r.signature.rule;
   return r;
@@ -84,6 +85,11 @@ CampaignOptions options_of(const json& j, const std::string& source) {
   o.jobs = static_cast<int>(count(j, "jobs", source, ""));
   o.corpus_dir = field(j, "corpus", source, "").get<std::string>();
   o.gen.targeted_families = field(j, "families", source, "").get<std::string>() == "mixed";
+  if (j.contains("search")) {  // reports of releases before guided search have none: random
+    const auto mode = search_mode_from_string(field(j, "search", source, "").get<std::string>());
+    if (!mode) throw InputError(source, "/search", "expected random or guided");
+    o.search = *mode;
+  }
   const std::string shard = field(j, "shard", source, "").get<std::string>();
   char extra = 0;
   if (std::sscanf(shard.c_str(), "%d/%d%c", &o.shard_index, &o.shard_count, &extra) != 2 || o.shard_count < 1 ||
@@ -104,6 +110,14 @@ Shard read_shard(const std::string& path) {
   r.by_property = counts(j, "failures_by_property", path);
   r.by_rule = counts(j, "failures_by_rule", path);
   r.by_party = counts(j, "failures_by_party", path);
+  if (j.contains("guided_runs")) r.guided_runs = count(j, "guided_runs", path, "");
+  if (j.contains("guided_violations")) r.guided_failing_scenarios = count(j, "guided_violations", path, "");
+  if (j.contains("first_failure_run") && !j.at("first_failure_run").is_null()) {
+    r.first_failure_run = count(j, "first_failure_run", path, "");
+    const json& t = field(j, "first_failure_s", path, "");
+    if (!t.is_number()) throw InputError(path, "/first_failure_s", "expected a number");
+    r.first_failure_s = t.get<double>();
+  }
   const json& list = field(j, "signature_list", path, "");
   for (std::size_t i = 0; i < list.size(); ++i) {
     SignatureRecord rec = signature_of_entry(list[i], path, "/signature_list/" + std::to_string(i));
@@ -121,9 +135,10 @@ void check_same_campaign(const std::vector<Shard>& shards, bool partial) {
   for (const Shard& s : shards) {
     const CampaignOptions& o = s.options;
     if (o.planner != first.planner || o.seed != first.seed || o.runs != first.runs || o.time_s != first.time_s ||
-        o.gen.targeted_families != first.gen.targeted_families || o.shard_count != first.shard_count)
+        o.gen.targeted_families != first.gen.targeted_families || o.search != first.search ||
+        o.shard_count != first.shard_count)
       throw InputError(s.path, "", "not a shard of the campaign of " + shards.front().path +
-                                       " (planner, seed, --runs/--time, --families and N of --shard K/N must match)");
+                                       " (planner, seed, --runs/--time, --families, --search and N of --shard K/N must match)");
     if (!seen.insert(o.shard_index).second) throw InputError(s.path, "/shard", "shard " + std::to_string(o.shard_index) + " given twice");
   }
   if (!partial && static_cast<int>(seen.size()) != first.shard_count)
@@ -137,6 +152,12 @@ void add_into(CampaignResult& into, const CampaignResult& r) {
   into.property_failures += r.property_failures;
   into.seconds = std::max(into.seconds, r.seconds);  // shards run side by side
   into.interrupted = into.interrupted || r.interrupted;
+  into.guided_runs += r.guided_runs;
+  into.guided_failing_scenarios += r.guided_failing_scenarios;
+  if (r.first_failure_run && (!into.first_failure_run || *r.first_failure_run < *into.first_failure_run))
+    into.first_failure_run = r.first_failure_run;
+  if (r.first_failure_s && (!into.first_failure_s || *r.first_failure_s < *into.first_failure_s))  // shards run side by side
+    into.first_failure_s = r.first_failure_s;
   for (const auto& [k, n] : r.by_property) into.by_property[k] += n;
   for (const auto& [k, n] : r.by_rule) into.by_rule[k] += n;
   for (const auto& [k, n] : r.by_party) into.by_party[k] += n;

@@ -129,4 +129,8 @@ rc::Shrinkable<Scenario> generate_scenario(std::uint64_t seed, const GenConfig& 
   return gen_scenario(config)(rc::Random(seed), rc::kNominalSize);
 }
 
+rc::Shrinkable<ScenarioSpec> generate_spec(std::uint64_t seed, const GenConfig& config) {
+  return gen_scenario_spec(config)(rc::Random(seed), rc::kNominalSize);
+}
+
 }  // namespace mg::fuzz

@@ -36,5 +36,8 @@ rc::Gen<Scenario> gen_scenario(const GenConfig& config);
 // threads, shards and everything else.
 std::uint64_t run_seed(std::uint64_t campaign_seed, std::uint64_t run_index);
 rc::Shrinkable<Scenario> generate_scenario(std::uint64_t seed, const GenConfig& config);
+// The ScenarioSpec behind generate_scenario(seed, config): mapping it through assemble_scenario
+// gives the same Shrinkable (guided search perturbs specs, fuzz/guided_search.h).
+rc::Shrinkable<ScenarioSpec> generate_spec(std::uint64_t seed, const GenConfig& config);
 
 }  // namespace mg::fuzz

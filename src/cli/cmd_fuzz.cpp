@@ -1,5 +1,5 @@
 // mergeguard fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P]
-//                 [--corpus DIR] [--report DIR] [--json]: a property-based fuzzing campaign
+//                 [--search random|guided] [--corpus DIR] [--report DIR] [--json]: a property-based fuzzing campaign
 // (DESIGN §9, §10; docs/fuzzing.md). Exit 0 when no scenario failed a property, 1 when one did,
 // 3 when a signal (SIGINT, SIGTERM, SIGHUP) stopped it early (its report and summary still written).
 #include <unistd.h>
@@ -117,6 +117,9 @@ void print_human(const fuzz::CampaignOptions& o, const fuzz::CampaignResult& r) 
   std::cout << r.scenarios << " scenarios in " << r.seconds << " s (" << r.scenarios_per_second() << "/s)"
             << (r.interrupted ? ", interrupted by " + r.stop_signal : "") << ": " << r.failing_scenarios << " failing, "
             << r.signatures.size() << " signatures\n";
+  if (o.search == fuzz::SearchMode::kGuided)
+    std::cout << "  guided search: " << r.guided_runs << " runs perturbed low-margin scenarios, " << r.guided_failing_scenarios
+              << " of them failing\n";
   for (const auto& [sig, rec] : r.signatures)
     std::cout << "  " << sig.key() << ": " << rec.count << " scenarios, first run " << rec.first_run
               << (rec.known_before ? " (already in the corpus)" : "") << (rec.case_path.empty() ? "" : " -> " + rec.case_path)
@@ -150,12 +153,17 @@ int run_fuzz(const std::vector<std::string>& args) {
   std::string families = "mixed";
   app.add_option("--families", families, "mixed (default: uniform plus the targeted families) or uniform")
       ->check(CLI::IsMember({"mixed", "uniform"}));
+  std::string search = "random";
+  app.add_option("--search", search, "random (every run uniform) or guided (a share of the runs perturbs low-margin scenarios)")
+      ->check(CLI::IsMember({"random", "guided"}));
+  app.add_flag("--stop-on-failure", o.stop_on_failure, "stop starting runs after the first failing scenario (its case is still shrunk)");
   app.add_option("--determinism-every", o.determinism_every, "check determinism on every k-th run (0: never; default 8)");
   app.add_option("--shrink-attempts", o.shrink.max_attempts, "candidate checks per shrink (default 600)");
   app.add_option("--shrink-time", o.shrink.max_seconds, "seconds per shrink (default 60)");
   if (!parse_args(app, args)) return kExitOk;
   parse_shard(shard, o);
   o.gen.targeted_families = families == "mixed";
+  o.search = *fuzz::search_mode_from_string(search);
   if (time_opt->count() > 0) o.time_s = time_s;
   else o.runs = runs_opt->count() > 0 ? runs : 1000;
 
@@ -184,7 +192,7 @@ int run_fuzz(const std::vector<std::string>& args) {
 
 const CommandRegistration kRegistration(
     "fuzz",
-    "fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P] [--corpus DIR] [--report DIR] [--json]",
+    "fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P] [--search random|guided] [--corpus DIR] [--report DIR] [--json]",
     run_fuzz);
 
 }  // namespace

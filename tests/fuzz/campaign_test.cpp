@@ -102,6 +102,125 @@ TEST(Campaign, ShardsAreDisjointSlicesThatMakeUpTheCampaign) {
   EXPECT_EQ(seen, whole);  // same scenarios, each exactly once
 }
 
+// Records every checked scenario (as its JSON text) besides running the fake check.
+struct Recorder {
+  std::mutex mutex;
+  std::multiset<std::string> seen;
+  CheckFactory factory() {
+    return [this] {
+      return CheckFn([this](const Scenario& s) {
+        std::lock_guard lock(mutex);
+        seen.insert(scenario_to_json(s).dump());
+        return test::fake_check(s);
+      });
+    };
+  }
+};
+
+CampaignOptions guided(CampaignOptions o) {
+  o.search = SearchMode::kGuided;
+  o.guided.batch_runs = 16;  // guided runs from run 32 on
+  o.determinism_every = 0;
+  return o;
+}
+
+TEST(Campaign, GuidedResultsAndScenariosDoNotDependOnTheNumberOfJobs) {
+  const auto a = scratch_dir("guided1"), b = scratch_dir("guided3");
+  Recorder one_seen, three_seen;
+  const CampaignResult one = run_campaign(guided(options(300, 1, a)), one_seen.factory());
+  const CampaignResult three = run_campaign(guided(options(300, 3, b)), three_seen.factory());
+  EXPECT_EQ(one.scenarios, 300u);
+  EXPECT_GT(one.guided_runs, 100u);
+  EXPECT_EQ(one.guided_runs, three.guided_runs);
+  EXPECT_EQ(one.guided_failing_scenarios, three.guided_failing_scenarios);
+  EXPECT_EQ(one.failing_scenarios, three.failing_scenarios);
+  EXPECT_EQ(one.first_failure_run, three.first_failure_run);
+  EXPECT_EQ(one.margins.at("fake_proximity").sum_micro, three.margins.at("fake_proximity").sum_micro);
+  ASSERT_EQ(one.new_cases.size(), 1u);
+  ASSERT_EQ(three.new_cases.size(), 1u);
+  EXPECT_EQ(case_without_date(one.new_cases[0]), case_without_date(three.new_cases[0]));
+  fs::remove_all(a);
+  fs::remove_all(b);
+  // Without a corpus nothing is shrunk (shrink candidates depend on which worker found a
+  // failure first): the campaign's own runs are then the same scenarios.
+  one_seen.seen.clear();
+  three_seen.seen.clear();
+  run_campaign(guided(options(300, 1, {})), one_seen.factory());
+  run_campaign(guided(options(300, 3, {})), three_seen.factory());
+  EXPECT_EQ(one_seen.seen.size(), 300u);
+  EXPECT_EQ(one_seen.seen, three_seen.seen);
+}
+
+TEST(Campaign, GuidedShardsPartitionTheRunsAndKeepTheRandomCampaignsUniformRuns) {
+  auto o = guided(options(200, 2, {}));
+  o.corpus_dir.clear();
+  std::uint64_t total = 0;
+  std::multiset<std::string> uniform_expected;
+  Recorder shards;
+  for (int k = 0; k < 2; ++k) {
+    o.shard_index = k;
+    o.shard_count = 2;
+    const auto r = run_campaign(o, shards.factory());
+    EXPECT_EQ(r.scenarios, runs_in_shard(200, k, 2));
+    EXPECT_GT(r.guided_runs, 0u);
+    total += r.scenarios;
+    std::uint64_t uniform = 0;
+    for (std::uint64_t j = 0; j < runs_in_shard(200, k, 2); ++j) {
+      const std::uint64_t i = static_cast<std::uint64_t>(k) + 2 * j;
+      if (is_guided_run(o.seed, i, j, o.guided)) continue;
+      uniform_expected.insert(scenario_to_json(generate_scenario(run_seed(o.seed, i), o.gen).value()).dump());
+      ++uniform;
+    }
+    EXPECT_EQ(r.scenarios - r.guided_runs, uniform);
+  }
+  EXPECT_EQ(total, 200u);
+  for (const std::string& s : uniform_expected) EXPECT_GE(shards.seen.count(s), 1u);
+}
+
+TEST(Campaign, StopOnFailureStartsNoRunAfterTheFirstFailingOne) {
+  auto o = options(100000, 1, {});
+  o.corpus_dir.clear();
+  o.stop_on_failure = true;
+  const auto r = run_campaign(o, fake_factory());
+  ASSERT_TRUE(r.first_failure_run.has_value());
+  ASSERT_TRUE(r.first_failure_s.has_value());
+  EXPECT_EQ(r.failing_scenarios, 1u);
+  EXPECT_EQ(r.scenarios, *r.first_failure_run + 1);  // one job: the runs go in order
+}
+
+// A planted failure in a small window of two scalars, with a margin that measures the distance
+// to it (in window half-widths): ego speed 17.3 +- 0.3 m/s and ego X 30 +- 3 m. About one uniform
+// scenario in 1,500 falls inside; hill climbing on the margin gets there sooner.
+CheckResult narrow_window_check(const Scenario& s) {
+  CheckResult r = test::fake_check(s);
+  RuleResult& rule = r.rules.front();
+  rule.rule_id = "fake_window";
+  rule.min_margin = std::max(std::abs(s.ego.speed_mps - 17.3) / 0.3, std::abs(s.ego.x_m - 30.0) / 3.0) - 1.0;
+  rule.holds = rule.min_margin >= 0.0;
+  rule.liable_id = rule.holds ? kNobody : kEgoId;
+  r.holds = rule.holds;
+  return r;
+}
+
+TEST(Campaign, GuidedSearchReachesANarrowFailureInFewerRunsThanRandom) {
+  std::vector<std::uint64_t> random_first, guided_first;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    auto o = options(6000, 2, {});
+    o.corpus_dir.clear();
+    o.seed = seed;
+    o.determinism_every = 0;
+    const CheckFactory factory = [] { return CheckFn(narrow_window_check); };
+    const auto random = run_campaign(o, factory);
+    o.search = SearchMode::kGuided;
+    const auto guided = run_campaign(o, factory);
+    random_first.push_back(random.first_failure_run.value_or(6000));
+    guided_first.push_back(guided.first_failure_run.value_or(6000));
+  }
+  std::sort(random_first.begin(), random_first.end());
+  std::sort(guided_first.begin(), guided_first.end());
+  EXPECT_LT(guided_first[2] * 2, random_first[2]) << "medians: guided " << guided_first[2] << ", random " << random_first[2];
+}
+
 TEST(Campaign, AResumedCampaignDoesNotReAddKnownSignatures) {
   const auto dir = scratch_dir("resume");
   const auto first = run_campaign(options(100, 2, dir), fake_factory());

@@ -41,7 +41,7 @@ std::string write_summary(const fs::path& dir, const std::string& name, const Ca
 }
 
 nlohmann::json without_timing(nlohmann::json j) {
-  for (const char* k : {"seconds", "scenarios_per_second", "date", "jobs"}) j.erase(k);
+  for (const char* k : {"seconds", "scenarios_per_second", "first_failure_s", "date", "jobs"}) j.erase(k);
   return j;
 }
 
@@ -57,6 +57,31 @@ TEST(ReportMerge, TheShardsOfACampaignMergeIntoExactlyTheUnshardedSummary) {
   const auto expected = without_timing(nlohmann::json::parse(in));
   EXPECT_EQ(without_timing(campaign_summary_json(m.options, m.result)), expected);
   EXPECT_GT(m.result.failing_scenarios, 0u);  // the planted failure: signatures, counts and margins merged
+  fs::remove_all(dir);
+}
+
+TEST(ReportMerge, GuidedShardsSumTheirGuidedRunsAndAShardOfAnotherSearchIsRefused) {
+  const auto dir = scratch_dir("guided");
+  auto guided = [](int shard) {
+    CampaignOptions o = options(shard, 2);
+    o.runs = 400;
+    o.search = SearchMode::kGuided;
+    o.guided.batch_runs = 16;
+    return o;
+  };
+  const std::string s0 = write_summary(dir, "g0.json", guided(0));
+  const std::string s1 = write_summary(dir, "g1.json", guided(1));
+  const MergedReport m = merge_reports({s0, s1}, false);
+  const CampaignResult r0 = merge_reports({s0}, true).result, r1 = merge_reports({s1}, true).result;
+  EXPECT_GT(r0.guided_runs, 0u);
+  EXPECT_EQ(m.result.guided_runs, r0.guided_runs + r1.guided_runs);
+  EXPECT_EQ(m.result.guided_failing_scenarios, r0.guided_failing_scenarios + r1.guided_failing_scenarios);
+  EXPECT_EQ(m.options.search, SearchMode::kGuided);
+  EXPECT_EQ(m.result.first_failure_run, std::min(r0.first_failure_run, r1.first_failure_run));
+  CampaignOptions random_shard = guided(1);
+  random_shard.search = SearchMode::kRandom;
+  const std::string r = write_summary(dir, "r1.json", random_shard);
+  EXPECT_THROW(merge_reports({s0, r}, false), InputError);
   fs::remove_all(dir);
 }
 

@@ -146,6 +146,22 @@ TEST(CliFuzz, SameSeedAndRunsGiveTheSameSummaryWhateverTheJobs) {
   fs::remove_all(b);
 }
 
+TEST(CliFuzz, GuidedSearchGivesTheSameSummaryWhateverTheJobs) {
+  // rcpp, 400 runs: guided runs start at run 128 (two warm-up batches of 64).
+  auto args = [](const std::string& jobs) {
+    return std::vector<std::string>{"fuzz", "--planner", "rcpp", "--runs", "400", "--jobs", jobs, "--seed", "5",
+                                    "--search", "guided", "--corpus", "", "--json"};
+  };
+  const CliRun r1 = run_cli(args("1")), r2 = run_cli(args("2"));
+  ASSERT_TRUE(r1.exit_code == 0 || r1.exit_code == 1) << r1.err;
+  auto one = nlohmann::json::parse(r1.out), two = nlohmann::json::parse(r2.out);
+  EXPECT_EQ(one.at("search"), "guided");
+  EXPECT_GT(one.at("guided_runs").get<int>(), 100);
+  for (auto* j : {&one, &two})
+    for (const char* timing : {"seconds", "scenarios_per_second", "first_failure_s", "date", "jobs"}) j->erase(timing);
+  EXPECT_EQ(one, two);
+}
+
 TEST(CliFuzz, BadUsageExitsTwo) {
   EXPECT_EQ(run_cli({"fuzz", "--shard", "2/2", "--runs", "1"}).exit_code, 2);
   EXPECT_EQ(run_cli({"fuzz", "--planner", "nope", "--runs", "1"}).exit_code, 2);

@@ -205,7 +205,8 @@ std::string headline(const CampaignOptions& o, const CampaignResult& r) {
       << " new corpus cases";
   std::size_t minimal = 0;
   for (const auto& [sig, rec] : r.signatures) minimal += !rec.case_path.empty() && rec.shrink_minimal ? 1 : 0;
-  if (!r.new_cases.empty()) out << " (" << minimal << " of them local minima; the rest were cut by the shrink budget)";
+  if (!r.new_cases.empty())
+    out << " (" << minimal << " of them local minima" << (minimal < r.new_cases.size() ? "; the rest were cut by the shrink budget" : "") << ")";
   out << ".";
   if (o.search == SearchMode::kGuided) {
     std::size_t found = 0;

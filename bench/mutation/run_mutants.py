@@ -240,20 +240,29 @@ def fixed_summary(exe: Path, planner: str, runs: int, logs: Path, tag: str) -> d
     cmd = [str(exe), "fuzz", "--runs", str(runs), "--seed", "1", "--planner", planner, "--corpus", "", "--jobs", "2",
            "--json"]
     t0 = time.monotonic()
-    code, out, err = run(cmd, log_path=logs / f"fixed-{tag}-{planner}.log", timeout=max(600.0, runs * 0.5))
-    r = {"exit": code, "wall_s": round(time.monotonic() - t0, 1)}
-    if code not in (0, 1):
-        r["error"] = "timed out" if code is None else f"exit {code}: {tail(err, 3)}"
-        return r
-    try:
-        doc = json.loads(out)
-    except json.JSONDecodeError as e:
-        r["error"] = f"unreadable JSON summary: {e}"
+    r, doc = fuzz_summary(cmd, logs / f"fixed-{tag}-{planner}.log", max(600.0, runs * 0.5))
+    r["wall_s"] = round(time.monotonic() - t0, 1)
+    if doc is None:
         return r
     r["summary"] = normalise(doc)
     r["violations"] = doc.get("violations")
     r["signatures"] = sorted(s.get("signature", "?") for s in signature_records(doc))
     return r
+
+
+def fuzz_summary(cmd: list[str], log_path: Path, timeout: float) -> tuple[dict, dict | None]:
+    """Runs a `mergeguard fuzz ... --json`: ({"exit": code} or with an "error"), and its summary
+    (None when it crashed, timed out or printed no JSON)."""
+    code, out, err = run(cmd, log_path=log_path, timeout=timeout)
+    r: dict = {"exit": code}
+    if code not in (0, 1):
+        r["error"] = "timed out" if code is None else f"exit {code}: {tail(err, 3)}"
+        return r, None
+    try:
+        return r, json.loads(out)
+    except json.JSONDecodeError as e:
+        r["error"] = f"unreadable JSON summary: {e}"
+        return r, None
 
 
 def summary_difference(base: dict, mutant: dict) -> list[str]:
@@ -285,17 +294,11 @@ def campaign(exe: Path, planner: str, seed: int, mode: str, time_s: float, corpu
     cmd = [str(exe), "fuzz", "--time", str(time_s), "--seed", str(seed), "--planner", planner, "--jobs", "1",
            "--search", mode, "--stop-on-failure", "--corpus", str(corpus), "--json"]
     # A failure found just before the deadline is still shrunk (up to 60 s + its grace period).
-    code, out, err = run(cmd, log_path=log_path, timeout=time_s + 300.0)
-    r: dict = {"seed": seed, "mode": mode, "exit": code}
-    if code not in (0, 1):
-        r["error"] = "timed out" if code is None else f"exit {code}: {tail(err, 3)}"
+    outcome, doc = fuzz_summary(cmd, log_path, time_s + 300.0)
+    r: dict = {"seed": seed, "mode": mode, **outcome}
+    if doc is None:
         return r
-    try:
-        doc = json.loads(out)
-    except json.JSONDecodeError as e:
-        r["error"] = f"unreadable JSON summary: {e}"
-        return r
-    r["caught"] = code == 1
+    r["caught"] = r["exit"] == 1
     r["scenarios"] = doc.get("scenarios")
     r["seconds"] = doc.get("seconds")
     r["first_failure_s"] = doc.get("first_failure_s")

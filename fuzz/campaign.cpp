@@ -318,6 +318,10 @@ void validate(const CampaignOptions& o) {
   if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
     throw std::invalid_argument("--shard K/N needs 0 <= K < N");
   if (!o.runs && !o.time_s) throw std::invalid_argument("a campaign needs --runs or --time");
+  // A negative --runs wraps around to a huge count: caught here as an absurd value.
+  if (o.runs && (*o.runs < 1 || *o.runs > 1'000'000'000'000ULL)) throw std::invalid_argument("--runs must be in [1, 1e12]");
+  if (o.shrink.max_attempts < 0 || !(o.shrink.max_seconds >= 0.0 && o.shrink.max_seconds <= 1e6))
+    throw std::invalid_argument("--shrink-attempts must be >= 0 and --shrink-time in [0, 1e6] s");
   if (o.time_s && !(*o.time_s > 0.0 && *o.time_s <= 1e7)) throw std::invalid_argument("--time must be in (0, 1e7] s");
   if (o.determinism_every < 0) throw std::invalid_argument("determinism period must be >= 0");
   if (!(o.guided.guided_share >= 0.0 && o.guided.guided_share <= 1.0) || o.guided.pool_size < 1 || o.guided.batch_runs < 1 ||

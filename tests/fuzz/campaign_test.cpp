@@ -366,6 +366,14 @@ TEST(Campaign, NonsenseOptionsAreRejected) {
   o.shard_index = 3;
   o.shard_count = 3;
   EXPECT_THROW(run_campaign(o, fake_factory()), std::invalid_argument);
+  o = options(0, 1, {});
+  EXPECT_THROW(run_campaign(o, fake_factory()), std::invalid_argument);
+  o = options(10, 1, {});
+  o.shrink.max_attempts = -1;
+  EXPECT_THROW(run_campaign(o, fake_factory()), std::invalid_argument);
+  o = options(10, 1, {});
+  o.guided.lag_batches = 0;  // a guided run would wait for its own batch
+  EXPECT_THROW(run_campaign(o, fake_factory()), std::invalid_argument);
 }
 
 // The progress samples behind the report's findings-over-time plot: in time order, never

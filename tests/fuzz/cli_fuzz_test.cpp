@@ -167,6 +167,9 @@ TEST(CliFuzz, BadUsageExitsTwo) {
   EXPECT_EQ(run_cli({"fuzz", "--planner", "nope", "--runs", "1"}).exit_code, 2);
   EXPECT_EQ(run_cli({"fuzz", "--runs", "1", "--time", "1"}).exit_code, 2);
   EXPECT_EQ(run_cli({"fuzz", "--jobs", "0", "--runs", "1"}).exit_code, 2);
+  EXPECT_EQ(run_cli({"fuzz", "--runs", "-5", "--corpus", ""}).exit_code, 2);  // not 2^64 - 5 runs
+  EXPECT_EQ(run_cli({"fuzz", "--runs", "0", "--corpus", ""}).exit_code, 2);
+  EXPECT_EQ(run_cli({"fuzz", "--runs", "1", "--shrink-time", "nan", "--corpus", ""}).exit_code, 2);
   EXPECT_EQ(run_cli({"replay", "/nonexistent/case.json"}).exit_code, 2);
 }
 

@@ -86,14 +86,13 @@ Table count_table(const std::string& what, const std::map<std::string, std::uint
 
 Table signature_table(const CampaignResult& r, const std::string& dir, const std::map<std::string, std::string>& reports) {
   Table t{{"signature", "scenarios", "first run", "case", "vehicles", "shrink steps", "liability report"}, {}};
-  const bool guided = std::any_of(r.signatures.begin(), r.signatures.end(), [](const auto& kv) { return kv.second.first_run_guided; });
   for (const auto& [sig, rec] : r.signatures) {
     std::string case_cell = rec.known_before ? "already in corpus" : "not written";
     if (!rec.case_path.empty()) case_cell = "[" + std::filesystem::path(rec.case_path).filename().string() + "](" + relative_to(rec.case_path, dir) + ")";
     const auto report = reports.find(rec.case_path);
     const std::string report_cell = report == reports.end() ? "-" : "[report](" + report->second + ")";
     t.rows.push_back({sig.key(), std::to_string(rec.count),
-                      std::to_string(rec.first_run) + (guided && rec.first_run_guided ? " (guided)" : ""), case_cell,
+                      std::to_string(rec.first_run) + (rec.first_run_guided ? " (guided)" : ""), case_cell,
                       rec.case_path.empty() ? "-" : std::to_string(rec.case_vehicles),
                       rec.case_path.empty() ? "-" : std::to_string(rec.shrink_steps) + (rec.shrink_minimal ? "" : " (budget)"),
                       report_cell});

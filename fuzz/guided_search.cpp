@@ -63,7 +63,9 @@ const std::array<KnobDef, 26> kKnobs = {{
 constexpr int kFirstVehicleKnob = 12;
 constexpr std::array<double, 3> kStepScales = {0.01, 0.03, 0.1};  // of the knob's range
 
-double uniform01(rc::Random& random) { return static_cast<double>(random.next() >> 11) * 0x1.0p-53; }
+// The top 53 bits of a random word as a double in [0, 1).
+double unit_interval(std::uint64_t word) { return static_cast<double>(word >> 11) * 0x1.0p-53; }
+double uniform01(rc::Random& random) { return unit_interval(random.next()); }
 
 // Box-Muller: one standard normal draw.
 double standard_normal(rc::Random& random) {
@@ -86,7 +88,7 @@ bool is_guided_run(std::uint64_t campaign_seed, std::uint64_t run_index, std::ui
                    const GuidedParams& params) {
   if (shard_run / params.batch_runs < params.lag_batches) return false;
   const std::uint64_t h = run_seed(campaign_seed ^ 0x6775696465645f31ULL, run_index);  // "guided_1"
-  return static_cast<double>(h >> 11) * 0x1.0p-53 < params.guided_share;
+  return unit_interval(h) < params.guided_share;
 }
 
 std::vector<KnobInfo> knobs() {

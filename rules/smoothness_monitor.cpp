@@ -13,15 +13,23 @@ MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
   for (const TraceEvent& e : ctx.trace.events) merges += e.kind == EventKind::kMergeStart && e.vehicle_id == kEgoId;
   // An aborted merge (DESIGN §6: abort when the P_c bounds cross) is a merge attempt of its own:
   // out, back, and out again later is not oscillation. Aborts are merge decisions followed (RSS
-  // overrides aside) by a side-lane decision; with k aborts there were at least k + 1 attempts.
+  // overrides aside) by a side-lane decision, or by a merge decision with another sigmoid: an
+  // abort whose side-lane decisions were all overridden by the RSS proper response shows only
+  // as the new merge. With k aborts there were at least k + 1 attempts.
   int aborts = 0;
-  DecisionMode last = DecisionMode::kKeepLane;
+  const Decision* last = nullptr;
+  const auto is_merge = [](const Decision& d) {
+    return d.mode == DecisionMode::kDef1Merge || d.mode == DecisionMode::kDef2Merge;
+  };
   for (const Decision& d : ctx.trace.decisions) {
     if (d.mode == DecisionMode::kProperResponse) continue;
-    const bool merging = last == DecisionMode::kDef1Merge || last == DecisionMode::kDef2Merge;
-    aborts += merging && (d.mode == DecisionMode::kDef1Halt || d.mode == DecisionMode::kDef2Request ||
-                          d.mode == DecisionMode::kKeepLane);
-    last = d.mode;
+    if (last && is_merge(*last)) {
+      const bool to_side_lane = d.mode == DecisionMode::kDef1Halt || d.mode == DecisionMode::kDef2Request ||
+                                d.mode == DecisionMode::kKeepLane;
+      const bool new_sigmoid = is_merge(d) && (d.pc_m != last->pc_m || d.kappa_per_m != last->kappa_per_m);
+      aborts += to_side_lane || new_sigmoid;
+    }
+    last = &d;
   }
   merges = std::max(merges, aborts + 1);
   const int allowed = ctx.params.max_lat_speed_sign_changes_per_merge * merges;

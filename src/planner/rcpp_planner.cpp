@@ -376,6 +376,15 @@ bool can_still_halt(const WorldSnapshot& w) {
   return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
 }
 
+// Distance a Def. 2 partner covers in t_s on the profile it accepted: from its speed now
+// linearly to v_o* by the yield deadline (to_deadline_s from now), then v_o*. A partner slower to
+// yield than that is predicted farther along (2.1) or behind (2.2): a reneging one is seen early.
+double accepted_profile_distance_m(double v_now_mps, double vo_star_mps, double to_deadline_s, double t_s) {
+  const double ramp_s = std::min(t_s, to_deadline_s);
+  const double v_end_mps = to_deadline_s > 0.0 ? v_now_mps + (vo_star_mps - v_now_mps) * ramp_s / to_deadline_s : vo_star_mps;
+  return 0.5 * (v_now_mps + v_end_mps) * ramp_s + vo_star_mps * (t_s - ramp_s);
+}
+
 double accel_limit_toward(const Scenario& s, double current_mps, double target_mps) {
   return target_mps >= current_mps ? s.ego.limits.accel_max_mps2 : s.ego.limits.brake_min_mps2;
 }
@@ -498,6 +507,7 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
 bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
   const Scenario& s = *w.scenario;
   const Decision& d = merge_->decision;
+  if (!d.gap) return false;
   // The speed the ego will really aim for: v_e*, or less behind a braking leader (follow_merge).
   const SpeedRamp ramp{ego_speed_mps(w), merge_target_speed_mps(w), s.ego.limits.accel_max_mps2,
                        s.ego.limits.brake_min_mps2};
@@ -507,25 +517,37 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
   if (!t_reach) return true;  // the ego would never reach P_c
   const double t = *t_reach;
   const double v_at = ramp.speed_at_mps(t);
+  const bool def2 = d.mode == DecisionMode::kDef2Merge;
   for (const ObservedVehicle& ov : w.others) {
     const MainLaneVehicle o = to_lane_vehicle(ov);
-    // A Def. 2 partner is held to its accepted v_o* (ineq. (3)/(4)), not to Definition 1's
-    // predictions; the gap's other vehicle is re-checked as in a Def. 1 merge (DESIGN §6: abort
-    // when the P_c bounds cross, e.g. behind a leader that brakes for slower traffic).
-    if (d.mode == DecisionMode::kDef2Merge && o.id == d.coop_partner_id) continue;
-    if (d.gap && o.id == d.gap->follower_id) {
-      const double v_f = o.speed_mps + o.limits.accel_max_mps2 * t;
-      const double x_f = o.x_m + o.speed_mps * t + 0.5 * o.limits.accel_max_mps2 * t * t;
-      const double dl = rss_longitudinal_m({v_f, v_at, o.length_m, s.ego.size.length_m, s.params.rss.response_time_s,
+    const bool follower = o.id == d.gap->follower_id, leader = o.id == d.gap->leader_id;
+    if (!follower && !leader) continue;
+    // Where the gap vehicle is predicted when the ego reaches P_c. A Def. 2 partner on the profile
+    // it accepted (ineq. (3)/(4) count on it; an ego slowed behind a braking leader reaches P_c
+    // later, and the partner closes in); the gap's other vehicle as in Definition 1: the
+    // follower accelerating at its a_max, the leader at constant speed (DESIGN §6: abort when
+    // the P_c bounds cross).
+    double x_m = o.x_m + o.speed_mps * t, v_mps = o.speed_mps;
+    if (def2 && o.id == d.coop_partner_id) {
+      // The deadline of the plan's responder model (coop_candidate): rho_c after the request arrives.
+      const double yield_by_s = d.time_s + s.ego.v2v.latency_s + s.params.planner.comm_threshold_s;
+      const double to_deadline_s = std::max(0.0, yield_by_s - w.time_s);
+      x_m = o.x_m + accepted_profile_distance_m(o.speed_mps, d.vo_star_mps, to_deadline_s, t);
+      v_mps = t >= to_deadline_s ? d.vo_star_mps : o.speed_mps + (d.vo_star_mps - o.speed_mps) * t / to_deadline_s;
+    } else if (follower) {
+      v_mps = o.speed_mps + o.limits.accel_max_mps2 * t;
+      x_m = o.x_m + o.speed_mps * t + 0.5 * o.limits.accel_max_mps2 * t * t;
+    }
+    if (follower) {
+      const double dl = rss_longitudinal_m({v_mps, v_at, o.length_m, s.ego.size.length_m, s.params.rss.response_time_s,
                                             o.limits.accel_max_mps2, o.limits.brake_min_mps2,
                                             s.ego.limits.brake_max_mps2});
-      if (x_f + dl > merge_->sigmoid.pc_m) return true;
-    }
-    if (d.gap && o.id == d.gap->leader_id) {
-      const double dl = rss_longitudinal_m({v_at, o.speed_mps, s.ego.size.length_m, o.length_m,
+      if (x_m + dl > merge_->sigmoid.pc_m) return true;
+    } else {
+      const double dl = rss_longitudinal_m({v_at, v_mps, s.ego.size.length_m, o.length_m,
                                             s.params.rss.response_time_s, s.ego.limits.accel_max_mps2,
                                             s.ego.limits.brake_min_mps2, o.limits.brake_max_mps2});
-      if (merge_->sigmoid.pc_m > o.x_m + o.speed_mps * t - dl) return true;
+      if (merge_->sigmoid.pc_m > x_m - dl) return true;
     }
   }
   return false;

@@ -40,6 +40,60 @@ TEST(SmoothnessMonitor, WeavingPathViolates) {
   EXPECT_NEAR(out.result.min_margin, -3.0, 1e-12);
 }
 
+// A merge, an abort and a second merge, with lateral speed out (+), back (-) and out again (+)
+// after a start pulled toward the side lane's centre (-): vy = -0.3, +0.5, -0.5, +0.5 over four
+// 1.5 s phases, three sign changes. `between` are the decisions of the abort.
+Trace merge_abort_merge(const Scenario& s, std::vector<DecisionMode> between) {
+  Trace t = with_lateral_speed(constant_accel_trace(s, 6.0), [](double t) {
+    return t < 1.5 ? -0.3 : t < 3.0 ? 0.5 : t < 4.5 ? -0.5 : 0.5;
+  });
+  Decision first;
+  first.mode = DecisionMode::kDef1Merge;
+  first.pc_m = 100.0;
+  first.kappa_per_m = 0.1;
+  t.decisions = {first, first};
+  for (const DecisionMode m : between) {
+    Decision d = first;  // an RSS override keeps the overridden decision's record, mode aside
+    d.mode = m;
+    t.decisions.push_back(d);
+  }
+  Decision second = first;
+  second.pc_m = 145.0;
+  second.kappa_per_m = 0.11;
+  t.decisions.push_back(second);
+  return t;
+}
+
+TEST(SmoothnessMonitor, AMergeAbortedUnderTheRssOverrideIsAnAttemptOfItsOwn) {
+  // Every decision between the two merges is the RSS proper response (the abort's side-lane
+  // decisions overridden): the second merge's new sigmoid shows the abort. 2 attempts allow 4
+  // changes; margin 4 - 3 = 1.
+  const Scenario s = base_scenario();
+  const MonitorOutput out = test::run(monitor_smoothness_oscillation, s,
+                                      merge_abort_merge(s, {DecisionMode::kProperResponse, DecisionMode::kProperResponse}));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 1.0, 1e-12);
+}
+
+TEST(SmoothnessMonitor, AMergeAbortedInTheOpenIsAnAttemptOfItsOwn) {
+  const Scenario s = base_scenario();
+  const MonitorOutput out =
+      test::run(monitor_smoothness_oscillation, s, merge_abort_merge(s, {DecisionMode::kDef1Halt}));
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_NEAR(out.result.min_margin, 1.0, 1e-12);
+}
+
+TEST(SmoothnessMonitor, ThreeSignChangesInOneMergeViolate) {
+  // The same lateral motion with one merge decision throughout: 1 attempt allows 2; margin -1.
+  const Scenario s = base_scenario();
+  Trace t = merge_abort_merge(s, {});
+  t.decisions.back() = t.decisions.front();
+  const MonitorOutput out = test::run(monitor_smoothness_oscillation, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(out.result.min_margin, -1.0, 1e-12);
+}
+
 TEST(SmoothnessMonitor, SideslipMarginIsBoundMinusAbsoluteSideslip) {
   // vx = 20, vy = 0.5: beta = atan(0.025) = 0.024995; margin 0.05 - 0.024995 = 0.025005 rad.
   // vy = 2: beta = atan(0.1) = 0.099669; margin -0.049669 rad.

@@ -57,15 +57,14 @@ std::optional<FeasibleMerge> def1_gap_feasible(const Scenario& s, const TraceSte
   };
   const double w = s.road.lane_width_m;
   const double exit_after_pc_times_kappa = ln_ratio(side_lane_exit_fraction(s.ego.size.width_m, w));
-  const double rho_base = std::max(s.params.planner.merge_duration_s,
-                                   shortest_comfortable_merge_s(w, s.params.planner.lat_accel_comfort_mps2));
+  const double rho_base = merge_duration_base_s(s.params.planner.merge_duration_s, w, s.params.planner.lat_accel_comfort_mps2);
   const double x0 = step.ego.x_m;
   OccupancyMemo memo;  // only for its hint: the speeds scanned mostly fail at the same instant
   for (const LaneGap& gap : enumerate_gaps(lane)) {
     // Def. 1.2 rests on the leader holding its speed; a leader seen braking offers no Def. 1 gap
     // until it stops braking (it may be braking for slower traffic ahead of it).
     if (gap.leader && accel_mps2(gap.leader->id) < -leader_braking_mps2) continue;
-    for (const double factor : kProgressMergeDurationFactors) {
+    for (const double factor : kMergeDurationFactors) {
       const Def1Context c{x0, std::max(speed_of(step.ego), 0.0), s.ego.size.length_m, s.ego.limits,
                           s.params.rss.response_time_s, factor * rho_base, s.road.speed_limit_mps};
       const auto ve_at = [&](int i) { return c.speed_limit_mps * i / kProgressSpeedSamples; };

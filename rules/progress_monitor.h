@@ -10,9 +10,6 @@
 
 namespace mg {
 
-// Merge durations the rule considers, as multiples of max(rho_m, the shortest comfortable merge):
-// a slow or halted ego needs a longer merge to cover a drivable lane change.
-inline constexpr double kProgressMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
 // v_e* candidates, evenly over [0, speed limit]: the planner's shared grid.
 inline constexpr int kProgressSpeedSamples = kDef1SpeedGridSteps;
 

@@ -404,9 +404,8 @@ double standstill_merge_length_m(const Scenario& s) {
 
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why) {
   const Scenario& s = *w.scenario;
-  const double rho_base_s =
-      std::max(s.params.planner.merge_duration_s,
-               kShortestMergeFactor * shortest_comfortable_merge_s(s.road.lane_width_m, s.params.planner.lat_accel_comfort_mps2));
+  const double rho_base_s = merge_duration_base_s(s.params.planner.merge_duration_s, s.road.lane_width_m,
+                                                  s.params.planner.lat_accel_comfort_mps2);
   for (const double factor : kMergeDurationFactors) {
     if ((factor == 1.0) != (durations == MergeDurations::kRhoM)) continue;
     std::string this_why;
@@ -525,9 +524,12 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
     // Where the gap vehicle is predicted when the ego reaches P_c. A Def. 2 partner on the profile
     // it accepted (ineq. (3)/(4) count on it; an ego slowed behind a braking leader reaches P_c
     // later, and the partner closes in); the gap's other vehicle as in Definition 1: the
-    // follower accelerating at its a_max, the leader at constant speed (DESIGN §6: abort when
-    // the P_c bounds cross).
-    double x_m = o.x_m + o.speed_mps * t, v_mps = o.speed_mps;
+    // follower accelerating at its a_max, the leader at constant speed unless it is seen braking
+    // (leader_track, as the occupancy check predicts it: a leader braking for a stopped vehicle
+    // left a weak-braked ego that merged behind it unable to stop). DESIGN §6: abort when the
+    // P_c bounds cross.
+    const Track ahead = leader_track(o, observed_accel_mps2(w, o.id));
+    double x_m = ahead.x_at(t), v_mps = ahead.v_at(t);
     if (def2 && o.id == d.coop_partner_id) {
       // The deadline of the plan's responder model (coop_candidate): rho_c after the request arrives.
       const double yield_by_s = d.time_s + s.ego.v2v.latency_s + s.params.planner.comm_threshold_s;

@@ -16,14 +16,6 @@
 
 namespace mg {
 
-// Merge durations tried in turn, as multiples of rho_m, until one admits a merge: rho_m itself
-// first; longer ones for slow egos (e.g. merging from standstill after Def. 1.3), whose trackable
-// sigmoid does not fit in rho_m, and for egos that must drop behind a vehicle passing them
-// (docs/planner.md).
-inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
-// No comfortable sigmoid at constant speed fits in less than shortest_comfortable_merge_s; a
-// configured rho_m below it is raised to kShortestMergeFactor times that duration.
-inline constexpr double kShortestMergeFactor = 1.05;
 // A committed merge may be aborted (P_c bounds crossed) only while the ego has covered less than
 // this fraction of its lateral move (from the side lane's centre, or from where it was when the
 // merge was planned if that is nearer the main lane); later it completes, protected by the RSS

@@ -32,6 +32,16 @@ double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_acce
 // lat_accel_mps2 at any constant speed v: the path spans 2 ln(49)/kappa <= v rho and the bound
 // gives kappa <= sqrt(6 sqrt3 a / W)/v, so rho >= 2 ln(49) / sqrt(6 sqrt3 a / W), whatever v.
 double shortest_comfortable_merge_s(double width_m, double lat_accel_mps2);
+// The merge durations the Definition 1 searches try, as multiples of a base duration: rho_m itself
+// first; longer ones for slow egos (e.g. merging from standstill after Def. 1.3), whose trackable
+// sigmoid does not fit in rho_m, and for egos that must drop behind a vehicle passing them
+// (docs/planner.md). The planner and the progress rule share the grid, so the rule never finds a
+// merge at a duration the planner does not try.
+inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
+// No comfortable sigmoid at constant speed fits in less than shortest_comfortable_merge_s; a
+// configured rho_m below it is raised to kShortestMergeFactor times that duration.
+inline constexpr double kShortestMergeFactor = 1.05;
+double merge_duration_base_s(double rho_m_s, double width_m, double lat_accel_mps2);
 
 // Peak lateral acceleration along a sigmoid driven with a speed profile (the ramp starting at
 // ramp_origin_x_m): max of v(x)^2 |y''(x)| over points within +-4/kappa of P_c, y'' = W kappa^2

@@ -87,6 +87,17 @@ void LaneOrder::update(const Scenario& s, const std::vector<VehicleState>& other
   }
 }
 
+bool LaneOrder::any_overlap(const Scenario& s, const std::vector<VehicleState>& others) const {
+  for (const std::vector<std::size_t>& lane : lanes_) {
+    for (std::size_t k = 1; k < lane.size(); ++k) {
+      const std::size_t rear = lane[k - 1], front = lane[k];
+      const double half_lengths_m = 0.5 * (s.vehicles[rear].size.length_m + s.vehicles[front].size.length_m);
+      if (others[front].x_m - others[rear].x_m < half_lengths_m) return true;
+    }
+  }
+  return false;
+}
+
 Leaders LaneOrder::leaders(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
                            const VehicleState& ego) const {
   const int lane_index = s.vehicles[index].lane;

@@ -41,6 +41,11 @@ class LaneOrder {
   // Exactly find_leaders(s, others, index, ego) for the states of the last update().
   Leaders leaders(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
                   const VehicleState& ego) const;
+  // Whether two vehicles of one lane overlap in the last update()'s states (as the scenario loader
+  // judges t = 0: touching is not overlapping).
+  // Neighbours in X order suffice: a vehicle whose centre lies between two overlapping ones
+  // overlaps one of them.
+  bool any_overlap(const Scenario& s, const std::vector<VehicleState>& others) const;
 
  private:
   std::vector<std::vector<std::size_t>> lanes_;  // vehicle indices by (X, index)

@@ -89,6 +89,12 @@ class Run {
       if (k % cycle == 0) run_planner(t);
       trace_.steps.push_back({t, ego_, others_, plan_.decision.mode, plan_.proper_response});
       if (k == n_steps) break;
+      // The simulator models no crash: main-lane vehicles that collided would drive on through
+      // each other, and whatever the ego did in that world would be judged against vehicles that
+      // cannot be where they are. The run ends with the step of the collision, which the
+      // collision rule judges (docs/simulator.md).
+      lane_order_.update(s_, others_);
+      if (lane_order_.any_overlap(s_, others_)) break;
       advance(t, dt);
       detector_.update(static_cast<double>(k + 1) * dt, ego_, trace_.events);
     }
@@ -172,8 +178,7 @@ class Run {
   void advance(double t, double dt) {
     // Every driver decides on the states at t before anyone moves.
     std::vector<double>& accel = accel_scratch_;
-    accel.resize(others_.size());
-    lane_order_.update(s_, others_);
+    accel.resize(others_.size());  // lane_order_ is up to date: execute() updated it at t
     for (std::size_t i = 0; i < others_.size(); ++i) {
       DriverInput in;
       in.time_s = t;

@@ -68,7 +68,7 @@ int run(const std::vector<std::string>& args) {
                 << (m.path_length_m ? std::to_string(*m.path_length_m) + " m" : "n/a") << ", lateral reversals "
                 << m.lateral_reversals << "\n";
     }
-    std::cout << "wrote " << out_dir << " (metrics.json, fig4_paths.svg, fig5_motion.svg, report.md)\n";
+    std::cout << "wrote " << out_dir << " (metrics.json, fig4_paths.svg, fig5_motion.svg, fig_right_of_way.svg, report.md)\n";
   }
   for (const std::string& w : why) std::cerr << "reproduce-paper: " << w << "\n";
   return consistent ? kExitOk : kExitViolation;

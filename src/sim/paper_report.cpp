@@ -10,6 +10,7 @@
 #include "core/fixed_text.h"
 #include "core/atomic_file.h"
 #include "planner/planner.h"
+#include "sim/paper_variant.h"
 #include "sim/simulator.h"
 #include "sim/single_track.h"
 #include "sim/svg_plot.h"
@@ -93,9 +94,12 @@ std::vector<PaperRun> run_paper_planners(const Scenario& s, const RightOfWayFn& 
 }
 
 PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scenario_path, const RightOfWayFn& row) {
-  PaperExperiment e{s, scenario_path, {}, {}};
+  PaperExperiment e{s, scenario_path, {}, {}, {}, {}};
   e.runs = run_paper_planners(s, row);
   if (s.vehicles.empty()) return e;
+  e.variant_scenario = s;
+  e.variant_scenario.vehicles.resize(1);
+  e.variant_runs = run_cruise_variant(e.variant_scenario);
   for (double dv : {-2.0, 0.0, 2.0})
     for (double dx : {-12.0, -6.0, 0.0, 6.0, 12.0}) {
       Scenario variant = s;
@@ -195,7 +199,10 @@ std::string fig4_paths_svg(const PaperExperiment& e) {
   for (std::size_t i = 0; i < e.scenario.vehicles.size(); ++i) {
     std::vector<double> x, y;
     for (const TraceStep& s : base.trace.steps) x.push_back(s.others[i].x_m), y.push_back(s.others[i].y_m);
-    p.series.push_back({"obstacle vehicle " + std::to_string(e.scenario.vehicles[i].id), x, y, "#1f77b4", "", 2.0});
+    // The first main-lane vehicle is the paper's obstacle; any other is traffic (e.g. a lead vehicle).
+    const std::string id = std::to_string(e.scenario.vehicles[i].id);
+    p.series.push_back({i == 0 ? "obstacle vehicle " + id : "main-lane vehicle " + id, x, y,
+                        i == 0 ? "#1f77b4" : "#17becf", i == 0 ? "" : "1 2", 2.0});
   }
   for (const PaperRun& r : e.runs) {
     const Style st = style_of(r.planner);
@@ -265,9 +272,9 @@ std::string right_of_way_svg(const PaperExperiment& e) {
     svg::Plot p;
     p.title = std::string("Right of way: ") + st.label;
     p.x_label = "time t [s]";
-    p.y_label = "holder (1 = ego, 0 = main lane)";
+    p.y_label = "ego holds (1) or not";
     p.width_px = 1100;
-    p.height_px = 170;
+    p.height_px = 190;
     p.y_range = svg::Range{-0.2, 1.2};
     const double t_end = r.trace.steps.empty() ? 0.0 : r.trace.steps.back().time_s;
     p.x_range = svg::Range{0.0, t_end};
@@ -355,6 +362,27 @@ std::string headline_spread_markdown(const PaperExperiment& e) {
     }
     md << " |\n";
   }
+  return md.str();
+}
+
+// The claims on the report-only variant, beside the defaults' verdicts.
+std::string variant_markdown(const PaperExperiment& e) {
+  if (e.variant_runs.empty()) return "";
+  std::ostringstream md;
+  const std::vector<PaperClaim> ours = paper_claims(e.scenario, e.runs);
+  const std::vector<PaperClaim> variant = paper_claims(e.variant_scenario, e.variant_runs);
+  md << "\n## Variant, not the defaults: RCPP keeping its lane at the cruise speed\n\n"
+     << "**Changed planner behaviour, shown only here** (src/sim/paper_variant.h; the fuzzer, `check` and the table "
+        "above use the planners unchanged). After the merge both RCPP variants keep their lane at the ego's initial "
+        "speed (" << fmt(e.variant_scenario.ego.speed_mps, 1) << " m/s) instead of the speed limit ("
+     << fmt(e.variant_scenario.road.speed_limit_mps, 2) << " m/s), as the TriPField-style baseline does; the scenario "
+        "is ours with the obstacle only (" << e.variant_scenario.vehicles.size() << " main-lane vehicle). "
+        "It shows what the rows that need a lead vehicle, or do not reproduce, would need from the planner.\n\n"
+     << "| What | Criterion | Defaults, this scenario | Variant | Variant: ours |\n|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < variant.size(); ++i)
+    md << "| " << variant[i].what << " | " << variant[i].criterion << " | " << (ours[i].reproduced ? "yes" : "no")
+       << " | " << (variant[i].reproduced ? "**yes**" : "**no**") << " | " << variant[i].ours << " |\n";
+  md << "\nThe variant reproduces " << reproduced_count(variant) << " of " << variant.size() << " rows.\n";
   return md.str();
 }
 
@@ -457,7 +485,7 @@ std::string paper_report_markdown(const PaperExperiment& e) {
   row("yaw min/max [rad]", [](const PaperMetrics& m) { return fmt(m.yaw_min_rad, 4) + " / " + fmt(m.yaw_max_rad, 4); });
   row("ego speed min/max [m/s]", [](const PaperMetrics& m) { return fmt(m.ego_speed_min_mps, 1) + " / " + fmt(m.ego_speed_max_mps, 1); });
   row("obstacle speed min [m/s]", [](const PaperMetrics& m) { return fmt(m.obstacle_speed_min_mps, 1); });
-  md << headline_spread_markdown(e) << sensitivity_markdown(e) << right_of_way_markdown(e);
+  md << headline_spread_markdown(e) << variant_markdown(e) << sensitivity_markdown(e) << right_of_way_markdown(e);
   md << "\nFigures: [fig4_paths.svg](fig4_paths.svg) (X–Y paths, merge zones shaded, cf. paper Fig. 4), "
         "[fig5_motion.svg](fig5_motion.svg) (sideslip, yaw, obstacle speed, ego speed, the paper's reported ranges "
         "shaded, cf. paper Fig. 5) and [fig_right_of_way.svg](fig_right_of_way.svg). "

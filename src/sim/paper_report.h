@@ -37,6 +37,10 @@ struct PaperExperiment {
   std::string scenario_path;
   std::vector<PaperRun> runs;  // in kPaperPlanners order
   std::vector<SensitivityCase> sensitivity;
+  // Not the defaults (sim/paper_variant.h): RCPP keeping its lane at the cruise speed after the
+  // merge, on the scenario with its first main-lane vehicle only.
+  Scenario variant_scenario;
+  std::vector<PaperRun> variant_runs;
 };
 
 // Runs the three planners on s and, when s has a main-lane vehicle, the sensitivity grid

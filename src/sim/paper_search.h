@@ -62,6 +62,8 @@ struct PaperSearch {
 // and comfortable braking and the V2V latency around the best kStage2Seeds of stage 1. Stage 3: gap and speeds refined around the
 // best so far. About 6,000 candidates x 3 simulations (about a minute).
 inline constexpr int kStage2Seeds = 5;
+inline constexpr int kRefineSeeds = 5;
+inline constexpr int kRefineRounds = 3;
 PaperSearch run_paper_search(const Scenario& base);
 
 // docs/paper_search.md: the space, the stage sizes, and the best `top` candidates' scores.

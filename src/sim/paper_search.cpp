@@ -231,14 +231,21 @@ std::string paper_search_markdown(const PaperSearch& search, const std::string& 
     if (histogram[static_cast<std::size_t>(k)] > 0) md << " " << k << ": " << histogram[static_cast<std::size_t>(k)] << ";";
   // How often each row reproduces over the whole space: a row that (almost) never does is a
   // limit of the planners or the simulator, not of our choice of scenario.
-  std::vector<int> per_row(kPaperClaimCount, 0);
+  // And the most rows any candidate reproducing that row reaches: which rows exclude each other.
+  std::vector<int> per_row(kPaperClaimCount, 0), best_with_row(kPaperClaimCount, 0);
   for (const PaperSearchResult& r : search.results) {
     std::vector<bool> failed(kPaperClaimCount, false);
     for (int row : r.failed_rows) failed[static_cast<std::size_t>(row - 1)] = true;
-    for (int k = 0; k < kPaperClaimCount; ++k) per_row[static_cast<std::size_t>(k)] += failed[static_cast<std::size_t>(k)] ? 0 : 1;
+    for (std::size_t k = 0; k < failed.size(); ++k) {
+      if (failed[k]) continue;
+      ++per_row[k];
+      best_with_row[k] = std::max(best_with_row[k], r.reproduced);
+    }
   }
-  md << "\n\nCandidates reproducing each row (of " << search.results.size() << "):";
-  for (int k = 0; k < kPaperClaimCount; ++k) md << " row " << k + 1 << ": " << per_row[static_cast<std::size_t>(k)] << ";";
+  md << "\n\nCandidates reproducing each row (of " << search.results.size()
+     << "), and in brackets the most rows reproduced by one of them:";
+  for (std::size_t k = 0; k < per_row.size(); ++k)
+    md << " row " << k + 1 << ": " << per_row[k] << " (" << best_with_row[k] << ");";
   md << "\n\n## Best " << top << " candidates\n\n"
      << "| # | stage | gap [m] | v_e [m/s] | v_o [m/s] | a_acc,o [m/s²] | b_min,o [m/s²] | headway [s] | IDM b [m/s²] | "
         "latency [s] | ramp end [m] | lead vehicle [m ahead] | merged, no collision | rows | headline miss | "

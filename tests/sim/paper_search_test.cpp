@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/scenario.h"
+
 namespace mg {
 namespace {
 
@@ -62,6 +64,33 @@ TEST(PaperSearch, EvaluationIsDeterministicAndListsItsFailedRows) {
   EXPECT_EQ(r1.failed_rows, r2.failed_rows);
   EXPECT_DOUBLE_EQ(r1.headline_miss, r2.headline_miss);
   EXPECT_EQ(static_cast<int>(r1.failed_rows.size()) + r1.reproduced, kPaperClaimCount);
+}
+
+// corpus/scenarios/paper_merge.json is the search's best candidate (docs/paper_search.md, row 1)
+// written by hand: the same scenario, only its name and description are the file's own.
+TEST(PaperSearch, TheCommittedPaperScenarioIsTheSearchsBestCandidate) {
+  const Scenario file = load_scenario(MG_SOURCE_DIR "/corpus/scenarios/paper_merge.json");
+  PaperSearchCandidate best;
+  best.gap_m = 2.5;
+  best.ego_speed_mps = 24.0;
+  best.obstacle_speed_mps = 17.0;
+  best.obstacle_accel_max_mps2 = 1.0;
+  best.obstacle_brake_min_mps2 = 4.0;
+  best.obstacle_headway_s = 1.0;
+  best.obstacle_comfort_brake_mps2 = 2.0;
+  best.latency_s = 0.05;
+  best.ramp_end_x_m = 240.0;
+  best.lead_gap_m = 60.0;
+  best.lead_speed_mps = 24.0;
+  Scenario built = apply_search_candidate(file, best);
+  built.name = file.name;
+  built.description = file.description;
+  EXPECT_EQ(built, file);
+  EXPECT_EQ(file.params.planner, PlannerParams{}) << "the planners run with their default parameters";
+  EXPECT_EQ(file.params.rss, RssParams{});
+  const PaperSearchResult r = evaluate_search_candidate(file, best, 1);
+  EXPECT_GE(r.reproduced, 13);
+  EXPECT_TRUE(r.consistent);
 }
 
 }  // namespace

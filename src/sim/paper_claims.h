@@ -32,6 +32,7 @@ struct PaperClaim {
   std::string ours;       // what our run measured
   bool reproduced = false;
   std::string criterion;  // the mechanical test
+  std::string why_not;    // when not reproduced: what the run shows instead, where it can say
 };
 
 inline constexpr int kPaperClaimCount = 15;
@@ -47,6 +48,9 @@ inline constexpr double kObstacleBrakingMps2 = 0.5;
 std::optional<double> obstacle_first_braking_s(const Trace& t);
 // First event of kind k whose actor is vehicle_id.
 std::optional<double> first_event_s(const Trace& t, EventKind k, int vehicle_id);
+// The first Definition 1 merge decision of a run, in words: on which side of vehicle_id the
+// ego merged, at which v_e* and rho (empty when it never took one).
+std::string def1_merge_side(const Trace& t, int vehicle_id);
 // First delivery to the ego of an acceptance (Def. 2.3) from vehicle_id.
 std::optional<double> first_acceptance_s(const Trace& t, int vehicle_id);
 

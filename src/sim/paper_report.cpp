@@ -464,7 +464,11 @@ std::string paper_report_markdown(const PaperExperiment& e) {
   for (const PaperClaim& c : claims)
     md << "| " << c.what << " | " << c.paper << " | " << c.ours << " | " << (c.reproduced ? "**yes**" : "**no**") << " | "
        << c.criterion << " |\n";
-  md << "\n**" << reproduced_count(claims) << " of " << claims.size() << " rows reproduce.**\n";
+  md << "\n**" << reproduced_count(claims) << " of " << claims.size() << " rows reproduce.**";
+  for (const PaperClaim& c : claims)
+    if (!c.reproduced)
+      md << " " << c.what << ": not reproduced" << (c.why_not.empty() ? "" : "; " + c.why_not) << ".";
+  md << " Why, in detail: docs/paper_reproduction.md.\n";
   md << "\n"
      << "\"Reproduced\" is judged mechanically by the criterion in the last column. Absolute "
         "values depend on the scenario, which the paper does not publish, and on the baseline, of which no code "

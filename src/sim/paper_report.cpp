@@ -153,6 +153,31 @@ nlohmann::json paper_metrics_json(const PaperExperiment& e) {
             {"path_length_reduction_pct", "100 (L_tripfield - L_planner) / L_tripfield"}}}};
 }
 
+namespace {
+
+// The obstacle's footprint at the instant each ego's centre crosses the lane marking, in that
+// planner's colour: a path alone does not show who went first, the paper's point.
+void add_obstacle_at_crossings(const PaperExperiment& e, svg::Plot& p) {
+  if (e.scenario.vehicles.empty()) return;
+  const VehicleSize& size = e.scenario.vehicles[0].size;
+  for (const PaperRun& r : e.runs) {
+    const auto crossing = first_event_s(r.trace, EventKind::kMergeMidpoint, 0);
+    if (!crossing) continue;
+    for (const TraceStep& st : r.trace.steps) {
+      if (st.time_s < *crossing - 1e-9) continue;
+      const VehicleState& o = st.others[0];
+      const double x0 = o.x_m - 0.5 * size.length_m, x1 = o.x_m + 0.5 * size.length_m;
+      const double y0 = o.y_m - 0.5 * size.width_m, y1 = o.y_m + 0.5 * size.width_m;
+      const char* who = r.planner == "tripfield" ? "TriPField" : r.planner == "rcpp" ? "non-coop" : "coop";
+      p.series.push_back({std::string("obstacle at ") + who + " crossing", {x0, x1, x1, x0, x0},
+                          {y0, y0, y1, y1, y0}, style_of(r.planner).colour, "", 1.6});
+      break;
+    }
+  }
+}
+
+}  // namespace
+
 std::string fig4_paths_svg(const PaperExperiment& e) {
   const Road& road = e.scenario.road;
   const double w = road.lane_width_m;
@@ -161,7 +186,7 @@ std::string fig4_paths_svg(const PaperExperiment& e) {
   p.x_label = "X along the road [m]";
   p.y_label = "Y lateral [m]";
   p.width_px = 1100;
-  p.height_px = 380;
+  p.height_px = 480;
   // Up to 100 m past the last merge completion (or the end of the run), at least past the ramp.
   double x_hi = road.side_lane_end_x_m + 50.0, x_lo = e.scenario.ego.x_m - 10.0;
   for (const PaperRun& r : e.runs) {
@@ -175,7 +200,7 @@ std::string fig4_paths_svg(const PaperExperiment& e) {
     x_hi = std::max(x_hi, x_end);
   }
   p.x_range = svg::Range{x_lo, x_hi};
-  p.y_range = svg::Range{-1.6 * w, (road.main_lanes - 0.5) * w + 1.6 * w};
+  p.y_range = svg::Range{-1.6 * w, (road.main_lanes - 0.5) * w + 2.6 * w};  // room for the legend
   auto line = [&](std::vector<double> x, std::vector<double> y, const std::string& label, const char* dash) {
     p.series.push_back({label, std::move(x), std::move(y), "#999999", dash, 1.0});
   };
@@ -210,6 +235,7 @@ std::string fig4_paths_svg(const PaperExperiment& e) {
     for (const TraceStep& s : r.trace.steps) x.push_back(s.ego.x_m), y.push_back(s.ego.y_m);
     p.series.push_back({std::string("ego: ") + st.label, x, y, st.colour, st.dash, 2.0});
   }
+  add_obstacle_at_crossings(e, p);
   return svg::render(p);
 }
 
@@ -428,6 +454,31 @@ std::string right_of_way_markdown(const PaperExperiment& e) {
 
 }  // namespace
 
+// Not one of the fifteen rows, but the paper's Fig. 4 says it: on which side of the obstacle
+// each ego crossed the lane marking (ego X minus obstacle X at that instant).
+std::string crossing_sides_markdown(const PaperExperiment& e) {
+  if (e.scenario.vehicles.empty()) return "";
+  std::ostringstream md;
+  md << "*Not scored:* where each ego crossed the lane marking relative to the obstacle (the paper: TriPField "
+        "behind it, non-coop RCPP close ahead of it, coop RCPP ahead of it after it yielded):";
+  for (const PaperRun& r : e.runs) {
+    const auto crossing = first_event_s(r.trace, EventKind::kMergeMidpoint, 0);
+    md << " " << style_of(r.planner).label << " ";
+    if (!crossing) {
+      md << "did not cross;";
+      continue;
+    }
+    for (const TraceStep& st : r.trace.steps)
+      if (st.time_s >= *crossing - 1e-9) {
+        const double ahead_m = st.ego.x_m - st.others[0].x_m;
+        md << (ahead_m >= 0.0 ? "ahead by " : "behind by ") << fmt(std::abs(ahead_m), 1) << " m;";
+        break;
+      }
+  }
+  md << "\n";
+  return md.str();
+}
+
 std::string paper_report_markdown(const PaperExperiment& e) {
   const Scenario& s = e.scenario;
   const PaperMetrics& tf = run_of(e, "tripfield").metrics;
@@ -468,7 +519,7 @@ std::string paper_report_markdown(const PaperExperiment& e) {
   for (const PaperClaim& c : claims)
     if (!c.reproduced)
       md << " " << c.what << ": not reproduced" << (c.why_not.empty() ? "" : "; " + c.why_not) << ".";
-  md << " Why, in detail: docs/paper_reproduction.md.\n";
+  md << " Why, in detail: docs/paper_reproduction.md.\n\n" << crossing_sides_markdown(e);
   md << "\n"
      << "\"Reproduced\" is judged mechanically by the criterion in the last column. Absolute "
         "values depend on the scenario, which the paper does not publish, and on the baseline, of which no code "

@@ -51,7 +51,12 @@ int run(const std::vector<std::string>& args) {
   if (!parse_args(app, args)) return kExitOk;
 
   const Scenario scenario = load_scenario(scenario_path);
-  if (search) return run_search(scenario, scenario_path, search_out, search_scenario);
+  if (search) {
+    // Before a minute of search, not after it.
+    check_output_file("--search-out", search_out);
+    if (!search_scenario.empty()) check_output_file("--search-scenario", search_scenario);
+    return run_search(scenario, scenario_path, search_out, search_scenario);
+  }
   prepare_output_dir("--out", out_dir);
   const PaperExperiment experiment = run_paper_experiment(scenario, scenario_path, right_of_way_of);
   write_paper_report(experiment, out_dir);

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -86,6 +87,18 @@ TEST(ReproducePaper, SearchWithAMissingScenarioIsBadInput) {
   const int rc = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(rc));
   EXPECT_EQ(WEXITSTATUS(rc), 2);
+}
+
+TEST(ReproducePaper, SearchRefusesAnUnwritableOutputBeforeSearching) {
+  const char* cli = std::getenv("MG_CLI");
+  if (cli == nullptr) GTEST_SKIP() << "MG_CLI not set (run through ctest)";
+  const std::string cmd = std::string(cli) + " reproduce-paper --search --search-out /nonexistent/dir/search.md " +
+                          "--scenario " MG_SOURCE_DIR "/corpus/scenarios/paper_merge.json > /dev/null 2>&1";
+  const auto start = std::chrono::steady_clock::now();
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10)) << "refused before the search";
 }
 
 TEST(ReproducePaper, MissingScenarioIsBadInput) {

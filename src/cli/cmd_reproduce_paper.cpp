@@ -79,8 +79,10 @@ int run(const std::vector<std::string>& args) {
   return consistent ? kExitOk : kExitViolation;
 }
 
-const CommandRegistration registration("reproduce-paper", "reproduce-paper [--out DIR] [--scenario FILE] [--json] [--search [--search-out FILE] [--search-scenario FILE]]",
-                                       run);
+const CommandRegistration registration(
+    "reproduce-paper",
+    "reproduce-paper [--out DIR] [--scenario FILE] [--json] [--search [--search-out FILE] [--search-scenario FILE]]",
+    run);
 
 }  // namespace
 }  // namespace mg::cli

@@ -216,8 +216,8 @@ std::string paper_search_markdown(const PaperSearch& search, const std::string& 
      << " m/s × obstacle speed (= its desired speed) " << axis_text(kObstacleSpeedsMps, 0) << " m/s × on-ramp end "
      << axis_text(kRampEndsM, 0) << " m × lead vehicle (IDM, no V2V) none or "
      << axis_text(std::vector<double>(kLeadGapsM.begin() + 1, kLeadGapsM.end()), 0)
-     << " m ahead of the ego at " << axis_text(kLeadSpeedsMps, 0) << " m/s. Stage 2 (" << (search.stage_sizes.size() > 1 ? search.stage_sizes[1] : 0)
-     << "): around the best " << kStage2Seeds << " of stage 1, obstacle a_accel^max " << axis_text(kObstacleAccelsMps2, 0)
+     << " m ahead of the ego at " << axis_text(kLeadSpeedsMps, 0) << " m/s. Stage 2 ("
+     << (search.stage_sizes.size() > 1 ? search.stage_sizes[1] : 0) << "): around the best " << kStage2Seeds << " of stage 1, obstacle a_accel^max " << axis_text(kObstacleAccelsMps2, 0)
      << " m/s² × a_brake^min " << axis_text(kObstacleBrakeMinsMps2, 0) << " m/s² × IDM headway "
      << axis_text(kObstacleHeadwaysS, 1) << " s × IDM comfortable braking " << axis_text(kObstacleComfortBrakesMps2, 0)
      << " m/s² × V2V latency " << axis_text(kLatenciesS, 2) << " s. Stages 3 to " << 2 + kRefineRounds << " ("

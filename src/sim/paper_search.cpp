@@ -13,7 +13,7 @@ namespace {
 // Stage 1's axes: the situation "relatively close to each other" (§IV) in which who goes first
 // is ambiguous, and on-ramps long enough for the baseline to merge near X = 226 m (Fig. 4).
 const std::vector<double> kGapsM{-20.0, -15.0, -10.0, -5.0, 0.0, 5.0, 10.0, 15.0};
-const std::vector<double> kEgoSpeedsMps{18.0, 20.0, 22.0, 24.0};
+const std::vector<double> kEgoSpeedsMps{18.0, 20.0, 22.0, 24.0, 26.0, 28.0};
 const std::vector<double> kObstacleSpeedsMps{16.0, 18.0, 20.0, 22.0};
 const std::vector<double> kRampEndsM{240.0, 270.0, 300.0};
 const std::vector<double> kLeadGapsM{0.0, 60.0, 100.0, 140.0, 180.0};  // 0 = no lead vehicle

@@ -3,24 +3,18 @@
 // the manner of the paper's Fig. 4 and Fig. 5, and report.md comparing with the paper.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "core/scenario.h"
+#include "sim/paper_claims.h"
 #include "sim/paper_metrics.h"
 #include "sim/trace.h"
 
 namespace mg {
-
-inline const std::vector<std::string> kPaperPlanners{"tripfield", "rcpp", "rcpp-coop"};
-
-struct PaperRun {
-  std::string planner;
-  Trace trace;
-  PaperMetrics metrics;
-};
 
 // The experiment repeated with the first main-lane vehicle moved by dx_m and its speed (and
 // desired speed) changed by dv_mps, to show how much the comparison depends on our choice of
@@ -28,18 +22,31 @@ struct PaperRun {
 struct SensitivityCase {
   double dx_m = 0.0, dv_mps = 0.0;
   std::vector<PaperMetrics> metrics;  // in kPaperPlanners order
+  int claims_reproduced = 0;          // of the kPaperClaimCount claims, on this variant
 };
+
+// Who holds the right of way over a run (rules/liability.h's compute_right_of_way); mg_sim
+// cannot link the rule checker, so the command passes it in.
+using RightOfWayFn = std::function<std::vector<std::pair<double, int>>(const Scenario&, const Trace&)>;
+
+// The three planners on s, in kPaperPlanners order (right_of_way filled when row is given).
+std::vector<PaperRun> run_paper_planners(const Scenario& s, const RightOfWayFn& row = nullptr);
 
 struct PaperExperiment {
   Scenario scenario;
   std::string scenario_path;
   std::vector<PaperRun> runs;  // in kPaperPlanners order
   std::vector<SensitivityCase> sensitivity;
+  // Not the defaults (sim/paper_variant.h): RCPP keeping its lane at the cruise speed after the
+  // merge, on the scenario with its first main-lane vehicle only.
+  Scenario variant_scenario;
+  std::vector<PaperRun> variant_runs;
 };
 
 // Runs the three planners on s and, when s has a main-lane vehicle, the sensitivity grid
 // dx in {-12, -6, 0, 6, 12} m x dv in {-2, 0, 2} m/s.
-PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scenario_path);
+PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scenario_path,
+                                     const RightOfWayFn& row = nullptr);
 
 // {"planners": {name: metrics}, "merge_time_saving_pct": {"rcpp": x, "rcpp-coop": y},
 //  "path_length_reduction_pct": {...}, "scenario": path, "definitions": {...}}
@@ -47,14 +54,16 @@ nlohmann::json paper_metrics_json(const PaperExperiment& e);
 
 std::string fig4_paths_svg(const PaperExperiment& e);
 std::string fig5_motion_svg(const PaperExperiment& e);
+// One strip per planner: who held the right of way over its run, the merge shaded.
+std::string right_of_way_svg(const PaperExperiment& e);
 std::string paper_report_markdown(const PaperExperiment& e);
 
 // Every planner merged without collision and both RCPP variants are no worse than the
 // baseline in merge time and path length; `why` lists what failed.
 bool paper_results_consistent(const PaperExperiment& e, std::vector<std::string>& why);
 
-// Writes metrics.json, fig4_paths.svg, fig5_motion.svg and report.md into out_dir, each
-// atomically.
+// Writes metrics.json, fig4_paths.svg, fig5_motion.svg, fig_right_of_way.svg and report.md
+// into out_dir, each atomically.
 void write_paper_report(const PaperExperiment& e, const std::string& out_dir);
 
 }  // namespace mg

@@ -29,6 +29,9 @@ Range data_range(const Plot& p, bool x_axis) {
   for (const Series& s : p.series)
     for (double v : x_axis ? s.x : s.y)
       if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!x_axis)  // a range band must be seen even where no data reaches it
+    for (const Band& b : p.bands)
+      if (b.y && std::isfinite(b.y->lo) && std::isfinite(b.y->hi)) lo = std::min(lo, b.y->lo), hi = std::max(hi, b.y->hi);
   if (!std::isfinite(lo)) return {0.0, 1.0};
   if (hi - lo < 1e-12) return {lo - 1.0, hi + 1.0};
   if (!x_axis) {
@@ -73,10 +76,16 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
       << "\" width=\"" << num(x1 - x0) << "\" height=\"" << num(y0 - y1) << "\"/></clipPath>\n";
   for (const Band& b : p.bands) {
     const double bx0 = std::clamp(px(b.x_from), x0, x1), bx1 = std::clamp(px(b.x_to), x0, x1);
-    out << "<rect x=\"" << num(bx0) << "\" y=\"" << num(y1) << "\" width=\"" << num(bx1 - bx0) << "\" height=\""
-        << num(y0 - y1) << "\" fill=\"" << b.colour << "\" opacity=\"0.6\"/>\n";
-    out << "<text x=\"" << num(0.5 * (bx0 + bx1)) << "\" y=\"" << num(y1 + 14)
-        << "\" text-anchor=\"middle\" font-size=\"11\" fill=\"#665\">" << xml_escape(b.caption) << "</text>\n";
+    // y0 is the bottom edge: a band's top is the smaller pixel value.
+    const double top = b.y ? std::clamp(py(b.y->hi), y1, y0) : y1, bottom = b.y ? std::clamp(py(b.y->lo), y1, y0) : y0;
+    out << "<rect x=\"" << num(bx0) << "\" y=\"" << num(top) << "\" width=\"" << num(bx1 - bx0) << "\" height=\""
+        << num(bottom - top) << "\" fill=\"" << b.colour << "\" opacity=\"0.6\"/>\n";
+    if (b.y)  // a range band: captioned at its left end, inside it
+      out << "<text x=\"" << num(bx0 + 4) << "\" y=\"" << num(std::min(bottom - 3, top + 11))
+          << "\" font-size=\"10\" fill=\"#554\">" << xml_escape(b.caption) << "</text>\n";
+    else
+      out << "<text x=\"" << num(0.5 * (bx0 + bx1)) << "\" y=\"" << num(y1 + 14)
+          << "\" text-anchor=\"middle\" font-size=\"11\" fill=\"#665\">" << xml_escape(b.caption) << "</text>\n";
   }
   // Grid, ticks and tick labels.
   const auto xt = nice_ticks(xr.lo, xr.hi), yt = nice_ticks(yr.lo, yr.hi);

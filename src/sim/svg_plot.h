@@ -18,18 +18,21 @@ struct Series {
   double width_px = 1.6;
 };
 
-// A shaded vertical band [x_from, x_to] with a caption (e.g. the merge manoeuvre).
+struct Range {
+  double lo = 0.0, hi = 1.0;
+};
+
+// A shaded vertical band [x_from, x_to] with a caption (e.g. the merge manoeuvre); with y, only
+// the rectangle [x_from, x_to] x [y.lo, y.hi] (e.g. a range a paper reports; x_from = -inf and
+// x_to = +inf span the axes).
 struct Band {
   double x_from = 0.0, x_to = 0.0;
   std::string caption;
   std::string colour = "#f2e6b3";
+  std::optional<Range> y;
 };
 
 enum class LegendCorner { kTopRight, kBottomRight, kTopLeft, kBottomLeft };
-
-struct Range {
-  double lo = 0.0, hi = 1.0;
-};
 
 struct Plot {
   std::string title;

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -56,16 +57,48 @@ TEST(ReproducePaper, WritesConsistentMetricsFiguresAndReport) {
     EXPECT_NEAR(saving, expected, 1e-9);
     EXPECT_GE(m.at("path_length_reduction_pct").at(rcpp).get<double>(), 0.0);
   }
-  for (const char* svg : {"fig4_paths.svg", "fig5_motion.svg"}) {
+  // Issue #19: the chosen scenario reproduces at least 13 of the 15 rows with default planners,
+  // and the cooperative run really cooperates (the last row).
+  EXPECT_GE(m.at("claims_reproduced").get<int>(), 13);
+  ASSERT_EQ(m.at("claims").size(), 15u);
+  EXPECT_TRUE(m["claims"][14]["reproduced"].get<bool>()) << m["claims"][14]["ours"];
+  EXPECT_TRUE(m["claims"][13]["reproduced"].get<bool>()) << "steady coop ego speed: " << m["claims"][13]["ours"];
+  EXPECT_FALSE(m.at("right_of_way").at("rcpp-coop").empty());
+  for (const char* svg : {"fig4_paths.svg", "fig5_motion.svg", "fig_right_of_way.svg"}) {
     const std::string text = read(out / svg);
     EXPECT_NE(text.find("<svg"), std::string::npos) << svg;
-    EXPECT_NE(text.find("RCPP cooperative"), std::string::npos) << svg << " has a legend";
+    EXPECT_NE(text.find("RCPP cooperative"), std::string::npos) << svg << " names the cooperative run";
   }
+  EXPECT_NE(read(out / "fig5_motion.svg").find("paper: TriPField below 9 m/s"), std::string::npos)
+      << "the paper's ranges are drawn as bands";
+  EXPECT_NE(read(out / "fig4_paths.svg").find("merge zone: RCPP cooperative"), std::string::npos);
   const std::string report = read(out / "report.md");
   EXPECT_NE(report.find("72.3 %"), std::string::npos) << "the paper's figure is in the table";
   EXPECT_NE(report.find("Merge time"), std::string::npos);
   fs::remove_all(out);
   fs::remove(out.string() + ".log");
+}
+
+TEST(ReproducePaper, SearchWithAMissingScenarioIsBadInput) {
+  const char* cli = std::getenv("MG_CLI");
+  if (cli == nullptr) GTEST_SKIP() << "MG_CLI not set (run through ctest)";
+  const std::string cmd = std::string(cli) + " reproduce-paper --search --scenario /nonexistent.json --search-out " +
+                          (fs::temp_directory_path() / "mg_paper_search.md").string() + " > /dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+}
+
+TEST(ReproducePaper, SearchRefusesAnUnwritableOutputBeforeSearching) {
+  const char* cli = std::getenv("MG_CLI");
+  if (cli == nullptr) GTEST_SKIP() << "MG_CLI not set (run through ctest)";
+  const std::string cmd = std::string(cli) + " reproduce-paper --search --search-out /nonexistent/dir/search.md " +
+                          "--scenario " MG_SOURCE_DIR "/corpus/scenarios/paper_merge.json > /dev/null 2>&1";
+  const auto start = std::chrono::steady_clock::now();
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10)) << "refused before the search";
 }
 
 TEST(ReproducePaper, MissingScenarioIsBadInput) {

@@ -55,6 +55,23 @@ TEST(SvgPlot, GridPlacesEveryPanel) {
   EXPECT_NE(svg.find(">All</text>"), std::string::npos);
 }
 
+TEST(SvgPlot, ARangeBandCoversOnlyItsRangeAndWidensTheAxis) {
+  Plot p;
+  p.width_px = 300;  // axes x from 72 (kMarginLeft) to 284
+  p.series.push_back({"s", {0, 10}, {20, 30}, "#000", "", 1.0});
+  p.bands.push_back({-INFINITY, INFINITY, "paper: below 10", "#cfe8cf", Range{0.0, 10.0}});
+  const std::string svg = render(p);
+  EXPECT_NE(svg.find("paper: below 10"), std::string::npos);
+  // The y axis reaches down to the band although no data does: a tick at 0 is drawn.
+  EXPECT_NE(svg.find(">0</text>"), std::string::npos);
+  const std::size_t rect = svg.find("fill=\"#cfe8cf\"");
+  ASSERT_NE(rect, std::string::npos);
+  const std::size_t start = svg.rfind("<rect", rect);
+  const std::string tag = svg.substr(start, rect - start);
+  EXPECT_EQ(tag.find("height=\"0.00\""), std::string::npos) << tag;
+  EXPECT_NE(tag.find("x=\"72.00\""), std::string::npos) << "an infinite band starts at the axis: " << tag;
+}
+
 TEST(SvgPlot, ThinningLeavesASeriesThatFitsUnchanged) {
   Series s{"s", {}, {}, "#000", "", 1.0};
   for (int i = 0; i < 40; ++i) s.x.push_back(i), s.y.push_back(std::sin(i));

@@ -1,5 +1,5 @@
 // `mergeguard reproduce-paper [--out DIR] [--scenario FILE]`: the RCPP paper's experiment
-// (DESIGN §11, issue #4). Exit 0 when every planner merged without collision and RCPP is no
+// (spec §11, issue #4). Exit 0 when every planner merged without collision and RCPP is no
 // worse than the baseline, 1 otherwise, 2 on bad input.
 #include <iostream>
 

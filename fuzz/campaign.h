@@ -1,4 +1,4 @@
-// A fuzzing campaign (DESIGN §9, §10 `mergeguard fuzz`): generate scenario i of the campaign
+// A fuzzing campaign (spec §9, §10 `mergeguard fuzz`): generate scenario i of the campaign
 // from run_seed(seed, i), check it, evaluate every property, and shrink the first (lowest run
 // index) failure of each new signature into one corpus case.
 //

@@ -1,4 +1,4 @@
-// A corpus case (DESIGN §9): one self-contained JSON file holding a minimal failing scenario,
+// A corpus case (spec §9): one self-contained JSON file holding a minimal failing scenario,
 // the planner, the property and signature it failed, the verdict and violations it produced,
 // and how it was found. It replays from the JSON alone. Format: docs/fuzzing.md "Corpus cases".
 #pragma once

@@ -1,4 +1,4 @@
-// The properties of DESIGN §9, evaluated on one checked scenario, and failure signatures.
+// The properties of spec §9, evaluated on one checked scenario, and failure signatures.
 // A property failure names the rule (or trace-level check) that exposed it and the liable party;
 // its signature (planner, property, rule, liable party class) identifies "the same bug" across
 // scenarios: one corpus case is kept per signature.

@@ -1,4 +1,4 @@
-// Replaying a corpus case from its JSON alone (DESIGN §9, §10 `mergeguard replay`): re-run the
+// Replaying a corpus case from its JSON alone (spec §9, §10 `mergeguard replay`): re-run the
 // scenario with the case's planner and compare verdict, violations and failed properties.
 #pragma once
 

@@ -1,5 +1,5 @@
 // RapidCheck generator of real numbers on a fixed grid inside a documented range, shrinking
-// toward a nominal value and toward rounder numbers (DESIGN §9: "shrink toward round numbers").
+// toward a nominal value and toward rounder numbers (spec §9: "shrink toward round numbers").
 #pragma once
 
 #include <rapidcheck.h>

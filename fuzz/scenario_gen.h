@@ -1,4 +1,4 @@
-// RapidCheck generators of merge scenarios (DESIGN §9). Ranges: fuzz/scenario_spec.h, documented
+// RapidCheck generators of merge scenarios (spec §9). Ranges: fuzz/scenario_spec.h, documented
 // in docs/fuzzing.md. Shrinking goes toward fewer vehicles, simpler behaviours (constant speed
 // first, compliant first, no V2V first), round numbers and shorter horizons.
 #pragma once

@@ -13,7 +13,7 @@
 namespace mg::fuzz {
 
 namespace range {
-// Road (DESIGN §2).
+// Road (spec §2).
 inline constexpr RealRange kLaneWidth{3.0, 4.0, 3.5, 0.05};           // m
 inline constexpr RealRange kSideLaneStart{-100.0, 0.0, 0.0, 10.0};    // m
 inline constexpr RealRange kSideLaneLength{100.0, 400.0, 300.0, 10.0};// m, extended if the ego could not stop

@@ -1,4 +1,4 @@
-// The rule checker's front door (DESIGN §8): simulate a scenario with a planner, run every rule
+// The rule checker's front door (spec §8): simulate a scenario with a planner, run every rule
 // monitor over the trace, assign liability. Used by `mergeguard check`, the fuzzer and replay.
 #pragma once
 
@@ -40,7 +40,7 @@ struct CheckResult {
   std::vector<RuleResult> rules;
   bool collision = false;
   int collision_liable_id = kNobody;  // meaningful when collision
-  // Overall liable party: the party whose obligation broke first (DESIGN §8); kNobody when
+  // Overall liable party: the party whose obligation broke first (spec §8); kNobody when
   // every rule holds, or when a collision has nobody liable (see liability_detail).
   int liable_id = kNobody;
   std::string liability_detail;       // one line: which rule, when, why

@@ -1,4 +1,4 @@
-// THE one FCL adapter of mergeguard (DESIGN §8 collision freedom): a box per vehicle from its
+// THE one FCL adapter of mergeguard (spec §8 collision freedom): a box per vehicle from its
 // length, width and height at its planar pose; a discrete check at a step and a continuous
 // check over the motion between two steps, both behind a cheap axis-aligned pre-filter so
 // that FCL only runs for pairs that could touch. Every FCL object lives inside one call

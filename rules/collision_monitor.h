@@ -1,4 +1,4 @@
-// Collision freedom (DESIGN §8): FCL boxes of every pair of vehicles, discrete at every step and
+// Collision freedom (spec §8): FCL boxes of every pair of vehicles, discrete at every step and
 // continuous between steps (rules/collision.h), behind an axis-aligned pre-filter.
 #pragma once
 

@@ -61,7 +61,7 @@ double speed_change_distance_m(double v, double v_star, double accel, double bra
 namespace {
 
 // The ego state whose "X + v_e* tau" is where the ego really is after tau while changing
-// speed toward v_e* at a_accel^max / b_min (DESIGN §4 fix).
+// speed toward v_e* at a_accel^max / b_min (spec §4 fix).
 VehicleState real_position_ego(const Scenario& s, const VehicleState& ego, double ve_star, double tau) {
   VehicleState e = ego;
   e.x_m += speed_change_distance_m(std::max(speed_of(ego), 0.0), ve_star, s.ego.limits.accel_max_mps2,

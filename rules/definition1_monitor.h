@@ -1,4 +1,4 @@
-// Definition 1 of RCPP (non-cooperative merge; DESIGN §4): ineq. (1) and (2) at every Def. 1
+// Definition 1 of RCPP (non-cooperative merge; spec §4): ineq. (1) and (2) at every Def. 1
 // decision, the follower's and leader's obligations in their windows, and the halt of 1.3.
 #pragma once
 
@@ -22,7 +22,7 @@ double def1_2_margin_m(const Scenario& s, const VehicleState& ego, std::size_t l
                        const VehicleState& leader_state, double ve_star_mps, double rho_m_s);
 
 // Distance covered in tau seconds while changing speed from v to v_star at the given rates
-// (then holding v_star): the ego's real position model of DESIGN §4.
+// (then holding v_star): the ego's real position model of spec §4.
 double speed_change_distance_m(double v, double v_star, double accel, double brake, double tau);
 
 MonitorOutput monitor_def1_1_gap(const MonitorContext& ctx);

@@ -1,4 +1,4 @@
-// Definition 2 of RCPP (cooperative merge over V2V; DESIGN §5): the request's contents (2.1A),
+// Definition 2 of RCPP (cooperative merge over V2V; spec §5): the request's contents (2.1A),
 // the ego's braking bound after a 2.2 request (2.2A), the responder's obligations once it
 // accepted (2.1B, 2.2B) and the fallback when no acceptance arrived within rho_c (2.3).
 #pragma once

@@ -1,4 +1,4 @@
-// Right of way and blame (DESIGN §8). The main-lane vehicles hold the right of way until the
+// Right of way and blame (spec §8). The main-lane vehicles hold the right of way until the
 // ego has established a Definition 1 gap (a Def. 1 merge decision) or a Definition 2
 // acceptance (a Def. 2 merge after the partner's acceptance was delivered); the ego keeps it
 // until the merge completes or it aborts. Blame follows RSS: the party whose obligation broke

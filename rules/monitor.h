@@ -1,4 +1,4 @@
-// What every rule monitor shares (DESIGN §8): a monitor is a pure function of the scenario and
+// What every rule monitor shares (spec §8): a monitor is a pure function of the scenario and
 // the trace (plus the right-of-way timeline derived from them) that yields a signed robustness
 // margin per trace step (NaN where the rule does not apply) and a RuleResult.
 #pragma once

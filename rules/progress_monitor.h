@@ -16,7 +16,7 @@ inline constexpr int kProgressSpeedSamples = kDef1SpeedGridSteps;
 // Whether some gap of the rightmost main lane admits a Definition 1 merge from the ego's state
 // at `step`: for one of the merge durations, a v_e* in [0, speed limit] satisfies ineq. (1) and
 // (2) with `margin_m` (the planner's own Definition 1 margins, planner/definition1.h: the paper's
-// literal form and the bounded-rate form of DESIGN §4 must both hold), an admissible sigmoid
+// literal form and the bounded-rate form of spec §4 must both hold), an admissible sigmoid
 // (planner/merge_path.h: drivable, comfortable, completed in time) has its midpoint where the ego
 // is at rho/2 and passes the occupancy check, and the ego's right edge leaves the side lane
 // margin_m before the planner's exit limit (side_exit_limit_x_m). A gap whose leader brakes harder than

@@ -1,4 +1,4 @@
-// Staying on the road and never passing the side lane's end while in it (DESIGN §2, §8).
+// Staying on the road and never passing the side lane's end while in it (spec §2, §8).
 // Road edges: left = (main_lanes - 1/2) W; right = -3W/2 up to side_lane_end_x (the on-ramp
 // feeds the side lane from behind its start), -W/2 beyond.
 #pragma once

@@ -11,7 +11,7 @@ MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
   MarginAccumulator acc("smoothness_oscillation", steps.size());
   int merges = 0;
   for (const TraceEvent& e : ctx.trace.events) merges += e.kind == EventKind::kMergeStart && e.vehicle_id == kEgoId;
-  // An aborted merge (DESIGN §6: abort when the P_c bounds cross) is a merge attempt of its own:
+  // An aborted merge (spec §6: abort when the P_c bounds cross) is a merge attempt of its own:
   // out, back, and out again later is not oscillation. Aborts are merge decisions followed (RSS
   // overrides aside) by a side-lane decision, or by a merge decision with another sigmoid: an
   // abort whose side-lane decisions were all overridden by the RSS proper response shows only

@@ -1,5 +1,5 @@
 // mergeguard check SCENARIO.json [--planner P] [--report DIR] [--json]: simulate, judge every
-// rule, assign liability (DESIGN §8, §10). Exit 0 when every rule holds, 1 otherwise.
+// rule, assign liability (spec §8, §10). Exit 0 when every rule holds, 1 otherwise.
 #include <iostream>
 #include <string>
 

@@ -1,6 +1,6 @@
 // mergeguard fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P]
 //                 [--search random|guided] [--corpus DIR] [--report DIR] [--json]: a property-based fuzzing campaign
-// (DESIGN §9, §10; docs/fuzzing.md). Exit 0 when no scenario failed a property, 1 when one did,
+// (spec §9, §10; docs/fuzzing.md). Exit 0 when no scenario failed a property, 1 when one did,
 // 3 when a signal (SIGINT, SIGTERM, SIGHUP) stopped it early (its report and summary still written).
 #include <unistd.h>
 

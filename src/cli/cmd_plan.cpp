@@ -1,5 +1,5 @@
 // mergeguard plan SCENARIO.json [--planner P] [--json]: the planner's decision at the scenario's
-// initial state, without simulating (DESIGN §10).
+// initial state, without simulating (spec §10).
 #include <cmath>
 #include <cstdio>
 #include <iostream>

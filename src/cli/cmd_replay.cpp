@@ -1,5 +1,5 @@
 // mergeguard replay [CASE.json | DIR]... [--json]: re-run corpus cases from their JSON alone and
-// compare verdict, violations and failed properties (DESIGN §9, §10). Exit 1 naming every case
+// compare verdict, violations and failed properties (spec §9, §10). Exit 1 naming every case
 // that does not reproduce; 2 when a case cannot be read (future format_version included).
 // --update records the replayed verdict in the cases that do not reproduce (after a planner fix
 // the minimal case stays in the corpus as a regression test that now holds; docs/fuzzing.md).

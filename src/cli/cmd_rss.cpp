@@ -1,4 +1,4 @@
-// mergeguard rss longitudinal|lateral: one JSON object on stdin -> {"distance_m": ...} (DESIGN §10).
+// mergeguard rss longitudinal|lateral: one JSON object on stdin -> {"distance_m": ...} (spec §10).
 #include <iostream>
 #include <limits>
 #include <string>

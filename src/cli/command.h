@@ -1,5 +1,5 @@
 // Subcommand registry of the mergeguard binary. Each cmd_<name>.cpp registers itself with a
-// static CommandRegistration; main.cpp dispatches. Exit codes (DESIGN §10): 0 holds,
+// static CommandRegistration; main.cpp dispatches. Exit codes (spec §10): 0 holds,
 // 1 violation found, 2 bad input, usage or I/O (one-line error on stderr), 3 a campaign stopped by
 // a signal.
 #pragma once

@@ -31,7 +31,7 @@ struct ObservedState {
 };
 
 // What a vehicle declares about itself before the merge: its size and the limits it promises
-// (DESIGN §2), and whether it takes part in V2V. Index 0 of ObservedTrace::vehicles is the ego.
+// (spec §2), and whether it takes part in V2V. Index 0 of ObservedTrace::vehicles is the ego.
 struct VehicleDeclaration {
   int id = 0;                // 0 = ego, >= 1 main-lane vehicles
   VehicleSize size;

@@ -15,7 +15,7 @@ struct RssParams {
   bool operator==(const RssParams&) const = default;
 };
 
-// RCPP planner parameters (DESIGN §4-§6).
+// RCPP planner parameters (spec §4-§6).
 struct PlannerParams {
   double merge_duration_s = 4.0;       // rho_m: decision to completion of the merge, [0.5, 20]
   double comm_threshold_s = 1.0;       // rho_c: time allowed for the V2V exchange, [0.05, 10]
@@ -68,7 +68,7 @@ struct RuleParams {
   bool operator==(const RuleParams&) const = default;
 };
 
-// Simulation parameters (DESIGN §7).
+// Simulation parameters (spec §7).
 struct SimParams {
   double step_s = 0.02;           // fixed integration step, [1e-3, 0.5]
   double planner_cycle_s = 0.1;   // planner period, a multiple of step_s, [step_s, 5]

@@ -1,5 +1,5 @@
 // RSS safe distances (RCPP eq. 1 and 2; Shalev-Shwartz et al., arXiv:1708.06374 Def. 1 and 4),
-// with the two deviations of DESIGN §3: lengths/widths outside the clamp, and the lateral
+// with the two deviations of spec §3: lengths/widths outside the clamp, and the lateral
 // braking term of the right vehicle with the RSS sign. Pure, total functions: out-of-domain
 // inputs (negative or non-finite) raise std::invalid_argument naming the argument. Defined inline
 // (below): the planner's searches and the monitors evaluate them millions of times a second.
@@ -36,7 +36,7 @@ struct LateralInput {
   double fluctuation_margin_m; // mu >= 0
 };
 
-// RCPP eq. (2) corrected per RSS Def. 4 (DESIGN §3):
+// RCPP eq. (2) corrected per RSS Def. 4 (spec §3):
 //   D = mu + (w_L + w_R)/2 + [d_L - d_R]_+
 inline double rss_lateral_m(const LateralInput& in);
 
@@ -75,7 +75,7 @@ struct WorstCase {
 
 }  // namespace rss_detail
 
-// RCPP eq. (1); RSS arXiv:1708.06374 Def. 1. Deviations (DESIGN §3, docs/rss.md): half-lengths
+// RCPP eq. (1); RSS arXiv:1708.06374 Def. 1. Deviations (spec §3, docs/rss.md): half-lengths
 // outside [.]_+; and the bracket is the largest closing of the worst-case motion over time, not
 // only at the final stop. The two agree whenever b_max,f >= b_min,r (then the closing is
 // monotone after T and the RSS term v_r T + a T^2/2 + (v_r + a T)^2/(2 b_min) - v_f^2/(2 b_max)
@@ -110,7 +110,7 @@ inline double rss_longitudinal_m(const LongitudinalInput& in) {
   return 0.5 * (in.rear_length_m + in.front_length_m) + closing;
 }
 
-// RCPP eq. (2) corrected per RSS arXiv:1708.06374 Def. 4 (DESIGN §3): the right vehicle's
+// RCPP eq. (2) corrected per RSS arXiv:1708.06374 Def. 4 (spec §3): the right vehicle's
 // braking term enters with the RSS sign; widths outside [.]_+.
 inline double rss_lateral_m(const LateralInput& in) {
   const bool ok = in.left_width_m >= 0.0 && in.right_width_m >= 0.0 && in.response_time_s >= 0.0 &&

@@ -1,4 +1,4 @@
-// The merge scenario shared by the whole suite: road (DESIGN §2), ego, main-lane vehicles with
+// The merge scenario shared by the whole suite: road (spec §2), ego, main-lane vehicles with
 // declared limits, behaviours and V2V, and the parameters. JSON format: docs/scenario_format.md.
 #pragma once
 
@@ -29,7 +29,7 @@ struct Road {
   double side_lane_y_m() const { return -lane_width_m; }
 };
 
-// Declared (promised) limits of a vehicle: positive magnitudes (DESIGN §2).
+// Declared (promised) limits of a vehicle: positive magnitudes (spec §2).
 struct Limits {
   double accel_max_mps2 = 2.0;        // a_accel^max, [0, 15]
   double brake_min_mps2 = 4.0;        // a_brake^min, (0, brake_max]
@@ -102,7 +102,7 @@ struct MainVehicle {
   bool operator==(const MainVehicle&) const = default;
 };
 
-// Ego single-track parameters (DESIGN §7); defaults are a mid-size passenger car.
+// Ego single-track parameters (spec §7); defaults are a mid-size passenger car.
 struct EgoDynamics {
   double mass_kg = 1500.0;            // [100, 50000]
   double yaw_inertia_kgm2 = 2250.0;   // [10, 1e6]

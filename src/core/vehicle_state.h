@@ -1,4 +1,4 @@
-// Kinematic state of one vehicle in the road frame (DESIGN §2).
+// Kinematic state of one vehicle in the road frame (spec §2).
 #pragma once
 
 #include <cmath>

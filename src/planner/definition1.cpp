@@ -36,7 +36,7 @@ double ineq12_at(const Def1Context& c, const MainLaneVehicle& leader, double t_s
 
 }  // namespace
 
-// RCPP ineq. (1.1); Def. 1.1 (DESIGN §4): the paper's literal form (ego at v_e* from T_dec) and the
+// RCPP ineq. (1.1); Def. 1.1 (spec §4): the paper's literal form (ego at v_e* from T_dec) and the
 // bounded-rate fix (the ego ramps to v_e*) must both hold.
 double def1_1_margin_m(const Def1Context& c, const MainLaneVehicle& follower, double ve_star_mps) {
   const double half_s = 0.5 * c.merge_duration_s;
@@ -45,7 +45,7 @@ double def1_1_margin_m(const Def1Context& c, const MainLaneVehicle& follower, do
                   ineq11_at(c, follower, c.ego_x_m + ramp.distance_at_m(half_s), ramp.speed_at_mps(half_s)));
 }
 
-// RCPP ineq. (1.2); Def. 1.2 (DESIGN §4): over the interval [T_dec, T_dec + rho], checked at rho/2
+// RCPP ineq. (1.2); Def. 1.2 (spec §4): over the interval [T_dec, T_dec + rho], checked at rho/2
 // and rho, in the paper's literal form and with the bounded-rate fix.
 double def1_2_margin_m(const Def1Context& c, const MainLaneVehicle& leader, double ve_star_mps) {
   const SpeedRamp ramp = c.ramp_to(ve_star_mps);

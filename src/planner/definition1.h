@@ -1,8 +1,8 @@
-// Definition 1 of RCPP (non-cooperative lane merge, DESIGN §4): gap enumeration, the exact
+// Definition 1 of RCPP (non-cooperative lane merge, spec §4): gap enumeration, the exact
 // feasible interval of the merge speed v_e* per gap from ineq. (1.1) and (1.2), and the
 // Definition 1.3 halt point.
 //
-// Fix of the paper (DESIGN §4): the paper assumes the ego already travels at v_e* at the decision
+// Fix of the paper (spec §4): the paper assumes the ego already travels at v_e* at the decision
 // time. Here the ego changes speed from v_e toward v_e* at a bounded rate (accel_max upward,
 // brake_min downward) and every inequality uses the position and speed it really reaches.
 #pragma once

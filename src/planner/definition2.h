@@ -1,4 +1,4 @@
-// Definition 2 of RCPP (cooperative lane merge over V2V, DESIGN §5): the speed v_o* the ego asks
+// Definition 2 of RCPP (cooperative lane merge over V2V, spec §5): the speed v_o* the ego asks
 // of the responder, from ineq. (3) (Def. 2.1, ego ahead: the responder brakes at most its
 // a_brake^min) and ineq. (4) (Def. 2.2, ego behind: the ego brakes at b_min, the responder
 // accelerates at most its a_accel^max), bounded by the responder's rate limit and the speed limit.

@@ -1,4 +1,4 @@
-// The merge path's admissibility and the lane-occupancy check along it (RCPP §II-C, DESIGN §6):
+// The merge path's admissibility and the lane-occupancy check along it (RCPP §II-C, spec §6):
 // pure functions shared by the RCPP planner and the progress rule (rules/progress_monitor), so
 // the two agree on what a drivable, comfortable, RSS-clear merge is (docs/planner.md).
 #pragma once
@@ -24,7 +24,7 @@ double half_span_times_kappa();
 // 1/2 + w/(2W), clamped into the sigmoid.
 double side_lane_exit_fraction(double ego_width_m, double lane_width_m);
 // The x the ego's centre may reach at most while its sigmoid still has `exit` left to cover:
-// the side lane's end minus half the ego length (DESIGN §2: never pass the end in the side lane)
+// the side lane's end minus half the ego length (spec §2: never pass the end in the side lane)
 // minus kSideExitMarginM for path-tracking lag (at 35 m/s, 0.1 s of lag is 3.5 m).
 inline constexpr double kSideExitMarginM = 5.0;
 double side_exit_limit_x_m(const Scenario& s);
@@ -102,7 +102,7 @@ Track beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_ac
 // RSS-dangerous situation with a main-lane vehicle. The ego starts at ego_y_m, which may be nearer the lane than the sigmoid's start (an
 // ego off its lane centre): until the path passes that offset, the ego is taken to stay there (it
 // converges to the path, away from the lane). Past P_c the ego is in the lane with the right of
-// way, and keeping D_lon behind it is the follower's duty as the rear vehicle (RSS Def. 1; DESIGN
+// way, and keeping D_lon behind it is the follower's duty as the rear vehicle (RSS Def. 1; spec
 // §8), not something the ego's path must foresee for a follower that keeps the speed Def. 1.1
 // allows it to gain. The tracking margin, kOccupancyLateralMarginM, grows with the lateral
 // progress: on the side lane's centre, before the sigmoid starts, there is no tracking error.

@@ -1,4 +1,4 @@
-// The potential field of RCPP §II-B (DESIGN §6): road marks (eq. 3), obstacles with coefficients
+// The potential field of RCPP §II-B (spec §6): road marks (eq. 3), obstacles with coefficients
 // from the RSS distances (eq. 4) and the lane centre in its two modes (eq. 5). Used to score the
 // sigmoid candidates (docs/planner.md).
 #pragma once
@@ -17,7 +17,7 @@ double road_mark_potential(double y_m, double boundary_y_m, bool boundary_is_lef
                            double beta);
 
 // RCPP eq. (4) with sigma_1 = 1/D_lat^2, sigma_2 = 1/D_lon^2 (the field falls to e^-1 at the RSS
-// distances; DESIGN §6): P_ob = gamma |exp(-[s1 (Y-Y_o)^2 + s2 (X-X_o)^2]) - U|.
+// distances; spec §6): P_ob = gamma |exp(-[s1 (Y-Y_o)^2 + s2 (X-X_o)^2]) - U|.
 struct ObstacleField {
   double x_m = 0.0;
   double y_m = 0.0;

@@ -1,4 +1,4 @@
-// The RSS override of RCPP Fig. 1 (DESIGN §6): when the ego is in an RSS-dangerous situation with
+// The RSS override of RCPP Fig. 1 (spec §6): when the ego is in an RSS-dangerous situation with
 // a vehicle ahead of it (longitudinal AND lateral distances both below D_lon and D_lat, RCPP
 // eq. 1, 2), its proper response is to brake at least a_brake^min. When the ego is the front
 // vehicle, the longitudinal response belongs to the rear vehicle (RSS Def. 5), so it is not

@@ -526,7 +526,7 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
     // later, and the partner closes in); the gap's other vehicle as in Definition 1: the
     // follower accelerating at its a_max, the leader at constant speed unless it is seen braking
     // (leader_track, as the occupancy check predicts it: a leader braking for a stopped vehicle
-    // left a weak-braked ego that merged behind it unable to stop). DESIGN §6: abort when the
+    // left a weak-braked ego that merged behind it unable to stop). spec §6: abort when the
     // P_c bounds cross.
     const Track ahead = leader_track(o, observed_accel_mps2(w, o.id));
     double x_m = ahead.x_at(t), v_mps = ahead.v_at(t);
@@ -595,7 +595,7 @@ double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
   // Past P_c the ego is in the main lane: it also keeps its RSS distance to the vehicle ahead.
   // Before P_c it does so too once that vehicle brakes: Def. 1.2 predicted it at constant speed,
   // and a compliant leader may brake (e.g. for a slow vehicle ahead of it) up to its b_max; the
-  // ego must still reach P_c at D_lon behind it (RCPP §II-C, DESIGN §6). And once the merge can
+  // ego must still reach P_c at D_lon behind it (RCPP §II-C, spec §6). And once the merge can
   // no longer be aborted (kAbortLateralFraction): a leader that has braked to a stop is not
   // braking any more, and the ego must not speed up toward it on the way in.
   if (const auto leader = leader_ahead_of(target_lane_vehicles(w), w.ego.x_m)) {

@@ -1,4 +1,4 @@
-// The RCPP planner (RCPP §II, DESIGN §4-§6): each cycle, the RSS override first; a committed merge
+// The RCPP planner (RCPP §II, spec §4-§6): each cycle, the RSS override first; a committed merge
 // is followed along its sigmoid; otherwise Definition 1 picks a gap, v_e* and the sigmoid, and
 // with cooperation enabled ("rcpp-coop") Definition 2 asks a V2V neighbour for v_o* when no
 // Definition 1 gap exists; with neither, Definition 1.3 halts before the side lane's end.

@@ -1,4 +1,4 @@
-// The sigmoid planner of RCPP §II-C (DESIGN §6): the merge path
+// The sigmoid planner of RCPP §II-C (spec §6): the merge path
 //   y(X) = W / (1 + exp(-kappa (X - P_c))) + b,
 // the comfort bound on kappa, and the choice of (P_c, kappa) among candidates scored by a cost
 // (the potential field along the path plus the Definition 1 cost; docs/planner.md).
@@ -24,7 +24,7 @@ struct Sigmoid {
 };
 
 // Peak lateral acceleration of the logistic path at constant speed v: v^2 W kappa^2 / (6 sqrt 3)
-// (max |y''| = W kappa^2/(6 sqrt 3) at X - P_c = +-ln(2 + sqrt 3)/kappa; DESIGN §6).
+// (max |y''| = W kappa^2/(6 sqrt 3) at X - P_c = +-ln(2 + sqrt 3)/kappa; spec §6).
 double sigmoid_peak_lat_accel_mps2(double speed_mps, double width_m, double kappa_per_m);
 // The largest kappa with sigmoid_peak_lat_accel <= lat_accel_mps2 (infinite at speed 0).
 double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_accel_mps2);

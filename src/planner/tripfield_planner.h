@@ -1,5 +1,5 @@
 // Baseline: a local potential-field planner in the style of TriPField (Ji et al., IEEE T-ITS 2023),
-// the comparison of the RCPP paper (DESIGN §6). No public code exists; this is what was built
+// the comparison of the RCPP paper (spec §6). No public code exists; this is what was built
 // (docs/planner.md): each cycle the path follows the descending lateral gradient of a field made of
 // road marks (RCPP eq. 3), velocity-dependent elliptical Gaussian obstacle fields, and a
 // target-lane attraction that grows toward the side lane's end; the speed is reduced by the

@@ -1,4 +1,4 @@
-// Main-lane traffic (DESIGN §7): longitudinal behaviours on the lane centre, the cooperative
+// Main-lane traffic (spec §7): longitudinal behaviours on the lane centre, the cooperative
 // V2V responder of Definition 2, and the scripted non-compliance overlay used by liability tests.
 #pragma once
 

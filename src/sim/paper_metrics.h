@@ -1,4 +1,4 @@
-// The measures the RCPP paper compares planners by (its §IV and DESIGN §11), computed from a
+// The measures the RCPP paper compares planners by (its §IV and spec §11), computed from a
 // trace: merge time, path length of the manoeuvre, trajectory oscillation, sideslip, speeds.
 #pragma once
 

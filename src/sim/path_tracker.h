@@ -1,4 +1,4 @@
-// Lateral control of the ego (DESIGN §7): the Stanley controller (Hoffmann et al., 2007) on
+// Lateral control of the ego (spec §7): the Stanley controller (Hoffmann et al., 2007) on
 // the planner's road-frame reference polyline, with curvature feed-forward and yaw-rate damping.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Closed-loop simulation of a merge scenario (DESIGN §7): ego single-track dynamics driven by a
+// Closed-loop simulation of a merge scenario (spec §7): ego single-track dynamics driven by a
 // planner, main-lane behaviours, V2V channel. Deterministic: same scenario, same build, same trace.
 #pragma once
 

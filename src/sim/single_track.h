@@ -1,4 +1,4 @@
-// Ego vehicle dynamics (DESIGN §7): dynamic single-track (bicycle) model with linear tyres,
+// Ego vehicle dynamics (spec §7): dynamic single-track (bicycle) model with linear tyres,
 // blended into the kinematic bicycle model at low speed so that the ego can halt and start
 // again. States X, Y, psi, v_x, v_y, r live in VehicleState (body-frame v_x, v_y).
 #pragma once

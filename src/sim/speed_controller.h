@@ -1,4 +1,4 @@
-// Longitudinal control of the ego (DESIGN §7): a saturated proportional speed controller that
+// Longitudinal control of the ego (spec §7): a saturated proportional speed controller that
 // tracks PlanOutput::target_speed_mps, and the RSS proper response override.
 #pragma once
 

@@ -1,5 +1,5 @@
 // What a simulation produced: every step's state of every vehicle, every planner decision and
-// V2V event, with a digest (DESIGN §7). The rule monitors judge only this and the scenario.
+// V2V event, with a digest (spec §7). The rule monitors judge only this and the scenario.
 #pragma once
 
 #include <cstdint>

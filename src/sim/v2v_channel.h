@@ -1,4 +1,4 @@
-// The V2V channel of Definition 2 (DESIGN §5): each message is delayed by its sender's latency
+// The V2V channel of Definition 2 (spec §5): each message is delayed by its sender's latency
 // and dropped with its sender's loss probability, drawn from a seeded generator; messages to or
 // from a vehicle without V2V are lost. Sending, loss and delivery are trace events.
 #pragma once

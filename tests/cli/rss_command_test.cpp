@@ -1,4 +1,4 @@
-// `mergeguard rss`: the DESIGN §10 contract on stdin/stdout and exit codes.
+// `mergeguard rss`: the spec §10 contract on stdin/stdout and exit codes.
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>

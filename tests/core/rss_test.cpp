@@ -1,4 +1,4 @@
-// RSS safe distances: hand-computed vectors and RapidCheck properties (RCPP eq. 1, 2; DESIGN §3).
+// RSS safe distances: hand-computed vectors and RapidCheck properties (RCPP eq. 1, 2; spec §3).
 #include "core/rss.h"
 
 #include <cmath>
@@ -75,7 +75,7 @@ TEST(RssLongitudinal, WeakFrontBrakesNeedTheGapAtEqualSpeeds) {
 
 TEST(RssLongitudinal, LengthsAddOutsideTheClamp) {
   // Rear at rest, front at 30 m/s: the bracket is negative (0 - 900/16 < 0) and clamps to 0, so
-  // the distance is exactly the bumper-contact distance (4 + 5)/2 = 4.5 m (DESIGN §3 deviation).
+  // the distance is exactly the bumper-contact distance (4 + 5)/2 = 4.5 m (spec §3 deviation).
   LongitudinalInput in{0.0, 30.0, 4.0, 5.0, 0.0, 0.0, 4.0, 8.0};
   EXPECT_DOUBLE_EQ(rss_longitudinal_m(in), 4.5);
 }

@@ -1,4 +1,4 @@
-// The properties of DESIGN §9 as CTest property tests for the RCPP planners, with the real
+// The properties of spec §9 as CTest property tests for the RCPP planners, with the real
 // simulator and checker (the budget comes from RC_PARAMS; the default 100 scenarios per property
 // take a few seconds). A failure prints the shrunk scenario as JSON: save it and run
 // `mergeguard check` on it, or let `mergeguard fuzz` put it in the corpus.
@@ -58,7 +58,7 @@ RC_GTEST_PROP(RcppCoopProperties, EveryCollisionHasALiableParty, ()) {
   holds_for_generated_scenarios("rcpp-coop", property::kCollisionLiable);
 }
 
-// The baseline is expected to fail (DESIGN §6: it weaves and merges late); determinism and
+// The baseline is expected to fail (spec §6: it weaves and merges late); determinism and
 // completing the check are what it must still satisfy.
 RC_GTEST_PROP(TripfieldProperties, SameScenarioSameTraceDigest, ()) {
   holds_for_generated_scenarios("tripfield", property::kDeterminism);

@@ -1,4 +1,4 @@
-// `mergeguard plan` (src/cli/cmd_plan.cpp, DESIGN §10): a decision for every scenario of the corpus,
+// `mergeguard plan` (src/cli/cmd_plan.cpp, spec §10): a decision for every scenario of the corpus,
 // JSON output, exit code 2 on bad input. Needs env MG_CLI (set by CTest).
 #include <cstdio>
 #include <cstdlib>

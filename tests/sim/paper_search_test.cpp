@@ -66,9 +66,10 @@ TEST(PaperSearch, EvaluationIsDeterministicAndListsItsFailedRows) {
   EXPECT_EQ(static_cast<int>(r1.failed_rows.size()) + r1.reproduced, kPaperClaimCount);
 }
 
-// corpus/scenarios/paper_merge.json is the search's best candidate (docs/paper_search.md, row 1)
-// written by hand: the same scenario, only its name and description are the file's own.
-TEST(PaperSearch, TheCommittedPaperScenarioIsTheSearchsBestCandidate) {
+// corpus/scenarios/paper_merge.json is the chosen 13-row candidate of the search
+// (docs/paper_reproduction.md, "The chosen scenario"; docs/paper_search.md) written by hand: the
+// same scenario, only its name and description are the file's own.
+TEST(PaperSearch, TheCommittedPaperScenarioIsTheChosenThirteenRowCandidate) {
   const Scenario file = load_scenario(MG_SOURCE_DIR "/corpus/scenarios/paper_merge.json");
   PaperSearchCandidate best;
   best.gap_m = 2.5;

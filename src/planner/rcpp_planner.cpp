@@ -376,15 +376,6 @@ bool can_still_halt(const WorldSnapshot& w) {
   return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
 }
 
-// Distance a Def. 2 partner covers in t_s on the profile it accepted: from its speed now
-// linearly to v_o* by the yield deadline (to_deadline_s from now), then v_o*. A partner slower to
-// yield than that is predicted farther along (2.1) or behind (2.2): a reneging one is seen early.
-double accepted_profile_distance_m(double v_now_mps, double vo_star_mps, double to_deadline_s, double t_s) {
-  const double ramp_s = std::min(t_s, to_deadline_s);
-  const double v_end_mps = to_deadline_s > 0.0 ? v_now_mps + (vo_star_mps - v_now_mps) * ramp_s / to_deadline_s : vo_star_mps;
-  return 0.5 * (v_now_mps + v_end_mps) * ramp_s + vo_star_mps * (t_s - ramp_s);
-}
-
 double accel_limit_toward(const Scenario& s, double current_mps, double target_mps) {
   return target_mps >= current_mps ? s.ego.limits.accel_max_mps2 : s.ego.limits.brake_min_mps2;
 }
@@ -528,17 +519,25 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
     // (leader_track, as the occupancy check predicts it: a leader braking for a stopped vehicle
     // left a weak-braked ego that merged behind it unable to stop). spec §6: abort when the
     // P_c bounds cross.
-    const Track ahead = leader_track(o, observed_accel_mps2(w, o.id));
-    double x_m = ahead.x_at(t), v_mps = ahead.v_at(t);
+    double x_m = 0.0, v_mps = 0.0;
     if (def2 && o.id == d.coop_partner_id) {
-      // The deadline of the plan's responder model (coop_candidate): rho_c after the request arrives.
+      // From its speed now linearly to v_o* by the yield deadline of the plan's responder model
+      // (coop_candidate: rho_c after the request arrives), then v_o*. A partner slower to yield
+      // is predicted farther along (2.1) or behind (2.2): a reneging one is seen early.
       const double yield_by_s = d.time_s + s.ego.v2v.latency_s + s.params.planner.comm_threshold_s;
       const double to_deadline_s = std::max(0.0, yield_by_s - w.time_s);
-      x_m = o.x_m + accepted_profile_distance_m(o.speed_mps, d.vo_star_mps, to_deadline_s, t);
-      v_mps = t >= to_deadline_s ? d.vo_star_mps : o.speed_mps + (d.vo_star_mps - o.speed_mps) * t / to_deadline_s;
+      const double rate = to_deadline_s > 0.0 ? std::abs(d.vo_star_mps - o.speed_mps) / to_deadline_s + 1e-9
+                                              : 1e9;  // past the deadline: at v_o* from now
+      const SpeedRamp accepted{o.speed_mps, d.vo_star_mps, rate, rate};
+      x_m = o.x_m + accepted.distance_at_m(t);
+      v_mps = accepted.speed_at_mps(t);
     } else if (follower) {
       v_mps = o.speed_mps + o.limits.accel_max_mps2 * t;
       x_m = o.x_m + o.speed_mps * t + 0.5 * o.limits.accel_max_mps2 * t * t;
+    } else {
+      const Track ahead = leader_track(o, observed_accel_mps2(w, o.id));
+      x_m = ahead.x_at(t);
+      v_mps = ahead.v_at(t);
     }
     if (follower) {
       const double dl = rss_longitudinal_m({v_mps, v_at, o.length_m, s.ego.size.length_m, s.params.rss.response_time_s,

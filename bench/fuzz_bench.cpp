@@ -13,7 +13,7 @@
 #include "fuzz/scenario_gen.h"
 #include "fuzz/shrink.h"
 #include "rules/check.h"
-#include "rules/collision.h"
+#include "core/collision.h"
 
 namespace {
 

@@ -1,8 +1,8 @@
 // Collision freedom (spec §8): FCL boxes of every pair of vehicles, discrete at every step and
-// continuous between steps (rules/collision.h), behind an axis-aligned pre-filter.
+// continuous between steps (core/collision.h), behind an axis-aligned pre-filter.
 #pragma once
 
-#include "rules/collision.h"
+#include "core/collision.h"
 #include "rules/monitor.h"
 
 namespace mg {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/collision.h"
 #include "sim/behaviour.h"
 #include "sim/path_tracker.h"
 #include "sim/single_track.h"
@@ -89,12 +90,12 @@ class Run {
       if (k % cycle == 0) run_planner(t);
       trace_.steps.push_back({t, ego_, others_, plan_.decision.mode, plan_.proper_response});
       if (k == n_steps) break;
-      // The simulator models no crash: main-lane vehicles that collided would drive on through
-      // each other, and whatever the ego did in that world would be judged against vehicles that
-      // cannot be where they are. The run ends with the step of the collision, which the
-      // collision rule judges (docs/simulator.md).
+      // The simulator models no crash: vehicles that collided would drive on through each other,
+      // and whatever came after would be judged against vehicles that cannot be where they are.
+      // The run ends with the step of the first collision, which the collision rule judges
+      // (docs/simulator.md).
       lane_order_.update(s_, others_);
-      if (lane_order_.any_overlap(s_, others_)) break;
+      if (lane_order_.any_overlap(s_, others_) || ego_collides()) break;
       advance(t, dt);
       detector_.update(static_cast<double>(k + 1) * dt, ego_, trace_.events);
     }
@@ -109,6 +110,17 @@ class Run {
     e.y_m = s.ego.y_m;
     e.vx_mps = s.ego.speed_mps;
     return e;
+  }
+
+  // The ego's box overlaps a main-lane vehicle's (the collision rule's FCL test, core/collision.h).
+  bool ego_collides() const {
+    const BoxPose ego{ego_.x_m, ego_.y_m, ego_.yaw_rad, s_.ego.size.length_m, s_.ego.size.width_m, s_.ego.size.height_m};
+    for (std::size_t i = 0; i < others_.size(); ++i) {
+      const VehicleSize& z = s_.vehicles[i].size;
+      const BoxPose other{others_[i].x_m, others_[i].y_m, others_[i].yaw_rad, z.length_m, z.width_m, z.height_m};
+      if (aabb_clearance_m(ego, other) <= 0.0 && fcl_box_contact(ego, other).collide) return true;
+    }
+    return false;
   }
 
   void deliver_messages(double t) {

@@ -1,4 +1,4 @@
-#include "rules/collision.h"
+#include "core/collision.h"
 
 #include <algorithm>
 #include <cmath>

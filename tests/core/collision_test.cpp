@@ -1,5 +1,5 @@
-// Table-driven test of the FCL adapter (rules/collision.h): box pairs and expected outcome.
-#include "rules/collision.h"
+// Table-driven test of the FCL adapter (core/collision.h): box pairs and expected outcome.
+#include "core/collision.h"
 
 #include <cmath>
 #include <string>

@@ -1,17 +1,20 @@
-// mergeguard check SCENARIO.json [--planner P] [--report DIR] [--json]: simulate, judge every
-// rule, assign liability (spec §8, §10). Exit 0 when every rule holds, 1 otherwise.
+// mergeguard check SCENARIO.json [--planner P] [--report DIR] [--json] [--save-trace FILE]:
+// simulate, judge every rule, assign liability (spec §8, §10); optionally write the run's
+// observable trace (docs/trace_format.md). Exit 0 when every rule holds, 1 otherwise.
 #include <iostream>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
+#include "core/observed_trace_json.h"
 #include "core/output_path.h"
 #include "core/scenario.h"
 #include "planner/planner.h"
 #include "rules/check.h"
 #include "rules/report_json.h"
 #include "rules/report_markdown.h"
+#include "sim/observed_run.h"
 
 namespace mg::cli {
 namespace {
@@ -37,15 +40,19 @@ int run_check(const std::vector<std::string>& args) {
   std::string path;
   std::string planner_name = "rcpp";
   std::string report_dir;
+  std::string trace_path;
   bool json = false;
   app.add_option("scenario", path, "scenario JSON file")->required();
   app.add_option("--planner", planner_name, "rcpp, rcpp-coop or tripfield")->check(CLI::IsMember(planner_names()));
   app.add_option("--report", report_dir, "write report.json, report.md and report.html into this directory");
   app.add_flag("--json", json, "print the report JSON on stdout");
+  app.add_option("--save-trace", trace_path, "write the run's observable trace (docs/trace_format.md) to this file");
   if (!parse_args(app, args)) return kExitOk;
   const Scenario scenario = load_scenario(path);
   if (!report_dir.empty()) prepare_output_dir("--report", report_dir);
+  if (!trace_path.empty()) check_output_file("--save-trace", trace_path);
   const CheckResult result = check_scenario(scenario, planner_name);
+  if (!trace_path.empty()) write_observed_trace(observed_trace_of(scenario, result.trace), trace_path);
   if (!report_dir.empty()) write_check_reports(report_dir, scenario, result);
   if (json) {
     std::cout << report_json(scenario, result).dump(2) << "\n";
@@ -56,7 +63,7 @@ int run_check(const std::vector<std::string>& args) {
 }
 
 const CommandRegistration kRegistration(
-    "check", "check SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--report DIR] [--json]", run_check);
+    "check", "check SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--report DIR] [--json] [--save-trace FILE]", run_check);
 
 }  // namespace
 }  // namespace mg::cli

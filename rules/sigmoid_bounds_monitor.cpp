@@ -81,6 +81,16 @@ int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t l
   return kNobody;
 }
 
+// Whether vehicle k was on the other side of the ego (ahead or not) at some step in [from_s,
+// step i) than at step i.
+bool changed_side(const MonitorContext& ctx, std::size_t k, double from_s, std::size_t i) {
+  const auto ahead = [&](std::size_t j) { return state_of(ctx.trace.steps[j], k).x_m > ctx.trace.steps[j].ego.x_m; };
+  const bool ahead_now = ahead(i);
+  for (std::size_t j = step_at(ctx.trace, from_s); j < i; ++j)
+    if (ahead(j) != ahead_now) return true;
+  return false;
+}
+
 // The responder k if it accepted a Def. 2 request before time_s and was farther than the yield
 // tolerance from the v_o* it accepted at time_s, or at any step from the yield deadline t_r +
 // rho_c + T to time_s (Def. 2.1B / 2.2B: a responder that did not yield in time and slowed only
@@ -211,6 +221,11 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       if (breaker == kNobody && def1 && dec->gap && dec->gap->follower_id >= 0)
         if (const int k = index_of_party(s, dec->gap->follower_id); k > 0)
           breaker = limit_breaker(ctx, static_cast<std::size_t>(k), 0, from_s, e.time_s);
+      // A vehicle that was on the other side of the ego at some step since the decision owes both
+      // of its limits: a leader that braked beyond its b_max until it fell back level with the ego
+      // explains the margin as much as a follower that raced past beyond its a_accel^max.
+      if (breaker == kNobody && worst > 0 && changed_side(ctx, worst, from_s, i))
+        breaker = limit_breaker(ctx, worst, worst, from_s, e.time_s);
       if (breaker == kNobody && worst > 0) breaker = reneging_responder(ctx, worst, e.time_s);
       if (breaker != kNobody)
         liable = breaker;

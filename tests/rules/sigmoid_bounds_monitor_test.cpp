@@ -78,6 +78,35 @@ Trace with_def1_decision(Trace t) {
   return t;
 }
 
+// The merge decided at t = 0 goes behind vehicle 1, 2 m ahead at the ego's 20 m/s. It brakes
+// at 10 m/s2 and at the midpoint (t = 1 s) is 3 m behind the ego: the follower there, inside the
+// ego's safe distance, because it fell back level with the ego.
+//
+//   t = 0:   ego |====|        t = 1 s:       |====| ego
+//                  |====| 1              |====| 1
+Trace leader_falling_back(Scenario& s, double brake_mps2) {
+  MainVehicle v = vehicle(1, 2.0, 20.0);
+  v.limits.brake_max_mps2 = 8.0;
+  s.vehicles = {v};
+  return with_def1_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -brake_mps2})));
+}
+
+TEST(SigmoidBoundsMonitor, ALeaderThatFellBackBesideTheEgoBeyondItsBmaxIsLiable) {
+  Scenario s = base_scenario();
+  const Trace t = leader_falling_back(s, 10.0);
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, 1);
+}
+
+TEST(SigmoidBoundsMonitor, ALeaderThatFellBackBesideTheEgoWithinItsBmaxLeavesTheEgoLiable) {
+  Scenario s = base_scenario();
+  const Trace t = leader_falling_back(s, 7.0);  // 3.5 m fallen back: 1.5 m behind the ego
+  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+}
+
 TEST(SigmoidBoundsMonitor, LeaderThatSlowedWithinItsLimitsLeavesThePairToTheRssRules) {
   // Leader 50 m ahead, all at 20 m/s; it brakes at 3 m/s^2 (its b_max is 8). At the midpoint
   // (t = 1 s) it is 50 - 1.5 = 48.5 m ahead at 17 m/s, D_lon(20, 17) = 45.175 + (400 - 289)/16

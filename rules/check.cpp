@@ -9,12 +9,14 @@
 #include "rules/definition1_monitor.h"
 #include "rules/definition2_monitor.h"
 #include "rules/liability.h"
+#include "rules/merge_phases.h"
 #include "rules/monitor.h"
 #include "rules/progress_monitor.h"
 #include "rules/road_monitor.h"
 #include "rules/rss_distance_monitor.h"
 #include "rules/sigmoid_bounds_monitor.h"
 #include "rules/smoothness_monitor.h"
+#include "sim/observed_run.h"
 
 namespace mg {
 
@@ -51,8 +53,8 @@ const std::vector<MonitorEntry>& rule_monitors() {
 }
 
 std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const RightOfWay& row,
-                                     std::vector<std::vector<double>>* margins) {
-  const MonitorContext ctx{s, t, row, catalog_params()};
+                                     const MergePhases& phases, std::vector<std::vector<double>>* margins) {
+  const MonitorContext ctx{s, t, row, catalog_params(), phases};
   std::vector<RuleResult> results;
   results.reserve(rule_monitors().size());
   for (const MonitorEntry& m : rule_monitors()) {
@@ -66,9 +68,10 @@ std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const Ri
 CheckResult check_trace(const Scenario& scenario, Trace&& trace) {
   CheckResult r;
   r.planner = trace.planner;
-  const RightOfWay row = compute_right_of_way(scenario, trace);
+  const MergePhases phases = observe_merge_phases(observed_trace_of(scenario, trace));
+  const RightOfWay row = compute_right_of_way(scenario, trace, phases);
   r.right_of_way = row.timeline;
-  r.rules = run_monitors(scenario, trace, row, nullptr);
+  r.rules = run_monitors(scenario, trace, row, phases, nullptr);
   for (const RuleResult& rule : r.rules) r.holds = r.holds && rule.holds;
   assign_liability(r);
   r.trace = std::move(trace);

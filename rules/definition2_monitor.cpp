@@ -35,11 +35,9 @@ constexpr double kTieS = 1e-9;
 
 // The ego's first merge midpoint after time_s: from then on the ego is in the lane and the
 // RSS rules, not Definition 2, govern the pair.
-double merge_midpoint_after(const Trace& t, double time_s) {
-  for (const TraceEvent& e : t.events) {
-    if (e.kind == EventKind::kMergeMidpoint && e.vehicle_id == kEgoId && e.time_s >= time_s) return e.time_s;
-  }
-  return std::numeric_limits<double>::infinity();
+double merge_midpoint_after(const MergePhases& phases, double time_s) {
+  const std::optional<MergePhaseEvent> e = phases.first(MergePhaseKind::kMidpoint, time_s);
+  return e ? e->time_s : std::numeric_limits<double>::infinity();
 }
 
 // Def. 2.1B / 2.2B: the responder of an accepted request changes speed toward v_o* at most at
@@ -62,7 +60,7 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
     const std::size_t first = step_at(ctx.trace, x.accept_time_s);
     const double v0 = speed_of(state_of(steps[first], k));
     const double deadline = x.request_time_s + rho_c + s.params.rss.response_time_s;
-    const double end = std::min(merge_midpoint_after(ctx.trace, x.accept_time_s),
+    const double end = std::min(merge_midpoint_after(ctx.phases, x.accept_time_s),
                                 x.request_time_s + rho_c + s.params.planner.merge_duration_s);
     bool reached = false;
     for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end; ++i) {

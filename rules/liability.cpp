@@ -1,9 +1,12 @@
 #include "rules/liability.h"
 
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "rules/check.h"
+#include "rules/merge_phases.h"
+#include "sim/observed_run.h"
 
 namespace mg {
 
@@ -60,16 +63,15 @@ RowEffect effect_of(const Trace& t, const Decision& d) {
 }  // namespace
 
 RightOfWay compute_right_of_way(const Scenario& s, const Trace& t) {
+  return compute_right_of_way(s, t, observe_merge_phases(observed_trace_of(s, t)));
+}
+
+RightOfWay compute_right_of_way(const Scenario& s, const Trace& t, const MergePhases& phases) {
   RightOfWay row;
   const int traffic = s.vehicles.empty() ? kNobody : kMainLane;
   const double end = std::numeric_limits<double>::infinity();
-  double merge_complete = end;
-  for (const auto& e : t.events) {
-    if (e.kind == EventKind::kMergeComplete && e.vehicle_id == kEgoId) {
-      merge_complete = e.time_s;
-      break;
-    }
-  }
+  const std::optional<MergePhaseEvent> complete = phases.first(MergePhaseKind::kComplete);
+  const double merge_complete = complete ? complete->time_s : end;
   int holder = traffic;
   row.timeline.emplace_back(0.0, holder);
   auto change = [&](double time_s, int h) {

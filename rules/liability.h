@@ -23,6 +23,9 @@ struct RightOfWay {
   bool ego_held_within(double from_s, double to_s) const;
 };
 
+struct MergePhases;
+RightOfWay compute_right_of_way(const Scenario& s, const Trace& t, const MergePhases& phases);
+// The same, observing the merge phases from the trace itself.
 RightOfWay compute_right_of_way(const Scenario& s, const Trace& t);
 
 // Time an acceptance from `partner_id` was delivered to the ego at or before `time_s`

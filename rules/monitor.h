@@ -14,6 +14,7 @@
 #include "core/scenario.h"
 #include "rules/check.h"
 #include "rules/liability.h"
+#include "rules/merge_phases.h"
 #include "rules/pair_geometry.h"
 #include "rules/rule_catalog.h"
 #include "sim/trace.h"
@@ -25,6 +26,7 @@ struct MonitorContext {
   const Trace& trace;
   const RightOfWay& row;
   const CatalogParams& params;
+  const MergePhases& phases;  // the ego's observed merge (rules/merge_phases.h)
 };
 
 struct MonitorOutput {
@@ -110,6 +112,6 @@ struct MonitorEntry {
 const std::vector<MonitorEntry>& rule_monitors();
 // Runs every monitor; margins are kept only when `margins` is not null (reports).
 std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const RightOfWay& row,
-                                     std::vector<std::vector<double>>* margins);
+                                     const MergePhases& phases, std::vector<std::vector<double>>* margins);
 
 }  // namespace mg

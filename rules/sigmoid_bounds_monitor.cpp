@@ -132,9 +132,9 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       acc.set_detail(os.str());
     }
   }
-  for (const TraceEvent& e : ctx.trace.events) {
-    if (e.kind != EventKind::kMergeMidpoint || e.vehicle_id != kEgoId) continue;
-    const std::size_t i = step_at(ctx.trace, e.time_s);
+  for (const MergePhaseEvent& e : ctx.phases.events) {
+    if (e.kind != MergePhaseKind::kMidpoint) continue;
+    const std::size_t i = e.step;
     const TraceStep& st = steps[i];
     // Follower and leader in the target (rightmost main) lane at the midpoint.
     std::size_t follower = 0, leader = 0;

@@ -9,8 +9,7 @@ namespace mg {
 MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
   const auto& steps = ctx.trace.steps;
   MarginAccumulator acc("smoothness_oscillation", steps.size());
-  int merges = 0;
-  for (const TraceEvent& e : ctx.trace.events) merges += e.kind == EventKind::kMergeStart && e.vehicle_id == kEgoId;
+  int merges = ctx.phases.count(MergePhaseKind::kStart);
   // An aborted merge (spec §6: abort when the P_c bounds cross) is a merge attempt of its own:
   // out, back, and out again later is not oscillation. Aborts are merge decisions followed (RSS
   // overrides aside) by a side-lane decision, or by a merge decision with another sigmoid: an

@@ -24,7 +24,9 @@ TEST(RightOfWay, MainLaneHoldsUntilADef1GapIsEstablished) {
   merge.mode = DecisionMode::kDef1Merge;
   merge.gap = Gap{1, -1};
   t.decisions = {halt, merge};
-  t.events.push_back({4.0, EventKind::kMergeComplete, 0, "", std::nullopt});
+  // The ego drifts toward the main lane at 0.8 m/s and is on its centre at t = 4 s: the merge
+  // is observed complete there.
+  for (TraceStep& st : t.steps) st.ego.y_m = st.time_s < 4.0 ? -3.5 + 0.8 * st.time_s : 0.0;
   const RightOfWay row = compute_right_of_way(s, t);
   ASSERT_EQ(row.timeline.size(), 3u);
   EXPECT_EQ(row.timeline[0], std::make_pair(0.0, kMainLane));

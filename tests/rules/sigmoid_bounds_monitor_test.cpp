@@ -1,5 +1,7 @@
 #include "rules/sigmoid_bounds_monitor.h"
 
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "trace_builder.h"
@@ -11,11 +13,17 @@ using test::base_scenario;
 using test::constant_accel_trace;
 using test::vehicle;
 
-// Merge midpoint at t = 1 s. All at 20 m/s, so D_lon = 45.175 m both ways (see the RSS test).
-Trace with_midpoint(Trace t) {
-  t.events.push_back({1.0, EventKind::kMergeMidpoint, 0, "", std::nullopt});
+// The ego drifts from the side lane centre (Y = -3.5) toward the main lane at 1.75 m/s, so its
+// centre reaches the lane line (Y = -1.75): the merge midpoint, at t = 1 s. All at 20 m/s, so
+// D_lon = 45.175 m both ways (see the RSS test).
+Trace with_midpoint_at(Trace t, double midpoint_s) {
+  for (TraceStep& st : t.steps) {
+    st.ego.y_m = -3.5 + 1.75 * st.time_s / midpoint_s;
+    st.ego.vy_mps = 1.75 / midpoint_s;
+  }
   return t;
 }
+Trace with_midpoint(Trace t) { return with_midpoint_at(std::move(t), 1.0); }
 
 TEST(SigmoidBoundsMonitor, MidpointBetweenFollowerAndLeaderWithSafeDistancesHolds) {
   // Follower 50 m behind: 50 - 45.175 = 4.825 m; leader 60 m ahead: 14.825 m. Margin 4.825 m.
@@ -196,8 +204,7 @@ Trace responder_slowing_at(const Scenario& s, double slows_at_s) {
   }
   t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 20, 15));
   t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 20, 15));
-  t.events.push_back({2.0, EventKind::kMergeMidpoint, 0, "", std::nullopt});
-  return t;
+  return with_midpoint_at(std::move(t), 2.0);
 }
 
 TEST(SigmoidBoundsMonitor, ResponderThatYieldedLateIsLiableEvenAfterItSlowed) {
@@ -229,8 +236,7 @@ Trace partner_within_tolerance(const Scenario& s) {
   t.decisions.back().time_s = 0.2;
   t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 44, 19.8));
   t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 44, 19.8));
-  t.events.push_back({2.0, EventKind::kMergeMidpoint, 0, "", std::nullopt});
-  return t;
+  return with_midpoint_at(std::move(t), 2.0);
 }
 
 TEST(SigmoidBoundsMonitor, PartnerWithinItsYieldToleranceIsJudgedOnItsAcceptedProfileToo) {

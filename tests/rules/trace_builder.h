@@ -8,7 +8,9 @@
 #include "core/scenario.h"
 #include "rules/check.h"
 #include "rules/liability.h"
+#include "rules/merge_phases.h"
 #include "rules/monitor.h"
+#include "sim/observed_run.h"
 #include "sim/trace.h"
 
 namespace mg::test {
@@ -70,8 +72,9 @@ inline Trace constant_accel_trace(const Scenario& s, double duration_s, std::vec
 
 // Runs one monitor over a trace with the right of way derived from it.
 inline MonitorOutput run(MonitorFn fn, const Scenario& s, const Trace& t) {
-  const RightOfWay row = compute_right_of_way(s, t);
-  return fn(MonitorContext{s, t, row, catalog_params()});
+  const MergePhases phases = observe_merge_phases(observed_trace_of(s, t));
+  const RightOfWay row = compute_right_of_way(s, t, phases);
+  return fn(MonitorContext{s, t, row, catalog_params(), phases});
 }
 
 inline TraceEvent message_event(double time_s, MessageType type, int from, int to, CoopCase c, double pc_m,

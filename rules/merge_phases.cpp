@@ -1,0 +1,47 @@
+#include "rules/merge_phases.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mg {
+
+int MergePhases::count(MergePhaseKind k) const {
+  return static_cast<int>(std::count_if(events.begin(), events.end(), [k](const MergePhaseEvent& e) { return e.kind == k; }));
+}
+
+std::optional<MergePhaseEvent> MergePhases::first(MergePhaseKind k, double from_time_s) const {
+  for (const MergePhaseEvent& e : events)
+    if (e.kind == k && e.time_s >= from_time_s) return e;
+  return std::nullopt;
+}
+
+MergePhases observe_merge_phases(const ObservedTrace& t) {
+  MergePhases out;
+  if (t.steps.empty()) return out;
+  const RuleParams& p = t.params.rules;
+  const double side_y = t.road.side_lane_y_m(), line_y = -0.5 * t.road.lane_width_m;
+  if (!(t.steps.front().vehicles[0].y_m < line_y)) return out;  // not in the side lane: no merge
+  bool started = false, midpoint = false;
+  for (std::size_t k = 0; k < t.steps.size(); ++k) {
+    const ObservedState& ego = t.steps[k].vehicles[0];
+    const auto emit = [&](MergePhaseKind kind) { out.events.push_back({kind, k, t.steps[k].time_s}); };
+    if (!started && ego.y_m > side_y + p.merge_start_offset_m) {
+      started = true;
+      emit(MergePhaseKind::kStart);
+    } else if (started && !midpoint && ego.y_m < side_y + p.merge_abort_offset_m) {
+      started = false;  // back in the side lane: the next departure is a new attempt
+      emit(MergePhaseKind::kAbort);
+    }
+    if (started && !midpoint && ego.y_m >= line_y) {
+      midpoint = true;
+      emit(MergePhaseKind::kMidpoint);
+    }
+    if (midpoint && std::abs(ego.y_m) < p.merge_complete_offset_m && std::abs(ego.yaw_rad) < p.merge_complete_yaw_rad) {
+      emit(MergePhaseKind::kComplete);
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace mg

@@ -1,9 +1,11 @@
 # mg_module(<target> LINK <deps...>): a static library from every .cpp in the calling
-# directory; headers are included as "<module dir>/<file>.h" relative to src/ or the top level.
+# directory (but main.cpp, an executable's, and *_fuzzer.cpp); headers are included as
+# "<module dir>/<file>.h" relative to src/ or the top level.
 function(mg_module target)
   cmake_parse_arguments(ARG "" "" "LINK" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   list(FILTER sources EXCLUDE REGEX ".*_fuzzer\\.cpp$")
+  list(FILTER sources EXCLUDE REGEX "/main\\.cpp$")
   if(sources)
     add_library(${target} STATIC ${sources})
     target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR})

@@ -55,8 +55,10 @@ int run_check(const std::vector<std::string>& args) {
   return result.holds ? kExitOk : kExitViolation;
 }
 
-const CommandRegistration kRegistration(
-    "check", "check SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--report DIR] [--json]", run_check);
-
 }  // namespace
+
+Command check_command() {
+  return {"check", "check SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--report DIR] [--json]", run_check};
+}
+
 }  // namespace mg::cli

@@ -1,18 +1,37 @@
+include(GNUInstallDirs)
+
 # mg_module(<target> LINK <deps...>): a static library from every .cpp in the calling
-# directory; headers are included as "<module dir>/<file>.h" relative to src/ or the top level.
+# directory (but main.cpp, an executable's, and *_fuzzer.cpp); headers are included as
+# "<module dir>/<file>.h" relative to src/ or the top level, in the build tree and, installed, under
+# include/mergeguard/ (docs/package.md). The library is exported as mergeguard::<module dir>
+# (mg_rules as mergeguard::rules) and named libmergeguard_<module dir>.a.
 function(mg_module target)
   cmake_parse_arguments(ARG "" "" "LINK" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   list(FILTER sources EXCLUDE REGEX ".*_fuzzer\\.cpp$")
+  list(FILTER sources EXCLUDE REGEX "/main\\.cpp$")
+  file(RELATIVE_PATH module_dir ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
+  string(REGEX REPLACE "^src/" "" module_dir "${module_dir}")
+  set(include_dirs $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src> $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/mergeguard>)
   if(sources)
     add_library(${target} STATIC ${sources})
-    target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR})
+    target_include_directories(${target} PUBLIC ${include_dirs})
     target_link_libraries(${target} PUBLIC ${ARG_LINK})
+    # The headers use C++20: a requirement consumers inherit (a feature, not a forced flag).
+    target_compile_features(${target} PUBLIC cxx_std_20)
+    set_target_properties(${target} PROPERTIES OUTPUT_NAME mergeguard_${module_dir})
   else()
     add_library(${target} INTERFACE)
-    target_include_directories(${target} INTERFACE ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR})
+    target_include_directories(${target} INTERFACE ${include_dirs})
     target_link_libraries(${target} INTERFACE ${ARG_LINK})
+    target_compile_features(${target} INTERFACE cxx_std_20)
   endif()
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${module_dir})
+  add_library(mergeguard::${module_dir} ALIAS ${target})
+  install(TARGETS ${target} EXPORT mergeguardTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  file(GLOB headers CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.h)
+  install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/mergeguard/${module_dir})
 endfunction()
 
 # mg_test(<name> LINK <deps...>): one GoogleTest executable from every *_test.cpp in the

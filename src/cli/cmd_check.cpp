@@ -62,8 +62,10 @@ int run_check(const std::vector<std::string>& args) {
   return result.holds ? kExitOk : kExitViolation;
 }
 
-const CommandRegistration kRegistration(
-    "check", "check SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--report DIR] [--json] [--save-trace FILE]", run_check);
-
 }  // namespace
+
+Command check_command() {
+  return {"check", "check SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--report DIR] [--json] [--save-trace FILE]", run_check};
+}
+
 }  // namespace mg::cli

@@ -51,7 +51,10 @@ int run_corpus(const std::vector<std::string>& args) {
   return run_merge(std::vector<std::string>(args.begin() + 1, args.end()));
 }
 
-const CommandRegistration kRegistration("corpus", "corpus merge DIR... --into DIR [--json]", run_corpus);
-
 }  // namespace
+
+Command corpus_command() {
+  return {"corpus", "corpus merge DIR... --into DIR [--json]", run_corpus};
+}
+
 }  // namespace mg::cli

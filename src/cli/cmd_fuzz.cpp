@@ -190,10 +190,12 @@ int run_fuzz(const std::vector<std::string>& args) {
   return result.failing_scenarios > 0 ? kExitViolation : kExitOk;
 }
 
-const CommandRegistration kRegistration(
-    "fuzz",
-    "fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P] [--search random|guided] [--corpus DIR] [--report DIR] [--json]",
-    run_fuzz);
-
 }  // namespace
+
+Command fuzz_command() {
+  return {"fuzz",
+          "fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P] [--search random|guided] [--corpus DIR] [--report DIR] [--json]",
+          run_fuzz};
+}
+
 }  // namespace mg::cli

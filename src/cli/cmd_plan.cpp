@@ -75,8 +75,10 @@ int run_plan(const std::vector<std::string>& args) {
   return kExitOk;
 }
 
-const CommandRegistration kRegistration("plan", "plan SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--json]",
-                                        run_plan);
-
 }  // namespace
+
+Command plan_command() {
+  return {"plan", "plan SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--json]", run_plan};
+}
+
 }  // namespace mg::cli

@@ -75,7 +75,10 @@ int run_replay(const std::vector<std::string>& args) {
   return failed > 0 ? kExitViolation : kExitOk;
 }
 
-const CommandRegistration kRegistration("replay", "replay [CASE.json | DIR]... [--json] [--update]", run_replay);
-
 }  // namespace
+
+Command replay_command() {
+  return {"replay", "replay [CASE.json | DIR]... [--json] [--update]", run_replay};
+}
+
 }  // namespace mg::cli

@@ -45,7 +45,10 @@ int run_report(const std::vector<std::string>& args) {
   return run_merge(std::vector<std::string>(args.begin() + 1, args.end()));
 }
 
-const CommandRegistration kRegistration("report", "report merge REPORT.json... --out DIR [--partial] [--json]", run_report);
-
 }  // namespace
+
+Command report_command() {
+  return {"report", "report merge REPORT.json... --out DIR [--partial] [--json]", run_report};
+}
+
 }  // namespace mg::cli

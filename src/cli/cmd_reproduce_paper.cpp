@@ -79,10 +79,12 @@ int run(const std::vector<std::string>& args) {
   return consistent ? kExitOk : kExitViolation;
 }
 
-const CommandRegistration registration(
-    "reproduce-paper",
-    "reproduce-paper [--out DIR] [--scenario FILE] [--json] [--search [--search-out FILE] [--search-scenario FILE]]",
-    run);
-
 }  // namespace
+
+Command reproduce_paper_command() {
+  return {"reproduce-paper",
+          "reproduce-paper [--out DIR] [--scenario FILE] [--json] [--search [--search-out FILE] [--search-scenario FILE]]",
+          run};
+}
+
 }  // namespace mg::cli

@@ -60,7 +60,10 @@ int run_rss(const std::vector<std::string>& args) {
   return kExitOk;
 }
 
-const CommandRegistration kRegistration("rss", "rss longitudinal|lateral < INPUT.json", run_rss);
-
 }  // namespace
+
+Command rss_command() {
+  return {"rss", "rss longitudinal|lateral < INPUT.json", run_rss};
+}
+
 }  // namespace mg::cli

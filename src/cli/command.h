@@ -1,5 +1,5 @@
-// Subcommand registry of the mergeguard binary. Each cmd_<name>.cpp registers itself with a
-// static CommandRegistration; main.cpp dispatches. Exit codes (spec §10): 0 holds,
+// Subcommands of the mergeguard command line. Each cmd_<name>.cpp defines one <name>_command();
+// commands() lists them and cli_main (cli/cli_main.h) dispatches. Exit codes (spec §10): 0 holds,
 // 1 violation found, 2 bad input, usage or I/O (one-line error on stderr), 3 a campaign stopped by
 // a signal.
 #pragma once
@@ -21,19 +21,26 @@ inline constexpr int kExitInterrupted = 3;  // fuzz stopped by SIGINT, SIGTERM o
 using CommandFn = std::function<int(const std::vector<std::string>& args)>;
 
 struct Command {
+  std::string name;   // e.g. "plan"
   std::string usage;  // one line, e.g. "plan SCENARIO.json [--planner P] [--json]"
   CommandFn run;
 };
 
-std::map<std::string, Command>& commands();
+// Every subcommand by name. The list is explicit (command.cpp), not filled by static
+// registration objects in the cmd_*.cpp files: they live in a static library (mg_cli), and the
+// linker drops an object file that nothing references, its static initialisers with it.
+const std::map<std::string, Command>& commands();
 
-struct CommandRegistration {
-  CommandRegistration(const std::string& name, const std::string& usage, CommandFn fn) {
-    commands()[name] = Command{usage, std::move(fn)};
-  }
-};
+Command check_command();
+Command corpus_command();
+Command fuzz_command();
+Command plan_command();
+Command replay_command();
+Command report_command();
+Command reproduce_paper_command();
+Command rss_command();
 
-// Thrown by argument parsing helpers; main prints "mergeguard <cmd>: <message>" and exits 2.
+// Thrown by argument parsing helpers; cli_main prints "mergeguard <cmd>: <message>" and exits 2.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

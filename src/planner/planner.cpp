@@ -3,19 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planner/rcpp_planner.h"
-#include "planner/tripfield_planner.h"
-
 namespace mg {
-
-std::unique_ptr<Planner> make_planner(const std::string& name) {
-  if (name == "rcpp") return std::make_unique<RcppPlanner>(false);
-  if (name == "rcpp-coop") return std::make_unique<RcppPlanner>(true);
-  if (name == "tripfield") return std::make_unique<TripFieldPlanner>();
-  return nullptr;
-}
-
-std::vector<std::string> planner_names() { return {"rcpp", "rcpp-coop", "tripfield"}; }
 
 std::string to_string(DecisionMode m) {
   switch (m) {

@@ -1,6 +1,7 @@
 // The one planner interface that the simulator, checker and fuzzer drive (issue #3 item 1).
 // A planner sees a snapshot of the world and returns a reference path, a speed command,
-// outgoing V2V messages and a decision record. New planners register in planner_factory.cpp.
+// outgoing V2V messages and a decision record. New planners register with register_planner
+// (planner/planner_registry.h), built-in or not.
 #pragma once
 
 #include <cassert>
@@ -116,8 +117,9 @@ class Planner {
   virtual PlanOutput plan(const WorldSnapshot& world) = 0;
 };
 
-// "rcpp" (Definition 1 only), "rcpp-coop" (Definition 1 and 2), "tripfield" (baseline).
-// Returns nullptr for an unknown name.
+// A planner of the registry (planner/planner_registry.h): the built-ins "rcpp" (Definition 1
+// only), "rcpp-coop" (Definition 1 and 2), "tripfield" (baseline), then any registered by the
+// program. Returns nullptr for an unknown name. planner_names() lists them in registration order.
 std::unique_ptr<Planner> make_planner(const std::string& name);
 std::vector<std::string> planner_names();
 

@@ -1,8 +1,7 @@
 // The observable trace (issue #15): what anyone watching the road and the V2V channel could
 // record of a merge, and nothing a planner says about itself: the input of the independent
-// oracle, whose rule monitors read only this, its declarations and the rule parameters. In this
-// release the format and its strict loader and writer exist (docs/trace_format.md); the monitors
-// that judge it, `check --save-trace` and `check-trace` are on the `oracle` branch.
+// oracle, whose rule monitors are to read only this, its declarations and the rule parameters
+// (docs/trace_format.md; `check --save-trace` writes one, the merge phases are read from it).
 #pragma once
 
 #include <cstddef>

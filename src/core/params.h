@@ -41,7 +41,8 @@ struct PlannerParams {
 // The rule monitors' own parameters (issue #15): the durations Definitions 1 and 2 are judged
 // with, how a merge is recognised in the observed motion, and the tolerances. A planner may use
 // other values (PlannerParams) and is still judged by these. In this release they are validated
-// and kept (docs/scenario_format.md); the oracle that reads them is on the `oracle` branch.
+// and kept (docs/scenario_format.md); the merge-phase thresholds are read by rules/merge_phases.h,
+// the rest by the oracle still to come (issue #15).
 struct RuleParams {
   double merge_duration_s = 4.0;        // rho_m of Def. 1, [0.5, 20]
   double comm_threshold_s = 1.0;        // rho_c of Def. 2, [0.05, 10]

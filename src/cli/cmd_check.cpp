@@ -43,7 +43,7 @@ int run_check(const std::vector<std::string>& args) {
   std::string trace_path;
   bool json = false;
   app.add_option("scenario", path, "scenario JSON file")->required();
-  app.add_option("--planner", planner_name, "rcpp, rcpp-coop or tripfield")->check(CLI::IsMember(planner_names()));
+  app.add_option("--planner", planner_name, "a registered planner (built in: rcpp, rcpp-coop, tripfield)")->check(CLI::IsMember(planner_names()));
   app.add_option("--report", report_dir, "write report.json, report.md and report.html into this directory");
   app.add_flag("--json", json, "print the report JSON on stdout");
   app.add_option("--save-trace", trace_path, "write the run's observable trace (docs/trace_format.md) to this file");

@@ -145,7 +145,7 @@ int run_fuzz(const std::vector<std::string>& args) {
   app.add_option("--seed", o.seed, "campaign seed (run i uses a seed derived from it and i)");
   app.add_option("--jobs", o.jobs, "parallel workers (results do not depend on it)");
   app.add_option("--shard", shard, "K/N: run only the indices i with i mod N = K");
-  app.add_option("--planner", o.planner, "rcpp, rcpp-coop or tripfield")->check(CLI::IsMember(planner_names()));
+  app.add_option("--planner", o.planner, "a registered planner (built in: rcpp, rcpp-coop, tripfield)")->check(CLI::IsMember(planner_names()));
   app.add_option("--corpus", o.corpus_dir, "corpus directory (minimal cases are added here, one per new signature)");
   app.add_option("--report", report_dir, "write report.json, report.md, report.html here");
   app.add_flag("--json", json, "print one JSON summary on stdout");

@@ -53,7 +53,7 @@ int run_plan(const std::vector<std::string>& args) {
   std::string planner_name = "rcpp";
   bool json = false;
   app.add_option("scenario", path, "scenario JSON file")->required();
-  app.add_option("--planner", planner_name, "rcpp, rcpp-coop or tripfield")->check(CLI::IsMember(planner_names()));
+  app.add_option("--planner", planner_name, "a registered planner (built in: rcpp, rcpp-coop, tripfield)")->check(CLI::IsMember(planner_names()));
   app.add_flag("--json", json, "print one JSON document");
   if (!parse_args(app, args)) return kExitOk;
   const Scenario scenario = load_scenario(path);

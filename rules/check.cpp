@@ -16,7 +16,6 @@
 #include "rules/rss_distance_monitor.h"
 #include "rules/sigmoid_bounds_monitor.h"
 #include "rules/smoothness_monitor.h"
-#include "sim/observed_run.h"
 
 namespace mg {
 
@@ -68,7 +67,7 @@ std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const Ri
 CheckResult check_trace(const Scenario& scenario, Trace&& trace) {
   CheckResult r;
   r.planner = trace.planner;
-  const MergePhases phases = observe_merge_phases(observed_trace_of(scenario, trace));
+  const MergePhases phases = observe_merge_phases(scenario, trace);
   const RightOfWay row = compute_right_of_way(scenario, trace, phases);
   r.right_of_way = row.timeline;
   r.rules = run_monitors(scenario, trace, row, phases, nullptr);

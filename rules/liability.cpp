@@ -6,7 +6,6 @@
 
 #include "rules/check.h"
 #include "rules/merge_phases.h"
-#include "sim/observed_run.h"
 
 namespace mg {
 
@@ -63,7 +62,7 @@ RowEffect effect_of(const Trace& t, const Decision& d) {
 }  // namespace
 
 RightOfWay compute_right_of_way(const Scenario& s, const Trace& t) {
-  return compute_right_of_way(s, t, observe_merge_phases(observed_trace_of(s, t)));
+  return compute_right_of_way(s, t, observe_merge_phases(s, t));
 }
 
 RightOfWay compute_right_of_way(const Scenario& s, const Trace& t, const MergePhases& phases) {

@@ -18,6 +18,8 @@
 #include <vector>
 
 #include "core/observed_trace.h"
+#include "core/scenario.h"
+#include "sim/trace.h"
 
 namespace mg {
 
@@ -37,5 +39,8 @@ struct MergePhases {
 };
 
 MergePhases observe_merge_phases(const ObservedTrace& t);
+// The same for a simulated run, read from its ego states without building its observable trace
+// (the checker's hot path); equal to observe_merge_phases(observed_trace_of(s, t)).
+MergePhases observe_merge_phases(const Scenario& s, const Trace& t);
 
 }  // namespace mg

@@ -115,10 +115,11 @@ class Run {
   // The ego's box overlaps a main-lane vehicle's (the collision rule's FCL test, core/collision.h).
   bool ego_collides() const {
     const BoxPose ego{ego_.x_m, ego_.y_m, ego_.yaw_rad, s_.ego.size.length_m, s_.ego.size.width_m, s_.ego.size.height_m};
+    const Footprint ego_fp = footprint_of(ego);
     for (std::size_t i = 0; i < others_.size(); ++i) {
       const VehicleSize& z = s_.vehicles[i].size;
       const BoxPose other{others_[i].x_m, others_[i].y_m, others_[i].yaw_rad, z.length_m, z.width_m, z.height_m};
-      if (aabb_clearance_m(ego, other) <= 0.0 && fcl_box_contact(ego, other).collide) return true;
+      if (clearance_m(ego_fp, footprint_of(other)) <= 0.0 && fcl_box_contact(ego, other).collide) return true;
     }
     return false;
   }

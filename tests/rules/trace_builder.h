@@ -10,7 +10,6 @@
 #include "rules/liability.h"
 #include "rules/merge_phases.h"
 #include "rules/monitor.h"
-#include "sim/observed_run.h"
 #include "sim/trace.h"
 
 namespace mg::test {
@@ -72,7 +71,7 @@ inline Trace constant_accel_trace(const Scenario& s, double duration_s, std::vec
 
 // Runs one monitor over a trace with the right of way derived from it.
 inline MonitorOutput run(MonitorFn fn, const Scenario& s, const Trace& t) {
-  const MergePhases phases = observe_merge_phases(observed_trace_of(s, t));
+  const MergePhases phases = observe_merge_phases(s, t);
   const RightOfWay row = compute_right_of_way(s, t, phases);
   return fn(MonitorContext{s, t, row, catalog_params(), phases});
 }

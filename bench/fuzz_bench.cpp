@@ -13,6 +13,7 @@
 #include "fuzz/scenario_gen.h"
 #include "fuzz/shrink.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 #include "core/collision.h"
 
 namespace {
@@ -26,7 +27,7 @@ void BM_Std4Scenario(benchmark::State& state, const std::string& planner) {
   const mg::Scenario& s = std4();
   for (auto _ : state) {
     mg::CheckResult r = mg::check_scenario(s, planner);
-    benchmark::DoNotOptimize(r.trace.digest);
+    benchmark::DoNotOptimize(r.trace_digest);
   }
   state.SetItemsProcessed(state.iterations());  // items_per_second = std-4 scenarios per second
 }

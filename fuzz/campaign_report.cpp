@@ -1,5 +1,5 @@
 #include "fuzz/campaign_report.h"
-#include "sim/svg_plot.h"
+#include "core/svg_plot.h"
 
 #include <algorithm>
 #include <cmath>

@@ -127,7 +127,7 @@ CaseVerdict verdict_of(const RunOutcome& outcome) {
     v.collision_liable_id = result.collision ? result.collision_liable_id : kNobody;
     for (const RuleResult& r : result.rules)
       if (!r.holds) v.violations.push_back({r.rule_id, r.liable_id, r.first_violation_time_s, r.min_margin, r.unit});
-    v.trace_digest = result.trace.digest;
+    v.trace_digest = result.trace_digest;
   } else {
     v.holds = false;  // the check threw
   }

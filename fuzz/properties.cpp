@@ -66,9 +66,10 @@ void failed_rules(const char* property, const std::vector<std::string>& rule_ids
 void side_lane_end(const Scenario& s, const CheckResult& result, std::vector<PropertyFailure>& out) {
   failed_rules(property::kSideLaneEnd, {kRuleSideLaneEndMonitor}, result, out);
   const double boundary_y = -s.road.lane_width_m / 2.0;
-  for (const TraceStep& step : result.trace.steps) {
-    if (step.ego.y_m >= boundary_y) continue;
-    const double margin_m = s.road.side_lane_end_x_m - (step.ego.x_m + s.ego.size.length_m / 2.0);
+  for (const ObservedStep& step : result.trace.steps) {
+    const ObservedState& ego = step.vehicles[0];
+    if (ego.y_m >= boundary_y) continue;
+    const double margin_m = s.road.side_lane_end_x_m - (ego.x_m + s.ego.size.length_m / 2.0);
     if (margin_m < 0.0) {
       out.push_back({property::kSideLaneEnd, kRuleSideLaneEnd, kEgoId, step.time_s, margin_m,
                      "ego front passed the side lane end while its centre was in the side lane"});
@@ -95,7 +96,7 @@ std::vector<PropertyFailure> evaluate_properties(const Scenario& scenario, const
   collision_liable(result, out);
   side_lane_end(scenario, result, out);
   failed_rules(property::kNoOscillation, kOscillationRules, result, out);
-  if (rerun_digest && *rerun_digest != result.trace.digest)
+  if (rerun_digest && *rerun_digest != result.trace_digest)
     out.push_back({property::kDeterminism, kRuleDigest, kNobody, 0.0, -1.0, "a second run gave another trace digest"});
   failed_rules(property::kProgress, {kRuleProgress}, result, out);
   return out;
@@ -108,7 +109,7 @@ RunOutcome run_properties(const Scenario& scenario, const CheckFn& check, const 
   try {
     outcome.result = check(scenario);
     std::optional<std::uint64_t> rerun;
-    if (check_determinism) rerun = check(scenario).trace.digest;
+    if (check_determinism) rerun = check(scenario).trace_digest;
     outcome.failures = evaluate_properties(scenario, *outcome.result, rerun);
   } catch (const std::exception& e) {
     outcome.result.reset();

@@ -19,6 +19,7 @@
 #include "fuzz/properties.h"
 #include "planner/planner.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 
 namespace {
 

@@ -51,9 +51,7 @@ const std::vector<MonitorEntry>& rule_monitors() {
   return monitors;
 }
 
-std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const RightOfWay& row,
-                                     const MergePhases& phases, std::vector<std::vector<double>>* margins) {
-  const MonitorContext ctx{s, t, row, catalog_params(), phases};
+std::vector<RuleResult> run_monitors(const MonitorContext& ctx, std::vector<std::vector<double>>* margins) {
   std::vector<RuleResult> results;
   results.reserve(rule_monitors().size());
   for (const MonitorEntry& m : rule_monitors()) {
@@ -64,21 +62,29 @@ std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const Ri
   return results;
 }
 
-CheckResult check_trace(const Scenario& scenario, Trace&& trace) {
+CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams>& rules) {
   CheckResult r;
-  r.planner = trace.planner;
-  const MergePhases phases = observe_merge_phases(scenario, trace);
-  const RightOfWay row = compute_right_of_way(scenario, trace, phases);
+  if (trace.planner_annotations.is_object() && trace.planner_annotations.contains("planner") &&
+      trace.planner_annotations["planner"].is_string())
+    r.planner = trace.planner_annotations["planner"].get<std::string>();  // shown, never judged
+  const RuleParams params = rules.value_or(trace.params.rules);
+  const MergePhases phases = observe_merge_phases(trace, params);
+  r.rule_params = params;
+  for (const MergePhaseEvent& e : phases.events) r.merge_phase_times_s.push_back(e.time_s);
+  const MergeAttempts attempts = observe_merge_attempts(trace, params, phases);
+  const RightOfWay row = compute_right_of_way(trace, attempts);
   r.right_of_way = row.timeline;
-  r.rules = run_monitors(scenario, trace, row, phases, nullptr);
+  for (const MergeAttempt& a : attempts.attempts) r.right_of_way_observations.push_back(a.observation);
+  r.rules = run_monitors(MonitorContext{trace, row, params, phases, attempts}, nullptr);
   for (const RuleResult& rule : r.rules) r.holds = r.holds && rule.holds;
   assign_liability(r);
+  r.trace_digest = trace_digest(trace);
   r.trace = std::move(trace);
   return r;
 }
 
-CheckResult check_trace(const Scenario& scenario, const Trace& trace) {
-  return check_trace(scenario, Trace(trace));
+CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules) {
+  return check_observed(ObservedTrace(trace), rules);
 }
 
 namespace {
@@ -110,9 +116,11 @@ nlohmann::json check_result_to_json(const CheckResult& r) {
     rules.push_back(rule_to_json(rule));
     if (!rule.holds) violated.push_back(rule.rule_id);
   }
-  for (const TraceEvent& e : r.trace.events) {
-    timeline.push_back({{"time_s", e.time_s}, {"kind", to_string(e.kind)}, {"actor", party_name(e.vehicle_id)},
-                        {"detail", e.detail}});
+  for (const ChannelEvent& e : r.trace.channel) {
+    const V2vMessage& m = e.message;
+    timeline.push_back({{"time_s", e.time_s}, {"kind", "message_" + to_string(e.kind)},
+                        {"actor", party_name(m.from_id)},
+                        {"detail", to_string(m.type) + " to " + party_name(m.to_id)}});
   }
   for (const RuleResult& rule : r.rules) {
     if (rule.holds) continue;
@@ -125,7 +133,7 @@ nlohmann::json check_result_to_json(const CheckResult& r) {
   nlohmann::json row = nlohmann::json::array();
   for (const auto& [t, holder] : r.right_of_way) row.push_back({{"time_s", t}, {"holder", party_name(holder)}});
   char digest[17];
-  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(r.trace.digest));
+  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(r.trace_digest));
   return {{"report_format_version", 1},
           {"planner", r.planner},
           {"verdict", r.holds ? "holds" : "violated"},
@@ -136,6 +144,7 @@ nlohmann::json check_result_to_json(const CheckResult& r) {
           {"rules_violated", violated},
           {"rules", rules},
           {"right_of_way", row},
+          {"right_of_way_observations", r.right_of_way_observations},
           {"timeline", timeline},
           {"trace_digest", digest}};
 }

@@ -1,15 +1,17 @@
-// The rule checker's front door (spec §8): simulate a scenario with a planner, run every rule
-// monitor over the trace, assign liability. Used by `mergeguard check`, the fuzzer and replay.
+// The rule checker's front door (spec §8): judge an observable trace (core/observed_trace.h) by
+// every rule monitor and assign liability. It reads the trace's declarations, observed states,
+// V2V channel and the rule parameters, never its planner annotations; `rules/` knows nothing of
+// planners or the simulator (sim/checked_run.h simulates and then calls this).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "core/scenario.h"
-#include "sim/trace.h"
+#include "core/observed_trace.h"
 
 namespace mg {
 
@@ -46,15 +48,17 @@ struct CheckResult {
   std::string liability_detail;       // one line: which rule, when, why
   // Right-of-way holder over time: (time_s, party id) at every change.
   std::vector<std::pair<double, int>> right_of_way;
-  Trace trace;
+  std::vector<std::string> right_of_way_observations;  // one line per merge attempt (merge_attempts.h)
+  std::vector<double> merge_phase_times_s;            // the observed merge phases (merge_phases.h)
+  RuleParams rule_params;                             // what the trace was judged with
+  ObservedTrace trace;
+  std::uint64_t trace_digest = 0;     // trace_digest(trace)
 };
 
-// Runs the simulation and all monitors. Never throws for a valid scenario; an unknown planner
-// name raises std::invalid_argument.
-CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name);
-// Runs all monitors over an existing trace (the rvalue overload takes the trace without a copy).
-CheckResult check_trace(const Scenario& scenario, const Trace& trace);
-CheckResult check_trace(const Scenario& scenario, Trace&& trace);
+// Judges a trace with its own rule parameters (trace.params), or with `rules` when given
+// (`--params`). The rvalue overload takes the trace without a copy.
+CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams>& rules = std::nullopt);
+CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules = std::nullopt);
 
 nlohmann::json check_result_to_json(const CheckResult& r);
 

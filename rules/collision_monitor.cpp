@@ -8,16 +8,16 @@
 
 namespace mg {
 
-BoxPose box_pose_of(const Scenario& s, const TraceStep& step, std::size_t k) {
-  const VehicleState& v = state_of(step, k);
+BoxPose box_pose_of(const ObservedTrace& s, const ObservedStep& step, std::size_t k) {
+  const ObservedState& v = state_of(step, k);
   const VehicleSize& z = size_of(s, k);
   return {v.x_m, v.y_m, v.yaw_rad, z.length_m, z.width_m, z.height_m};
 }
 
 MonitorOutput monitor_collision(const MonitorContext& ctx) {
-  const Scenario& s = ctx.scenario;
+  const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
-  const std::size_t n = s.vehicles.size() + 1;
+  const std::size_t n = s.vehicles.size();
   MarginAccumulator acc("collision", steps.size());
   std::vector<BoxPose> pose_prev(n), pose_now(n);
   std::vector<Footprint> fp_now(n), swept(n);

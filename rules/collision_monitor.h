@@ -7,7 +7,7 @@
 
 namespace mg {
 
-BoxPose box_pose_of(const Scenario& s, const TraceStep& step, std::size_t k);
+BoxPose box_pose_of(const ObservedTrace& s, const ObservedStep& step, std::size_t k);
 
 // The collision rule does not name a liable party itself (kNobody): the liability engine
 // takes it from the broken obligations before the collision (rules/liability.h).

@@ -7,25 +7,6 @@
 
 namespace mg {
 
-std::vector<CoopExchange> coop_exchanges(const Trace& t) {
-  std::vector<CoopExchange> out;
-  for (const TraceEvent& e : t.events) {
-    if (e.kind != EventKind::kMessageSent || !e.message) continue;
-    const V2vMessage& m = *e.message;
-    if (m.type == MessageType::kRequest && m.from_id == kEgoId) {
-      out.push_back({&m, e.time_s, -1.0});
-    } else if (m.type == MessageType::kAccept && m.to_id == kEgoId) {
-      for (auto it = out.rbegin(); it != out.rend(); ++it) {  // the latest request to this responder
-        if (it->request->to_id == m.from_id) {
-          if (it->accept_time_s < 0.0) it->accept_time_s = e.time_s;
-          break;
-        }
-      }
-    }
-  }
-  return out;
-}
-
 namespace {
 
 // Trace times are sums of k steps and t_r + rho_c is computed another way: the two differ by
@@ -43,11 +24,11 @@ double merge_midpoint_after(const MergePhases& phases, double time_s) {
 // Def. 2.1B / 2.2B: the responder of an accepted request changes speed toward v_o* at most at
 // its b_min (2.1) or a_acc (2.2), and has reached v_o* once rho_c (+T) has passed.
 MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
-  const Scenario& s = ctx.scenario;
+  const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
   const bool ahead = which == CoopCase::kEgoAhead;
   MarginAccumulator acc(ahead ? "def2_1b_responder" : "def2_2b_responder", steps.size());
-  const double rho_c = s.params.planner.comm_threshold_s;
+  const double rho_c = ctx.params.comm_threshold_s;
   const double tol = ctx.params.speed_tolerance_mps;
   for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
     if (x.request->coop_case != which || x.accept_time_s < 0.0 || steps.empty()) continue;
@@ -61,7 +42,7 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
     const double v0 = speed_of(state_of(steps[first], k));
     const double deadline = x.request_time_s + rho_c + s.params.rss.response_time_s;
     const double end = std::min(merge_midpoint_after(ctx.phases, x.accept_time_s),
-                                x.request_time_s + rho_c + s.params.planner.merge_duration_s);
+                                x.request_time_s + rho_c + ctx.params.merge_duration_s);
     bool reached = false;
     for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end; ++i) {
       const double t = steps[i].time_s;
@@ -102,7 +83,7 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
 
 // Def. 2.1A: the request carries P_c ahead of the ego and D*_lon covering at least contact.
 MonitorOutput monitor_def2_1a_request(const MonitorContext& ctx) {
-  const Scenario& s = ctx.scenario;
+  const ObservedTrace& s = ctx.trace;
   MarginAccumulator acc("def2_1a_request", ctx.trace.steps.size());
   if (ctx.trace.steps.empty()) return acc.finish();
   for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
@@ -110,14 +91,14 @@ MonitorOutput monitor_def2_1a_request(const MonitorContext& ctx) {
     if (m.coop_case != CoopCase::kEgoAhead) continue;
     const std::size_t i = step_at(ctx.trace, x.request_time_s);
     const int k = index_of_party(s, m.to_id);
-    const double contact = (s.ego.size.length_m + (k > 0 ? size_of(s, k).length_m : 0.0)) / 2.0;
-    const double pc_ahead = std::isfinite(m.pc_m) ? m.pc_m - ctx.trace.steps[i].ego.x_m : -1.0;
+    const double contact = (size_of(s, 0).length_m + (k > 0 ? size_of(s, static_cast<std::size_t>(k)).length_m : 0.0)) / 2.0;
+    const double pc_ahead = std::isfinite(m.pc_m) ? m.pc_m - ego_of(ctx.trace.steps[i]).x_m : -1.0;
     const double d_star = std::isfinite(m.d_lon_star_m) ? m.d_lon_star_m - contact : -1.0;
     const double margin = std::min(pc_ahead, d_star);
     if (acc.record(i, x.request_time_s, margin, kEgoId, contact, m.d_lon_star_m)) {
       std::ostringstream os;
       os << "request to " << party_name(m.to_id) << " at t = " << x.request_time_s << " s carries P_c = " << m.pc_m
-         << " m (ego at x = " << ctx.trace.steps[i].ego.x_m << " m) and D*_lon = " << m.d_lon_star_m << " m";
+         << " m (ego at x = " << ego_of(ctx.trace.steps[i]).x_m << " m) and D*_lon = " << m.d_lon_star_m << " m";
       acc.set_detail(os.str());
     }
   }
@@ -134,12 +115,12 @@ namespace {
 // rear vehicle of an RSS-dangerous pair (the RSS proper response, braking at least b_min and up
 // to b_max, then governs its speed; rss_longitudinal judges it).
 double def2_2a_window_end_s(const MonitorContext& ctx, const CoopExchange& x) {
-  const double rho_c = ctx.scenario.params.planner.comm_threshold_s;
+  const double rho_c = ctx.params.comm_threshold_s;
   double end = x.request_time_s + rho_c;
-  for (const TraceEvent& e : ctx.trace.events) {
+  for (const ChannelEvent& e : ctx.trace.channel) {
     if (e.time_s > end + kTieS) break;
-    if (e.kind == EventKind::kMessageDelivered && e.message && e.message->type == MessageType::kRefuse &&
-        e.message->from_id == x.request->to_id && e.message->to_id == kEgoId && e.time_s >= x.request_time_s) {
+    if (e.kind == ChannelEventKind::kDelivered && e.message.type == MessageType::kRefuse &&
+        e.message.from_id == x.request->to_id && e.message.to_id == kEgoId && e.time_s >= x.request_time_s) {
       end = e.time_s;
       break;
     }
@@ -156,18 +137,18 @@ double def2_2a_window_end_s(const MonitorContext& ctx, const CoopExchange& x) {
 // Def. 2.2A: after its request the ego brakes at most b_min during rho_c (ineq. (4) counts on it),
 // unless the partner refused or an RSS danger with the ego behind came first.
 MonitorOutput monitor_def2_2a_ego_brake(const MonitorContext& ctx) {
-  const Scenario& s = ctx.scenario;
+  const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
   MarginAccumulator acc("def2_2a_ego_brake", steps.size());
-  const double b_min = s.ego.limits.brake_min_mps2;
+  const double b_min = limits_of(s, 0).brake_min_mps2;
   for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
     if (x.request->coop_case != CoopCase::kEgoBehind || steps.empty()) continue;
     const std::size_t first = step_at(ctx.trace, x.request_time_s);
-    const double v0 = speed_of(steps[first].ego);
+    const double v0 = speed_of(ego_of(steps[first]));
     const double end = def2_2a_window_end_s(ctx, x) + kTieS;
     for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end; ++i) {
       const double floor_v = v0 - b_min * (steps[i].time_s - x.request_time_s);
-      const double v = speed_of(steps[i].ego);
+      const double v = speed_of(ego_of(steps[i]));
       if (acc.record(i, steps[i].time_s, v - floor_v + ctx.params.speed_tolerance_mps, kEgoId, floor_v, v)) {
         std::ostringstream os;
         os << "after its Def. 2.2 request at t = " << x.request_time_s << " s the ego braked harder than b_min = "
@@ -179,33 +160,23 @@ MonitorOutput monitor_def2_2a_ego_brake(const MonitorContext& ctx) {
   return acc.finish();
 }
 
-// Def. 2.3: a cooperative merge needs the partner's acceptance, delivered within rho_c.
+// Def. 2.3: a cooperative merge needs the partner's acceptance, delivered within rho_c. An attempt
+// without the right of way on an acceptance that came later breaks it (one with no acceptance at
+// all is Definition 1's: the def1 gap rules).
 MonitorOutput monitor_def2_3_fallback(const MonitorContext& ctx) {
-  const Scenario& s = ctx.scenario;
   MarginAccumulator acc("def2_3_fallback", ctx.trace.steps.size());
-  if (ctx.trace.steps.empty()) return acc.finish();
-  const double rho_c = s.params.planner.comm_threshold_s;
-  const auto exchanges = coop_exchanges(ctx.trace);
-  const Decision* previous = nullptr;
-  for (const Decision& d : ctx.trace.decisions) {
-    const bool starts = d.mode == DecisionMode::kDef2Merge &&
-                        !(previous && previous->mode == DecisionMode::kDef2Merge &&
-                          previous->coop_partner_id == d.coop_partner_id);
-    if (d.mode != DecisionMode::kProperResponse) previous = &d;
-    if (!starts) continue;
-    double request_time = -1.0;
-    for (const CoopExchange& x : exchanges) {
-      if (x.request->to_id == d.coop_partner_id && x.request_time_s <= d.time_s) request_time = x.request_time_s;
-    }
-    const double accepted = acceptance_time(ctx.trace, d.coop_partner_id, d.time_s);
-    const bool valid = request_time >= 0.0 && accepted >= request_time;
-    // The window is closed: an acceptance delivered at t_r + rho_c itself is in time.
-    double m = valid ? request_time + rho_c - accepted : -rho_c;
-    if (valid && m < 0.0 && m >= -kTieS) m = 0.0;
-    if (acc.record(step_at(ctx.trace, d.time_s), d.time_s, m, kEgoId, request_time + rho_c, accepted)) {
+  const double rho_c = ctx.params.comm_threshold_s;
+  for (const MergeAttempt& a : ctx.attempts.attempts) {
+    if (!a.exchange) continue;
+    const CoopExchange& x = *a.exchange;
+    double m = x.request_time_s + rho_c - x.accept_delivered_time_s;
+    if (m < 0.0 && m >= -kTieS) m = 0.0;  // the window is closed: delivered at t_r + rho_c is in time
+    const double at_s = a.basis == RowBasis::kDef2 ? a.decision_time_s : a.start_time_s;
+    if (acc.record(step_at(ctx.trace, at_s), at_s, m, kEgoId, x.request_time_s + rho_c, x.accept_delivered_time_s)) {
       std::ostringstream os;
-      os << "ego started a Def. 2 merge with " << party_name(d.coop_partner_id) << " at t = " << d.time_s << " s "
-         << (valid ? "on an acceptance delivered after rho_c" : "without an acceptance");
+      os << "ego started a merge with " << party_name(x.request->to_id) << " at t = " << a.start_time_s
+         << " s on an acceptance delivered at t = " << x.accept_delivered_time_s << " s, after rho_c (request at t = "
+         << x.request_time_s << " s)";
       acc.set_detail(os.str());
     }
   }

@@ -5,17 +5,10 @@
 
 #include <vector>
 
+#include "rules/coop_exchange.h"
 #include "rules/monitor.h"
 
 namespace mg {
-
-// A request of the ego and the responder's acceptance (sent time; < 0 when none).
-struct CoopExchange {
-  const V2vMessage* request = nullptr;
-  double request_time_s = 0.0;
-  double accept_time_s = -1.0;
-};
-std::vector<CoopExchange> coop_exchanges(const Trace& t);
 
 MonitorOutput monitor_def2_1a_request(const MonitorContext& ctx);
 MonitorOutput monitor_def2_1b_responder(const MonitorContext& ctx);

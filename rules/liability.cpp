@@ -5,7 +5,7 @@
 #include <string>
 
 #include "rules/check.h"
-#include "rules/merge_phases.h"
+#include "rules/merge_attempts.h"
 
 namespace mg {
 
@@ -23,54 +23,10 @@ bool RightOfWay::ego_held_within(double from_s, double to_s) const {
   return false;
 }
 
-double acceptance_time(const Trace& t, int partner_id, double time_s) {
-  double when = -1.0;
-  for (const auto& e : t.events) {
-    if (e.time_s > time_s + 1e-9) break;
-    if (e.kind == EventKind::kMessageDelivered && e.message && e.message->type == MessageType::kAccept &&
-        e.message->from_id == partner_id && e.message->to_id == kEgoId) {
-      when = e.time_s;
-    }
-  }
-  return when;
-}
-
-namespace {
-
-// Whether a decision gives the ego the right of way, keeps the previous state, or revokes it.
-enum class RowEffect { kGrant, kKeep, kRevoke, kConflictOver };
-
-RowEffect effect_of(const Trace& t, const Decision& d) {
-  switch (d.mode) {
-    case DecisionMode::kDef1Merge:
-      return d.gap ? RowEffect::kGrant : RowEffect::kRevoke;
-    case DecisionMode::kDef2Merge:
-      return acceptance_time(t, d.coop_partner_id, d.time_s) >= 0.0 ? RowEffect::kGrant : RowEffect::kRevoke;
-    case DecisionMode::kProperResponse:
-      return RowEffect::kKeep;
-    case DecisionMode::kMerged:
-      return RowEffect::kConflictOver;
-    case DecisionMode::kKeepLane:
-    case DecisionMode::kDef2Request:
-    case DecisionMode::kDef1Halt:
-    case DecisionMode::kPotentialField:
-      return RowEffect::kRevoke;
-  }
-  return RowEffect::kRevoke;
-}
-
-}  // namespace
-
-RightOfWay compute_right_of_way(const Scenario& s, const Trace& t) {
-  return compute_right_of_way(s, t, observe_merge_phases(s, t));
-}
-
-RightOfWay compute_right_of_way(const Scenario& s, const Trace& t, const MergePhases& phases) {
+RightOfWay compute_right_of_way(const ObservedTrace& t, const MergeAttempts& attempts) {
   RightOfWay row;
-  const int traffic = s.vehicles.empty() ? kNobody : kMainLane;
+  const int traffic = t.vehicles.size() <= 1 ? kNobody : kMainLane;
   const double end = std::numeric_limits<double>::infinity();
-  const std::optional<MergePhaseEvent> complete = phases.first(MergePhaseKind::kComplete);
-  const double merge_complete = complete ? complete->time_s : end;
   int holder = traffic;
   row.timeline.emplace_back(0.0, holder);
   auto change = [&](double time_s, int h) {
@@ -79,21 +35,17 @@ RightOfWay compute_right_of_way(const Scenario& s, const Trace& t, const MergePh
     if (h == kEgoId) row.ego_holds.emplace_back(time_s, end);
     holder = h;
     if (row.timeline.back().first == time_s) {
-      row.timeline.back().second = h;  // decided at the same instant: only the outcome counts
+      row.timeline.back().second = h;  // at the same instant: only the outcome counts
     } else {
       row.timeline.emplace_back(time_s, h);
     }
   };
-  for (const auto& d : t.decisions) {
-    if (d.time_s >= merge_complete) break;
-    switch (effect_of(t, d)) {
-      case RowEffect::kGrant: change(d.time_s, kEgoId); break;
-      case RowEffect::kKeep: break;
-      case RowEffect::kRevoke: change(d.time_s, traffic); break;
-      case RowEffect::kConflictOver: change(d.time_s, kNobody); break;
-    }
+  for (const MergeAttempt& a : attempts.attempts) {
+    if (a.basis != RowBasis::kNone) change(a.decision_time_s, kEgoId);
+    if (!a.end_time_s) break;
+    change(*a.end_time_s, a.completed ? kNobody : traffic);
+    if (a.completed) break;
   }
-  if (merge_complete < end) change(merge_complete, kNobody);
   return row;
 }
 

@@ -15,20 +15,18 @@ std::optional<MergePhaseEvent> MergePhases::first(MergePhaseKind k, double from_
   return std::nullopt;
 }
 
-namespace {
-
-// EgoAt(k) -> {time_s, y_m, yaw_rad} of the ego at step k.
-template <class EgoAt>
-MergePhases observe(const Road& road, const RuleParams& p, std::size_t n_steps, EgoAt ego_at) {
+MergePhases observe_merge_phases(const ObservedTrace& t, const RuleParams& p) {
   MergePhases out;
-  if (n_steps == 0) return out;
-  const double side_y = road.side_lane_y_m(), line_y = -0.5 * road.lane_width_m;
-  if (!(ego_at(0).y_m < line_y)) return out;  // not in the side lane: no merge
+  if (t.steps.empty()) return out;
+  const double side_y = t.road.side_lane_y_m(), line_y = -0.5 * t.road.lane_width_m;
+  if (!(t.steps[0].vehicles[0].y_m < line_y)) return out;  // not in the side lane: no merge
   bool started = false, midpoint = false;
-  for (std::size_t k = 0; k < n_steps; ++k) {
-    const auto ego = ego_at(k);
-    const auto emit = [&](MergePhaseKind kind) { out.events.push_back({kind, k, ego.time_s}); };
-    if (!started && ego.y_m > side_y + p.merge_start_offset_m) {
+  for (std::size_t k = 0; k < t.steps.size(); ++k) {
+    const ObservedState& ego = t.steps[k].vehicles[0];
+    const auto emit = [&](MergePhaseKind kind) { out.events.push_back({kind, k, t.steps[k].time_s}); };
+    // A start is motion toward the main lane, not an offset alone: an ego placed off its lane
+    // centre, or drifting back to it, has not started merging.
+    if (!started && ego.y_m > side_y + p.merge_start_offset_m && ego.vy_mps > p.lat_speed_hysteresis_mps) {
       started = true;
       emit(MergePhaseKind::kStart);
     } else if (started && !midpoint && ego.y_m < side_y + p.merge_abort_offset_m) {
@@ -45,24 +43,6 @@ MergePhases observe(const Road& road, const RuleParams& p, std::size_t n_steps, 
     }
   }
   return out;
-}
-
-struct EgoPose {
-  double time_s, y_m, yaw_rad;
-};
-
-}  // namespace
-
-MergePhases observe_merge_phases(const ObservedTrace& t) {
-  return observe(t.road, t.params.rules, t.steps.size(), [&](std::size_t k) {
-    return EgoPose{t.steps[k].time_s, t.steps[k].vehicles[0].y_m, t.steps[k].vehicles[0].yaw_rad};
-  });
-}
-
-MergePhases observe_merge_phases(const Scenario& s, const Trace& t) {
-  return observe(s.road, s.params.rules, t.steps.size(), [&](std::size_t k) {
-    return EgoPose{t.steps[k].time_s, t.steps[k].ego.y_m, t.steps[k].ego.yaw_rad};
-  });
 }
 
 }  // namespace mg

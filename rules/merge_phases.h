@@ -18,8 +18,6 @@
 #include <vector>
 
 #include "core/observed_trace.h"
-#include "core/scenario.h"
-#include "sim/trace.h"
 
 namespace mg {
 
@@ -38,9 +36,6 @@ struct MergePhases {
   std::optional<MergePhaseEvent> first(MergePhaseKind k, double from_time_s = 0.0) const;
 };
 
-MergePhases observe_merge_phases(const ObservedTrace& t);
-// The same for a simulated run, read from its ego states without building its observable trace
-// (the checker's hot path); equal to observe_merge_phases(observed_trace_of(s, t)).
-MergePhases observe_merge_phases(const Scenario& s, const Trace& t);
+MergePhases observe_merge_phases(const ObservedTrace& t, const RuleParams& p);
 
 }  // namespace mg

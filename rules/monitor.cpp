@@ -21,29 +21,23 @@ MonitorOutput MarginAccumulator::finish() {
   return std::move(out_);
 }
 
-int party_of(const Scenario& s, std::size_t k) { return k == 0 ? kEgoId : s.vehicles[k - 1].id; }
-
-int index_of_party(const Scenario& s, int party_id) {
-  if (party_id == kEgoId) return 0;
-  const int i = s.index_of(party_id);
-  return i < 0 ? -1 : i + 1;
-}
-
-std::size_t step_at(const Trace& t, double time_s) {
+std::size_t step_at(const ObservedTrace& t, double time_s) {
   if (t.steps.empty()) return 0;
   auto it = std::lower_bound(t.steps.begin(), t.steps.end(), time_s,
-                             [](const TraceStep& s, double v) { return s.time_s < v; });
+                             [](const ObservedStep& s, double v) { return s.time_s < v; });
   if (it == t.steps.end()) return t.steps.size() - 1;
   std::size_t i = static_cast<std::size_t>(it - t.steps.begin());
   if (i > 0 && time_s - t.steps[i - 1].time_s < it->time_s - time_s) --i;
   return i;
 }
 
-double speed_of(const VehicleState& v) { return v.road_vx_mps(); }
+double step_interval_s(const ObservedTrace& t) {
+  return t.steps.size() < 2 ? 0.0 : t.steps[1].time_s - t.steps[0].time_s;
+}
 
 bool ego_rear_in_rss_danger(const MonitorContext& ctx, std::size_t step) {
-  for (std::size_t j = 1; j <= ctx.scenario.vehicles.size(); ++j) {
-    const PairGeometry g = pair_geometry(ctx.scenario, ctx.trace.steps[step], 0, j);
+  for (std::size_t j = 1; j < ctx.trace.vehicles.size(); ++j) {
+    const PairGeometry g = pair_geometry(ctx.trace, ctx.trace.steps[step], 0, j);
     if (g.rear == 0 && g.lat_unsafe() && g.lon_unsafe()) return true;
   }
   return false;

@@ -1,6 +1,8 @@
-// What every rule monitor shares (spec §8): a monitor is a pure function of the scenario and
-// the trace (plus the right-of-way timeline derived from them) that yields a signed robustness
-// margin per trace step (NaN where the rule does not apply) and a RuleResult.
+// What every rule monitor shares (spec §8): a monitor is a pure function of the observable trace
+// (core/observed_trace.h: declarations, observed states, the V2V channel), the rule parameters and
+// what the checker inferred from them (merge phases and attempts, the right of way), yielding a
+// signed robustness margin per trace step (NaN where the rule does not apply) and a RuleResult.
+// No monitor reads a planner's annotations.
 #pragma once
 
 #include <algorithm>
@@ -11,22 +13,22 @@
 #include <string_view>
 #include <vector>
 
-#include "core/scenario.h"
+#include "core/observed_trace.h"
 #include "rules/check.h"
 #include "rules/liability.h"
+#include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
 #include "rules/pair_geometry.h"
 #include "rules/rule_catalog.h"
-#include "sim/trace.h"
 
 namespace mg {
 
 struct MonitorContext {
-  const Scenario& scenario;
-  const Trace& trace;
+  const ObservedTrace& trace;
   const RightOfWay& row;
-  const CatalogParams& params;
-  const MergePhases& phases;  // the ego's observed merge (rules/merge_phases.h)
+  const RuleParams& params;      // the rules' own (trace.params.rules, or --params)
+  const MergePhases& phases;     // the ego's observed merge (rules/merge_phases.h)
+  const MergeAttempts& attempts; // each attempt's right of way (rules/merge_attempts.h)
 };
 
 struct MonitorOutput {
@@ -77,22 +79,19 @@ class MarginAccumulator {
   MonitorOutput out_;
 };
 
-// Vehicle k of a trace step: 0 = ego, k >= 1 = scenario.vehicles[k - 1].
-inline const VehicleState& state_of(const TraceStep& s, std::size_t k) {
-  return k == 0 ? s.ego : s.others[k - 1];
-}
-int party_of(const Scenario& s, std::size_t k);
-inline const VehicleSize& size_of(const Scenario& s, std::size_t k) {
-  return k == 0 ? s.ego.size : s.vehicles[k - 1].size;
-}
-inline const Limits& limits_of(const Scenario& s, std::size_t k) {
-  return k == 0 ? s.ego.limits : s.vehicles[k - 1].limits;
-}
+// Vehicle k of a trace: 0 = ego, k >= 1 = the others, in ObservedTrace::vehicles order.
+inline const ObservedState& state_of(const ObservedStep& s, std::size_t k) { return s.vehicles[k]; }
+inline const ObservedState& ego_of(const ObservedStep& s) { return s.vehicles[0]; }
+inline int party_of(const ObservedTrace& t, std::size_t k) { return t.vehicles[k].id; }
+inline const VehicleSize& size_of(const ObservedTrace& t, std::size_t k) { return t.vehicles[k].size; }
+inline const Limits& limits_of(const ObservedTrace& t, std::size_t k) { return t.vehicles[k].limits; }
 // Index k of a party id (0 for the ego), or -1.
-int index_of_party(const Scenario& s, int party_id);
+inline int index_of_party(const ObservedTrace& t, int party_id) { return t.index_of(party_id); }
 // Index of the trace step nearest to time_s.
-std::size_t step_at(const Trace& t, double time_s);
-double speed_of(const VehicleState& v);  // road-frame longitudinal speed
+std::size_t step_at(const ObservedTrace& t, double time_s);
+inline double speed_of(const ObservedState& v) { return v.vx_mps; }  // road-frame longitudinal speed
+// The trace's sampling interval (its first step; 0 for fewer than two steps).
+double step_interval_s(const ObservedTrace& t);
 // Whether the ego is the rear vehicle of an RSS-dangerous pair (both distances unsafe) at step i:
 // its RSS proper response then governs its speed.
 bool ego_rear_in_rss_danger(const MonitorContext& ctx, std::size_t step);
@@ -111,7 +110,6 @@ struct MonitorEntry {
 // Every monitor, in catalogue order (rules/catalog.json lists exactly these ids).
 const std::vector<MonitorEntry>& rule_monitors();
 // Runs every monitor; margins are kept only when `margins` is not null (reports).
-std::vector<RuleResult> run_monitors(const Scenario& s, const Trace& t, const RightOfWay& row,
-                                     const MergePhases& phases, std::vector<std::vector<double>>* margins);
+std::vector<RuleResult> run_monitors(const MonitorContext& ctx, std::vector<std::vector<double>>* margins);
 
 }  // namespace mg

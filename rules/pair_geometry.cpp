@@ -15,15 +15,12 @@ namespace {
 using pair_detail::Kinematics;
 using pair_detail::PairMemo;
 
-Kinematics kinematics_of(const VehicleState& v) {
-  if (v.yaw_rad == 0.0) return {v.x_m, v.y_m, v.vx_mps, v.vy_mps};  // main-lane vehicles: no trig
-  return {v.x_m, v.y_m, v.road_vx_mps(), v.road_vy_mps()};
-}
+Kinematics kinematics_of(const ObservedState& v) { return {v.x_m, v.y_m, v.vx_mps, v.vy_mps}; }
 
 std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
 
 // The lateral half of geometry_of: left/right, dy and D_lat (RCPP eq. 2).
-void lateral_of(const Scenario& s, const Kinematics& ki, const Kinematics& kj, std::size_t i, std::size_t j,
+void lateral_of(const ObservedTrace& s, const Kinematics& ki, const Kinematics& kj, std::size_t i, std::size_t j,
                 PairMemo& memo, PairGeometry& g) {
   const bool i_left = ki.y_m >= kj.y_m;
   g.left = i_left ? i : j;
@@ -46,7 +43,7 @@ void lateral_of(const Scenario& s, const Kinematics& ki, const Kinematics& kj, s
 }
 
 // Kinematics ki, kj of vehicles i and j (0 = ego).
-PairGeometry geometry_of(const Scenario& s, const Kinematics& ki, const Kinematics& kj, std::size_t i, std::size_t j,
+PairGeometry geometry_of(const ObservedTrace& s, const Kinematics& ki, const Kinematics& kj, std::size_t i, std::size_t j,
                          PairMemo& memo) {
   PairGeometry g;
   const bool i_rear = ki.x_m <= kj.x_m;
@@ -72,23 +69,23 @@ PairGeometry geometry_of(const Scenario& s, const Kinematics& ki, const Kinemati
 
 }  // namespace
 
-PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j) {
+PairGeometry pair_geometry(const ObservedTrace& s, const ObservedStep& step, std::size_t i, std::size_t j) {
   PairMemo fresh;
   return pair_geometry(s, step, i, j, fresh);
 }
 
-PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j, PairMemo& memo) {
+PairGeometry pair_geometry(const ObservedTrace& s, const ObservedStep& step, std::size_t i, std::size_t j, PairMemo& memo) {
   return geometry_of(s, kinematics_of(state_of(step, i)), kinematics_of(state_of(step, j)), i, j, memo);
 }
 
-PairStepper::PairStepper(const Scenario& s)
-    : scenario_(s), n_(s.vehicles.size() + 1), kinematics_(n_), memo_(n_ * (n_ - 1) / 2) {}
+PairStepper::PairStepper(const ObservedTrace& s)
+    : trace_(s), n_(s.vehicles.size()), kinematics_(n_), memo_(n_ * (n_ - 1) / 2) {}
 
-void PairStepper::load(const TraceStep& step) {
+void PairStepper::load(const ObservedStep& step) {
   for (std::size_t v = 0; v < n_; ++v) kinematics_[v] = kinematics_of(state_of(step, v));
 }
 
-bool pair_lat_unsafe(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j, PairMemo& memo) {
+bool pair_lat_unsafe(const ObservedTrace& s, const ObservedStep& step, std::size_t i, std::size_t j, PairMemo& memo) {
   PairGeometry g;
   lateral_of(s, kinematics_of(state_of(step, i)), kinematics_of(state_of(step, j)), i, j, memo, g);
   return g.lat_unsafe();
@@ -96,12 +93,12 @@ bool pair_lat_unsafe(const Scenario& s, const TraceStep& step, std::size_t i, st
 
 bool PairStepper::lat_unsafe(std::size_t p, std::size_t i, std::size_t j) {
   PairGeometry g;
-  lateral_of(scenario_, kinematics_[i], kinematics_[j], i, j, memo_[p], g);
+  lateral_of(trace_, kinematics_[i], kinematics_[j], i, j, memo_[p], g);
   return g.lat_unsafe();
 }
 
 PairGeometry PairStepper::at(std::size_t p, std::size_t i, std::size_t j) {
-  return geometry_of(scenario_, kinematics_[i], kinematics_[j], i, j, memo_[p]);
+  return geometry_of(trace_, kinematics_[i], kinematics_[j], i, j, memo_[p]);
 }
 
 }  // namespace mg

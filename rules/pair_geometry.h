@@ -7,8 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/scenario.h"
-#include "sim/trace.h"
+#include "core/observed_trace.h"
 
 namespace mg {
 
@@ -24,17 +23,17 @@ struct PairGeometry {
   bool lat_unsafe() const { return dy_m < d_lat_m; }
 };
 
-PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j);
+PairGeometry pair_geometry(const ObservedTrace& s, const ObservedStep& step, std::size_t i, std::size_t j);
 
 namespace pair_detail {
 struct PairMemo;
 }  // namespace pair_detail
 // The same for one pair along a trace: `memo` (one per pair, steps in order) reuses the RSS
 // distances while their inputs repeat bit for bit; the result is the same.
-PairGeometry pair_geometry(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j,
+PairGeometry pair_geometry(const ObservedTrace& s, const ObservedStep& step, std::size_t i, std::size_t j,
                            pair_detail::PairMemo& memo);
 // pair_geometry(s, step, i, j, memo).lat_unsafe() without the longitudinal half.
-bool pair_lat_unsafe(const Scenario& s, const TraceStep& step, std::size_t i, std::size_t j,
+bool pair_lat_unsafe(const ObservedTrace& s, const ObservedStep& step, std::size_t i, std::size_t j,
                      pair_detail::PairMemo& memo);
 
 namespace pair_detail {
@@ -57,9 +56,9 @@ struct PairMemo {
 // i < j in the order i = 0..n-1, j = i+1..n-1 (index()).
 class PairStepper {
  public:
-  explicit PairStepper(const Scenario& s);
+  explicit PairStepper(const ObservedTrace& s);
   // Makes `step` the current step (every vehicle's road-frame kinematics).
-  void load(const TraceStep& step);
+  void load(const ObservedStep& step);
   // Vehicles i < j at the current step; p = index(n, i, j). A pair's RSS distances are reused
   // while their inputs repeat bit for bit, so the result equals pair_geometry() exactly.
   PairGeometry at(std::size_t p, std::size_t i, std::size_t j);
@@ -73,7 +72,7 @@ class PairStepper {
   static std::size_t index(std::size_t n, std::size_t i, std::size_t j) { return i * (2 * n - i - 1) / 2 + (j - i - 1); }
 
  private:
-  const Scenario& scenario_;
+  const ObservedTrace& trace_;
   std::size_t n_ = 0;
   std::vector<pair_detail::Kinematics> kinematics_;
   std::vector<pair_detail::PairMemo> memo_;

@@ -11,7 +11,7 @@
 #include "rules/monitor.h"
 #include "rules/pair_geometry.h"
 #include "rules/rule_catalog.h"
-#include "sim/svg_plot.h"
+#include "core/svg_plot.h"
 
 namespace mg {
 namespace {
@@ -34,11 +34,7 @@ std::vector<double> key_moments(const CheckResult& r) {
   std::vector<double> t;
   if (r.trace.steps.empty()) return t;
   t.push_back(r.trace.steps.front().time_s);
-  for (const TraceEvent& e : r.trace.events) {
-    if (e.kind == EventKind::kMergeStart || e.kind == EventKind::kMergeMidpoint ||
-        e.kind == EventKind::kMergeComplete || e.kind == EventKind::kHalt)
-      t.push_back(e.time_s);
-  }
+  for (const double m : r.merge_phase_times_s) t.push_back(m);
   for (const RuleResult& rule : r.rules) {
     if (!rule.holds) t.push_back(*rule.first_violation_time_s);
   }
@@ -83,7 +79,7 @@ class SeriesBuilder {
   svg::Thinner thinner_;
 };
 
-svg::Range time_range(const Trace& t) { return {t.steps.front().time_s, t.steps.back().time_s}; }
+svg::Range time_range(const ObservedTrace& t) { return {t.steps.front().time_s, t.steps.back().time_s}; }
 
 // Lists longer than this show their first entries and say how many more report.json holds.
 constexpr std::size_t kMaxListedEntries = 400;
@@ -93,9 +89,10 @@ void more_entries_note(std::ostringstream& h, std::size_t total) {
     h << "<li>&hellip; " << total - kMaxListedEntries << " more (report.json lists all)</li>\n";
 }
 
-std::string vehicle_label(const Scenario& s, std::size_t k) { return party_name(party_of(s, k)); }
+std::string vehicle_label(const ObservedTrace& s, std::size_t k) { return party_name(party_of(s, k)); }
 
-svg::Plot top_down_plot(const Scenario& s, const CheckResult& r) {
+svg::Plot top_down_plot(const CheckResult& r) {
+  const ObservedTrace& s = r.trace;
   svg::Plot p;
   p.title = "Top-down view: trajectories, vehicle boxes at the key moments";
   p.x_label = "X [m]";
@@ -103,10 +100,10 @@ svg::Plot top_down_plot(const Scenario& s, const CheckResult& r) {
   p.width_px = 960;
   p.height_px = 360;
   const auto& steps = r.trace.steps;
-  const std::size_t n = s.vehicles.size() + 1;
+  const std::size_t n = s.vehicles.size();
   const double w = s.road.lane_width_m;
-  double x_lo = steps.front().ego.x_m, x_hi = x_lo;
-  for (const TraceStep& st : steps)  // steps outside, vehicles inside: the trace's memory order
+  double x_lo = ego_of(steps.front()).x_m, x_hi = x_lo;
+  for (const ObservedStep& st : steps)  // steps outside, vehicles inside: the trace's memory order
     for (std::size_t k = 0; k < n; ++k) x_lo = std::min(x_lo, state_of(st, k).x_m), x_hi = std::max(x_hi, state_of(st, k).x_m);
   std::vector<SeriesBuilder> paths;
   for (std::size_t k = 0; k < n; ++k) {
@@ -116,11 +113,11 @@ svg::Plot top_down_plot(const Scenario& s, const CheckResult& r) {
     path.dash = k == 0 ? "" : "5 3";
     paths.emplace_back(path, svg::Range{x_lo, x_hi}, p.width_px, steps.size());
   }
-  for (const TraceStep& st : steps)
+  for (const ObservedStep& st : steps)
     for (std::size_t k = 0; k < n; ++k) paths[k].add(state_of(st, k).x_m, state_of(st, k).y_m);
   for (SeriesBuilder& b : paths) p.series.push_back(b.take());
   for (double t : key_moments(r)) {
-    const TraceStep& st = steps[step_at(r.trace, t)];
+    const ObservedStep& st = steps[step_at(r.trace, t)];
     for (std::size_t k = 0; k < n; ++k) p.series.push_back(box_outline(box_pose_of(s, st, k), colour_of(k)));
   }
   auto line = [&](std::string label, double x0, double x1, double y0, double y1, std::string dash) {
@@ -154,11 +151,12 @@ svg::Plot time_plot(std::string title, std::string y_label) {
   return p;
 }
 
-svg::Plot gap_plot(const Scenario& s, const CheckResult& r) {
+svg::Plot gap_plot(const CheckResult& r) {
+  const ObservedTrace& s = r.trace;
   svg::Plot p = time_plot("Ego to each vehicle: centre gap |dX| against D_lon (eq. 1), while laterally unsafe", "distance [m]");
   const auto& steps = r.trace.steps;
   std::vector<SeriesBuilder> series;  // gap and D_lon of vehicle k at 2 (k - 1) and 2 (k - 1) + 1
-  for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
+  for (std::size_t k = 1; k < s.vehicles.size(); ++k) {
     svg::Series gap, dlon;
     gap.label = "gap to " + vehicle_label(s, k);
     dlon.label = "D_lon with " + vehicle_label(s, k);
@@ -167,10 +165,10 @@ svg::Plot gap_plot(const Scenario& s, const CheckResult& r) {
     series.emplace_back(gap, time_range(r.trace), p.width_px, steps.size());
     series.emplace_back(dlon, time_range(r.trace), p.width_px, steps.size());
   }
-  std::vector<pair_detail::PairMemo> memo(s.vehicles.size());
+  std::vector<pair_detail::PairMemo> memo(s.vehicles.size() - 1);
   const double nan = std::nan("");
-  for (const TraceStep& st : steps) {
-    for (std::size_t k = 1; k <= s.vehicles.size(); ++k) {
+  for (const ObservedStep& st : steps) {
+    for (std::size_t k = 1; k < s.vehicles.size(); ++k) {
       const bool shown = pair_lat_unsafe(s, st, 0, k, memo[k - 1]);
       const PairGeometry g = shown ? pair_geometry(s, st, 0, k, memo[k - 1]) : PairGeometry{};
       series[2 * (k - 1)].add(st.time_s, shown ? g.gap_m : nan);
@@ -181,17 +179,18 @@ svg::Plot gap_plot(const Scenario& s, const CheckResult& r) {
   return p;
 }
 
-svg::Plot speed_plot(const Scenario& s, const CheckResult& r) {
+svg::Plot speed_plot(const CheckResult& r) {
+  const ObservedTrace& s = r.trace;
   svg::Plot p = time_plot("Speeds", "speed [m/s]");
   std::vector<SeriesBuilder> series;
-  for (std::size_t k = 0; k <= s.vehicles.size(); ++k) {
+  for (std::size_t k = 0; k < s.vehicles.size(); ++k) {
     svg::Series v;
     v.label = vehicle_label(s, k);
     v.colour = colour_of(k);
     series.emplace_back(v, time_range(r.trace), p.width_px, r.trace.steps.size());
   }
-  for (const TraceStep& st : r.trace.steps)
-    for (std::size_t k = 0; k <= s.vehicles.size(); ++k) series[k].add(st.time_s, speed_of(state_of(st, k)));
+  for (const ObservedStep& st : r.trace.steps)
+    for (std::size_t k = 0; k < s.vehicles.size(); ++k) series[k].add(st.time_s, speed_of(state_of(st, k)));
   for (SeriesBuilder& b : series) p.series.push_back(b.take());
   return p;
 }
@@ -204,16 +203,47 @@ svg::Plot sideslip_plot(const CheckResult& r) {
   hi.label = "bound";
   hi.colour = lo.colour = "#555555";
   hi.dash = lo.dash = "4 4";
-  const double limit = catalog_params().sideslip_max_rad;
+  const double limit = r.rule_params.sideslip_max_rad;
   SeriesBuilder b(beta, time_range(r.trace), p.width_px, r.trace.steps.size());
-  for (const TraceStep& st : r.trace.steps)
-    b.add(st.time_s, st.ego.vx_mps >= catalog_params().sideslip_min_speed_mps ? std::atan2(st.ego.vy_mps, st.ego.vx_mps)
-                                                                               : std::nan(""));
+  for (const ObservedStep& st : r.trace.steps) {
+    const ObservedState& e = ego_of(st);
+    const double body_vx = e.vx_mps * std::cos(e.yaw_rad) + e.vy_mps * std::sin(e.yaw_rad);
+    b.add(st.time_s, body_vx >= r.rule_params.sideslip_min_speed_mps
+                         ? std::remainder(std::atan2(e.vy_mps, e.vx_mps) - e.yaw_rad, 2.0 * M_PI)
+                         : std::nan(""));
+  }
   hi.x = lo.x = {r.trace.steps.front().time_s, r.trace.steps.back().time_s};
   hi.y = {limit, limit};
   lo.y = {-limit, -limit};
   p.series = {b.take(), hi, lo};
   return p;
+}
+
+// The planner's own account (its annotations), shown beside the verdict and never used for it:
+// each decision it reported, and where it claimed a merge the observation did not grant.
+void planner_account(std::ostringstream& h, const CheckResult& r) {
+  const nlohmann::json& a = r.trace.planner_annotations;
+  if (!a.is_object() || !a.contains("decisions") || !a["decisions"].is_array()) return;
+  h << "<h2>The planner's own account (not judged)</h2>\n<ul>\n";
+  std::size_t shown = 0;
+  std::string last_mode;
+  for (const nlohmann::json& d : a["decisions"]) {
+    if (!d.is_object() || !d.contains("mode") || !d["mode"].is_string()) continue;
+    const std::string mode = d["mode"].get<std::string>();
+    if (mode == last_mode) continue;  // one line per change of mode
+    last_mode = mode;
+    if (++shown > kMaxListedEntries) break;
+    const double t = d.contains("time_s") && d["time_s"].is_number() ? d["time_s"].get<double>() : 0.0;
+    const bool claims_merge = mode == "def1_merge" || mode == "def2_merge";
+    bool ego_held = false;
+    for (const auto& [from, holder] : r.right_of_way)
+      if (from <= t + 1e-9) ego_held = holder == kEgoId;
+    h << "<li>t = " << format_number(t, 2) << " s: planner reported " << escape(mode);
+    if (d.contains("reason") && d["reason"].is_string()) h << " &mdash; " << escape(d["reason"].get<std::string>());
+    if (claims_merge && !ego_held) h << " <b>(disagrees: observed, the ego did not hold the right of way then)</b>";
+    h << "</li>\n";
+  }
+  h << "</ul>\n";
 }
 
 void violations_table(std::ostringstream& h, const CheckResult& r) {
@@ -237,7 +267,8 @@ void violations_table(std::ostringstream& h, const CheckResult& r) {
 
 }  // namespace
 
-std::string report_html(const Scenario& s, const CheckResult& r) {
+std::string report_html(const CheckResult& r) {
+  const ObservedTrace& s = r.trace;
   std::ostringstream h;
   const std::string verdict = r.holds ? "HOLDS" : "VIOLATED";
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>mergeguard: " << escape(s.name)
@@ -250,7 +281,7 @@ std::string report_html(const Scenario& s, const CheckResult& r) {
   if (r.collision) h << "<p><b>Collision</b> (liable: " << escape(party_name(r.collision_liable_id)) << ")</p>\n";
   if (!r.liability_detail.empty()) h << "<p>" << escape(r.liability_detail) << "</p>\n";
   h << "<h1>mergeguard liability report: " << escape(s.name) << "</h1>\n<p>Planner <code>" << escape(r.planner)
-    << "</code>. " << escape(s.description) << "</p>\n<h2>Violations</h2>\n";
+    << "</code>; trace from " << escape(s.source) << ".</p>\n<h2>Violations</h2>\n";
   violations_table(h, r);
   h << "<h2>Right of way</h2>\n<ul>\n";
   for (std::size_t k = 0; k < std::min(r.right_of_way.size(), kMaxListedEntries); ++k) {
@@ -258,11 +289,14 @@ std::string report_html(const Scenario& s, const CheckResult& r) {
     h << "<li>from t = " << format_number(t, 2) << " s: " << escape(party_name(holder)) << "</li>\n";
   }
   more_entries_note(h, r.right_of_way.size());
+  h << "</ul>\n<p>What decided it, observed:</p>\n<ul>\n";
+  for (const std::string& o : r.right_of_way_observations) h << "<li>" << escape(o) << "</li>\n";
   h << "</ul>\n";
+  planner_account(h, r);
   if (!r.trace.steps.empty()) {
-    h << "<h2>Trajectories</h2>\n" << inline_svg(svg::render(top_down_plot(s, r))) << "\n";
-    h << "<h2>Gap against D_lon</h2>\n" << inline_svg(svg::render(gap_plot(s, r))) << "\n";
-    h << "<h2>Speeds</h2>\n" << inline_svg(svg::render(speed_plot(s, r))) << "\n";
+    h << "<h2>Trajectories</h2>\n" << inline_svg(svg::render(top_down_plot(r))) << "\n";
+    h << "<h2>Gap against D_lon</h2>\n" << inline_svg(svg::render(gap_plot(r))) << "\n";
+    h << "<h2>Speeds</h2>\n" << inline_svg(svg::render(speed_plot(r))) << "\n";
     h << "<h2>Sideslip</h2>\n" << inline_svg(svg::render(sideslip_plot(r))) << "\n";
   }
   h << "<h2>All rules</h2>\n<table><tr><th>rule</th><th>paper reference</th><th>holds</th><th>min margin</th>"
@@ -275,13 +309,14 @@ std::string report_html(const Scenario& s, const CheckResult& r) {
       << "</td><td>" << format_number(rule.min_margin_time_s, 2) << "</td><td>" << escape(spec.statement)
       << "</td><td>" << escape(spec.liability) << "</td></tr>\n";
   }
-  h << "</table>\n<h2>Timeline</h2>\n<ul>\n";
-  for (std::size_t k = 0; k < std::min(r.trace.events.size(), kMaxListedEntries); ++k) {
-    const TraceEvent& e = r.trace.events[k];
-    h << "<li>t = " << format_number(e.time_s, 2) << " s &mdash; " << escape(to_string(e.kind)) << " ("
-      << escape(party_name(e.vehicle_id)) << "): " << escape(e.detail) << "</li>\n";
+  h << "</table>\n<h2>Timeline (V2V channel)</h2>\n<ul>\n";
+  for (std::size_t k = 0; k < std::min(r.trace.channel.size(), kMaxListedEntries); ++k) {
+    const ChannelEvent& e = r.trace.channel[k];
+    h << "<li>t = " << format_number(e.time_s, 2) << " s &mdash; " << escape(to_string(e.message.type)) << " "
+      << escape(to_string(e.kind)) << " (" << escape(party_name(e.message.from_id)) << " to "
+      << escape(party_name(e.message.to_id)) << ")</li>\n";
   }
-  more_entries_note(h, r.trace.events.size());
+  more_entries_note(h, r.trace.channel.size());
   h << "</ul>\n</body></html>\n";
   return h.str();
 }

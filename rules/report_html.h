@@ -2,16 +2,15 @@
 // SVG, no external URL, opens offline. Verdict and liable party in the first lines; then per
 // violation the rule, paper reference, required and actual values, margin and time; a top-down
 // plot of the trajectories with vehicle boxes at the key moments; gap against D_lon over time;
-// speeds; sideslip; all rules; the timeline. Plots use src/sim/svg_plot.h.
+// speeds; sideslip; all rules; the timeline. Plots use src/core/svg_plot.h.
 #pragma once
 
 #include <string>
 
-#include "core/scenario.h"
 #include "rules/check.h"
 
 namespace mg {
 
-std::string report_html(const Scenario& s, const CheckResult& r);
+std::string report_html(const CheckResult& r);
 
 }  // namespace mg

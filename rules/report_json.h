@@ -6,15 +6,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/scenario.h"
 #include "rules/check.h"
 
 namespace mg {
 
-// check_result_to_json plus the scenario's name and description.
-nlohmann::json report_json(const Scenario& s, const CheckResult& r);
+// check_result_to_json plus the trace's name and source.
+nlohmann::json report_json(const CheckResult& r);
 
 // Writes DIR/report.json, DIR/report.md and DIR/report.html, each atomically.
-void write_check_reports(const std::string& dir, const Scenario& s, const CheckResult& r);
+void write_check_reports(const std::string& dir, const CheckResult& r);
 
 }  // namespace mg

@@ -24,13 +24,14 @@ std::string cell(std::string s) {
 
 }  // namespace
 
-std::string report_markdown(const Scenario& s, const CheckResult& r) {
+std::string report_markdown(const CheckResult& r) {
+  const ObservedTrace& s = r.trace;
   std::ostringstream md;
   md << "# mergeguard liability report: " << s.name << "\n\n"
      << "**Verdict: " << (r.holds ? "HOLDS" : "VIOLATED") << "** - liable: **" << party_name(r.liable_id) << "**"
      << (r.collision ? " - collision (liable: " + party_name(r.collision_liable_id) + ")" : "") << "\n\n";
   if (!r.liability_detail.empty()) md << r.liability_detail << "\n\n";
-  md << "Planner: `" << r.planner << "`. Scenario: " << (s.description.empty() ? s.name : s.description) << "\n\n";
+  md << "Planner: `" << r.planner << "`. Trace from " << s.source << ".\n\n";
   md << "## Violations\n\n";
   bool any = false;
   for (const RuleResult& rule : r.rules) {
@@ -51,6 +52,7 @@ std::string report_markdown(const Scenario& s, const CheckResult& r) {
   for (const auto& [t, holder] : r.right_of_way) {
     md << "- from t = " << format_number(t, 2) << " s: " << party_name(holder) << "\n";
   }
+  for (const std::string& o : r.right_of_way_observations) md << "- observed: " << o << "\n";
   md << "\n## All rules\n\n| rule | paper reference | holds | min margin | at [s] | statement |\n|---|---|---|---|---|---|\n";
   for (const RuleResult& rule : r.rules) {
     md << "| " << rule.rule_id << " | " << cell(rule.paper_ref) << " | " << (rule.holds ? "yes" : "**no**") << " | "
@@ -58,9 +60,9 @@ std::string report_markdown(const Scenario& s, const CheckResult& r) {
        << format_number(rule.min_margin_time_s, 2) << " | " << cell(rule_spec(rule.rule_id).statement) << " |\n";
   }
   md << "\n## Timeline\n\n";
-  for (const TraceEvent& e : r.trace.events) {
-    md << "- t = " << format_number(e.time_s, 2) << " s - " << to_string(e.kind) << " (" << party_name(e.vehicle_id)
-       << "): " << e.detail << "\n";
+  for (const ChannelEvent& e : r.trace.channel) {
+    md << "- t = " << format_number(e.time_s, 2) << " s - " << to_string(e.message.type) << " " << to_string(e.kind)
+       << " (" << party_name(e.message.from_id) << " to " << party_name(e.message.to_id) << ")\n";
   }
   for (const RuleResult& rule : r.rules) {
     if (!rule.holds) {
@@ -68,7 +70,7 @@ std::string report_markdown(const Scenario& s, const CheckResult& r) {
          << party_name(rule.liable_id) << ")\n";
     }
   }
-  md << "\nTrace: " << r.trace.steps.size() << " steps, digest " << std::hex << r.trace.digest << std::dec << ".\n";
+  md << "\nTrace: " << r.trace.steps.size() << " steps, digest " << std::hex << r.trace_digest << std::dec << ".\n";
   return md.str();
 }
 

@@ -5,12 +5,11 @@
 
 #include <string>
 
-#include "core/scenario.h"
 #include "rules/check.h"
 
 namespace mg {
 
-std::string report_markdown(const Scenario& s, const CheckResult& r);
+std::string report_markdown(const CheckResult& r);
 
 // Shared by the Markdown and HTML reports: "12.345" or "-" for non-finite values.
 std::string format_number(double v, int decimals = 3);

@@ -7,11 +7,11 @@
 
 namespace mg {
 
-double on_road_margin_m(const Scenario& s, const VehicleState& ego) {
+double on_road_margin_m(const ObservedTrace& s, const ObservedState& ego) {
   const double w = s.road.lane_width_m;
   const double left = (s.road.main_lanes - 0.5) * w;
   const double c = std::cos(ego.yaw_rad), sn = std::sin(ego.yaw_rad);
-  const double hl = s.ego.size.length_m / 2.0, hw = s.ego.size.width_m / 2.0;
+  const double hl = size_of(s, 0).length_m / 2.0, hw = size_of(s, 0).width_m / 2.0;
   double m = std::numeric_limits<double>::infinity();
   for (const double sl : {-1.0, 1.0}) {
     for (const double sw : {-1.0, 1.0}) {
@@ -28,11 +28,11 @@ MonitorOutput monitor_on_road(const MonitorContext& ctx) {
   const auto& steps = ctx.trace.steps;
   MarginAccumulator acc("on_road", steps.size());
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    const double m = on_road_margin_m(ctx.scenario, steps[i].ego) + ctx.params.road_edge_tolerance_m;
+    const double m = on_road_margin_m(ctx.trace, ego_of(steps[i])) + ctx.params.road_edge_tolerance_m;
     if (acc.record(i, steps[i].time_s, m, kEgoId, 0.0, m)) {
       std::ostringstream os;
-      os << "ego left the road at t = " << steps[i].time_s << " s (x = " << steps[i].ego.x_m
-         << " m, y = " << steps[i].ego.y_m << " m)";
+      os << "ego left the road at t = " << steps[i].time_s << " s (x = " << ego_of(steps[i]).x_m
+         << " m, y = " << ego_of(steps[i]).y_m << " m)";
       acc.set_detail(os.str());
     }
   }
@@ -40,13 +40,13 @@ MonitorOutput monitor_on_road(const MonitorContext& ctx) {
 }
 
 MonitorOutput monitor_side_lane_end(const MonitorContext& ctx) {
-  const Scenario& s = ctx.scenario;
+  const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
   MarginAccumulator acc("side_lane_end", steps.size());
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    const VehicleState& e = steps[i].ego;
+    const ObservedState& e = ego_of(steps[i]);
     if (e.y_m >= -s.road.lane_width_m / 2.0) continue;
-    const double front = e.x_m + s.ego.size.length_m / 2.0;
+    const double front = e.x_m + size_of(s, 0).length_m / 2.0;
     const double m = s.road.side_lane_end_x_m - front;
     if (acc.record(i, steps[i].time_s, m, kEgoId, s.road.side_lane_end_x_m, front)) {
       std::ostringstream os;

@@ -8,7 +8,7 @@
 namespace mg {
 
 // Smallest signed distance of the ego box's corners to the road edges (negative outside).
-double on_road_margin_m(const Scenario& s, const VehicleState& ego);
+double on_road_margin_m(const ObservedTrace& s, const ObservedState& ego);
 
 MonitorOutput monitor_on_road(const MonitorContext& ctx);
 MonitorOutput monitor_side_lane_end(const MonitorContext& ctx);

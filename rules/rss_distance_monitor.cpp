@@ -26,12 +26,12 @@ struct Episode {
 
 std::size_t pair_count(std::size_t n) { return n * (n - 1) / 2; }
 
-std::string describe(const Scenario& s, std::size_t k) { return party_name(party_of(s, k)); }
+std::string describe(const ObservedTrace& s, std::size_t k) { return party_name(party_of(s, k)); }
 
 // Interaction bound of RCPP eq. (1): whatever the front vehicle does, D_lon <= (l_r + l_f)/2 + the
 // rear vehicle's worst-case stopping distance v T + a T^2/2 + (v + a T)^2 / (2 b_min) (the front
 // vehicle only moves forward). reach_m = that distance + l_r/2, padded against rounding.
-double lon_reach_m(const Scenario& s, std::size_t v, double road_vx_mps) {
+double lon_reach_m(const ObservedTrace& s, std::size_t v, double road_vx_mps) {
   const Limits& l = limits_of(s, v);
   const double T = s.params.rss.response_time_s, speed = std::max(road_vx_mps, 0.0);
   const double after_t = speed + l.accel_max_mps2 * T;
@@ -40,7 +40,7 @@ double lon_reach_m(const Scenario& s, std::size_t v, double road_vx_mps) {
 }
 
 // gap - (that bound) for vehicles i, j: when >= 0 the pair is longitudinally safe (gap >= D_lon).
-double slack_beyond_reach_m(const Scenario& s, const PairStepper& pairs, const std::vector<double>& reach_m,
+double slack_beyond_reach_m(const ObservedTrace& s, const PairStepper& pairs, const std::vector<double>& reach_m,
                             std::size_t i, std::size_t j) {
   const bool i_rear = pairs.x_m(i) <= pairs.x_m(j);
   const std::size_t rear = i_rear ? i : j, front = i_rear ? j : i;
@@ -51,7 +51,7 @@ double slack_beyond_reach_m(const Scenario& s, const PairStepper& pairs, const s
 // A pair that far apart is longitudinally safe, so its only effect would be a margin
 // gap - D_lon >= the slack: when that is not below the smallest margin so far, it changes
 // nothing (exact) and the pair's RSS distances are not computed.
-bool far_apart(const Scenario& s, const PairStepper& pairs, const std::vector<double>& reach_m, std::size_t i,
+bool far_apart(const ObservedTrace& s, const PairStepper& pairs, const std::vector<double>& reach_m, std::size_t i,
                std::size_t j, double min_margin) {
   const double slack_m = slack_beyond_reach_m(s, pairs, reach_m, i, j);
   return slack_m >= 0.0 && slack_m >= min_margin;
@@ -60,9 +60,9 @@ bool far_apart(const Scenario& s, const PairStepper& pairs, const std::vector<do
 }  // namespace
 
 MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
-  const Scenario& s = ctx.scenario;
+  const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
-  const std::size_t n = s.vehicles.size() + 1;
+  const std::size_t n = s.vehicles.size();
   const double T = s.params.rss.response_time_s;
   const double tol = ctx.params.accel_tolerance_mps2;
   MarginAccumulator acc("rss_longitudinal", steps.size());
@@ -73,7 +73,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
   // acceleration over that step is then smaller): it counts as stopped.
   std::vector<double> stop_speed(n);
   for (std::size_t v = 0; v < n; ++v)
-    stop_speed[v] = ctx.params.halted_speed_mps + limits_of(s, v).brake_min_mps2 * s.params.sim.step_s;
+    stop_speed[v] = ctx.params.halted_speed_mps + limits_of(s, v).brake_min_mps2 * step_interval_s(s);
   PairStepper pairs(s);
   NearPairs near;
   std::vector<double> reach_m(n), lo_m(n), hi_m(n);
@@ -81,7 +81,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
   double max_half_length_m = 0.0;
   for (std::size_t v = 0; v < n; ++v) max_half_length_m = std::max(max_half_length_m, 0.5 * size_of(s, v).length_m);
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const TraceStep& st = steps[k];
+    const ObservedStep& st = steps[k];
     pairs.load(st);
     for (std::size_t v = 0; v < n; ++v) {
       reach_m[v] = lon_reach_m(s, v, pairs.road_vx_mps(v));
@@ -106,7 +106,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
         // vehicle. An ego that only stops moving away (D_lat grows as its speed away falls to 0)
         // did not enter: it is where it was, e.g. off-centre in the side lane (docs/rules.md).
         const bool ego_in_pair = i == 0 || j == 0;
-        const double ego_toward_mps = g.right == 0 ? st.ego.road_vy_mps() : -st.ego.road_vy_mps();
+        const double ego_toward_mps = g.right == 0 ? ego_of(st).vy_mps : -ego_of(st).vy_mps;
         e = Episode{true, st.time_s, was_lon_only && ego_in_pair && ego_toward_mps > 0.0, kNobody, 0.0, false,
                     g.rear, st.time_s};
       }
@@ -114,7 +114,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
         e.rear = g.rear;
         e.rear_since_s = st.time_s;
       }
-      const VehicleState& rear = state_of(st, g.rear);
+      const ObservedState& rear = state_of(st, g.rear);
       std::string why;
       if (e.breach == kNobody) {
         if (last_overbrake[g.front] >= e.blame_time_s - T) {
@@ -179,9 +179,9 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
 }
 
 MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
-  const Scenario& s = ctx.scenario;
+  const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
-  const std::size_t n = s.vehicles.size() + 1;
+  const std::size_t n = s.vehicles.size();
   const double T = s.params.rss.response_time_s;
   const double tol = ctx.params.speed_tolerance_mps;
   MarginAccumulator acc("rss_lateral", steps.size());
@@ -189,7 +189,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
   PairStepper pairs(s);
   std::vector<double> reach_m(n);
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const TraceStep& st = steps[k];
+    const ObservedStep& st = steps[k];
     pairs.load(st);
     for (std::size_t v = 0; v < n; ++v) reach_m[v] = lon_reach_m(s, v, pairs.road_vx_mps(v));
     for (std::size_t j = 1; j < n; ++j) {
@@ -213,7 +213,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
       }
       if (!e.active) e = Episode{true, st.time_s, false, kNobody, 0.0, false};
       const bool obliged = !ctx.row.ego_holds_at(e.blame_time_s);
-      const double toward = g.right == 0 ? st.ego.road_vy_mps() : -st.ego.road_vy_mps();
+      const double toward = g.right == 0 ? ego_of(st).vy_mps : -ego_of(st).vy_mps;
       std::string why;
       if (obliged && e.breach == kNobody && st.time_s >= e.blame_time_s + T - 1e-9) {
         if (!e.response_speed_set) {
@@ -221,7 +221,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
           e.response_speed_set = true;
         }
         const double allowed =
-            std::max(0.0, e.response_speed_mps - s.ego.limits.lat_brake_min_mps2 * (st.time_s - e.blame_time_s - T));
+            std::max(0.0, e.response_speed_mps - limits_of(s, 0).lat_brake_min_mps2 * (st.time_s - e.blame_time_s - T));
         if (toward > allowed + tol) {
           e.breach = kEgoId;
           std::ostringstream os;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace mg {
@@ -9,33 +10,18 @@ namespace mg {
 MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
   const auto& steps = ctx.trace.steps;
   MarginAccumulator acc("smoothness_oscillation", steps.size());
-  int merges = ctx.phases.count(MergePhaseKind::kStart);
-  // An aborted merge (spec §6: abort when the P_c bounds cross) is a merge attempt of its own:
-  // out, back, and out again later is not oscillation. Aborts are merge decisions followed (RSS
-  // overrides aside) by a side-lane decision, or by a merge decision with another sigmoid: an
-  // abort whose side-lane decisions were all overridden by the RSS proper response shows only
-  // as the new merge. With k aborts there were at least k + 1 attempts.
-  int aborts = 0;
-  const Decision* last = nullptr;
-  const auto is_merge = [](const Decision& d) {
-    return d.mode == DecisionMode::kDef1Merge || d.mode == DecisionMode::kDef2Merge;
-  };
-  for (const Decision& d : ctx.trace.decisions) {
-    if (d.mode == DecisionMode::kProperResponse) continue;
-    if (last && is_merge(*last)) {
-      const bool to_side_lane = d.mode == DecisionMode::kDef1Halt || d.mode == DecisionMode::kDef2Request ||
-                                d.mode == DecisionMode::kKeepLane;
-      const bool new_sigmoid = is_merge(d) && (d.pc_m != last->pc_m || d.kappa_per_m != last->kappa_per_m);
-      aborts += to_side_lane || new_sigmoid;
-    }
-    last = &d;
-  }
-  merges = std::max(merges, aborts + 1);
+  // Each observed merge attempt (an abort back to the side lane and a new start is a new one, spec
+  // §6) may change the lateral speed's sign a few times; more is oscillation. At least one attempt
+  // is allowed for, so that a weave in a lane without any merge is judged too.
+  const int merges = std::max(ctx.phases.count(MergePhaseKind::kStart), 1);
   const int allowed = ctx.params.max_lat_speed_sign_changes_per_merge * merges;
   const double h = ctx.params.lat_speed_hysteresis_mps;
+  // Lateral motion before the first start is the ego keeping (or centring itself in) its lane:
+  // the merges' reversals are counted from there.
+  const std::optional<MergePhaseEvent> first_start = ctx.phases.first(MergePhaseKind::kStart);
   int sign = 0, changes = 0;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const double vy = steps[i].ego.road_vy_mps();
+  for (std::size_t i = first_start ? first_start->step : 0; i < steps.size(); ++i) {
+    const double vy = ego_of(steps[i]).vy_mps;
     const int now = vy > h ? 1 : vy < -h ? -1 : 0;
     if (now != 0 && sign != 0 && now != sign) ++changes;
     if (now != 0) sign = now;
@@ -54,9 +40,12 @@ MonitorOutput monitor_sideslip(const MonitorContext& ctx) {
   MarginAccumulator acc("sideslip", steps.size());
   const double limit = ctx.params.sideslip_max_rad;
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    const VehicleState& e = steps[i].ego;
-    if (e.vx_mps < ctx.params.sideslip_min_speed_mps) continue;
-    const double beta = std::atan2(e.vy_mps, e.vx_mps);
+    const ObservedState& e = ego_of(steps[i]);
+    // The velocity's angle to the heading, from the road-frame velocity (the body-frame one is
+    // not observable): beta = atan2(vy, vx) - yaw, wrapped to (-pi, pi].
+    const double body_vx = e.vx_mps * std::cos(e.yaw_rad) + e.vy_mps * std::sin(e.yaw_rad);
+    if (body_vx < ctx.params.sideslip_min_speed_mps) continue;
+    const double beta = std::remainder(std::atan2(e.vy_mps, e.vx_mps) - e.yaw_rad, 2.0 * M_PI);
     if (acc.record(i, steps[i].time_s, limit - std::abs(beta), kEgoId, limit, beta)) {
       std::ostringstream os;
       os << "ego sideslip " << beta << " rad exceeds " << limit << " rad at t = " << steps[i].time_s << " s";

@@ -12,6 +12,7 @@
 #include "core/scenario.h"
 #include "planner/planner.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 #include "rules/report_json.h"
 #include "rules/report_markdown.h"
 #include "sim/observed_run.h"
@@ -52,10 +53,10 @@ int run_check(const std::vector<std::string>& args) {
   if (!report_dir.empty()) prepare_output_dir("--report", report_dir);
   if (!trace_path.empty()) check_output_file("--save-trace", trace_path);
   const CheckResult result = check_scenario(scenario, planner_name);
-  if (!trace_path.empty()) write_observed_trace(observed_trace_of(scenario, result.trace), trace_path);
-  if (!report_dir.empty()) write_check_reports(report_dir, scenario, result);
+  if (!trace_path.empty()) write_observed_trace(result.trace, trace_path);
+  if (!report_dir.empty()) write_check_reports(report_dir, result);
   if (json) {
-    std::cout << report_json(scenario, result).dump(2) << "\n";
+    std::cout << report_json(result).dump(2) << "\n";
   } else {
     print_human(scenario, result, report_dir);
   }

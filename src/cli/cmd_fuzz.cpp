@@ -22,6 +22,7 @@
 #include "fuzz/corpus_case.h"
 #include "planner/planner.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 #include "rules/report_json.h"
 
 namespace mg::cli {
@@ -107,7 +108,7 @@ std::map<std::string, std::string> write_liability_reports(const std::string& di
   for (const std::string& path : r.new_cases) {
     const fuzz::CorpusCase c = fuzz::load_case(path);
     const std::string rel = "cases/" + c.signature.file_stem();
-    write_check_reports(dir + "/" + rel, c.scenario, check_scenario(c.scenario, c.signature.planner));
+    write_check_reports(dir + "/" + rel, check_scenario(c.scenario, c.signature.planner));
     links[path] = rel + "/report.html";
   }
   return links;

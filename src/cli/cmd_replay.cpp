@@ -16,6 +16,7 @@
 #include "fuzz/replay.h"
 #include "planner/planner.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 
 namespace mg::cli {
 namespace {

@@ -11,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/output_path.h"
 #include "core/scenario.h"
+#include "sim/checked_run.h"
 #include "rules/liability.h"
 #include "sim/paper_report.h"
 #include "sim/paper_search.h"
@@ -33,7 +34,7 @@ int run_search(const Scenario& base, const std::string& base_path, const std::st
 }
 
 std::vector<std::pair<double, int>> right_of_way_of(const Scenario& s, const Trace& t) {
-  return compute_right_of_way(s, t).timeline;
+  return check_trace(s, t).right_of_way;
 }
 
 int run(const std::vector<std::string>& args) {

@@ -1,5 +1,7 @@
 #include "core/observed_trace.h"
 
+#include <bit>
+
 namespace mg {
 
 int ObservedTrace::index_of(int id) const {
@@ -16,6 +18,21 @@ std::string to_string(ChannelEventKind k) {
     case ChannelEventKind::kLost: return "lost";
   }
   return "unknown";
+}
+
+std::uint64_t trace_digest(const ObservedTrace& t) {
+  std::uint64_t h = 1469598103934665603ULL;
+  const auto mix = [&h](double v) {
+    std::uint64_t b = std::bit_cast<std::uint64_t>(v);
+    for (int i = 0; i < 8; ++i, b >>= 8) h = (h ^ (b & 0xffU)) * 1099511628211ULL;
+  };
+  for (const ObservedStep& s : t.steps) {
+    mix(s.time_s);
+    for (const ObservedState& v : s.vehicles) {
+      for (const double x : {v.x_m, v.y_m, v.yaw_rad, v.vx_mps, v.vy_mps, v.accel_mps2}) mix(x);
+    }
+  }
+  return h;
 }
 
 }  // namespace mg

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -80,5 +81,8 @@ struct ObservedTrace {
 };
 
 std::string to_string(ChannelEventKind k);
+// FNV-1a (64 bit) over the bit patterns of every step's time and observed states: equal traces
+// have equal digests (reports print it; determinism checks compare it).
+std::uint64_t trace_digest(const ObservedTrace& t);
 
 }  // namespace mg

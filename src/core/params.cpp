@@ -7,7 +7,7 @@ namespace {
 
 RuleParams read_rules(const ObjectReader& r) {
   r.only_keys({"merge_duration_s", "comm_threshold_s", "merge_start_offset_m", "merge_abort_offset_m",
-               "merge_complete_offset_m", "merge_complete_yaw_rad",
+               "merge_complete_offset_m", "merge_complete_yaw_rad", "merge_decision_window_s",
                "accel_tolerance_mps2", "speed_tolerance_mps", "yield_speed_tolerance_mps", "halted_speed_mps",
                "road_edge_tolerance_m", "lat_speed_hysteresis_mps", "max_lat_speed_sign_changes_per_merge",
                "sideslip_max_rad", "sideslip_min_speed_mps", "progress_grace_s", "progress_gap_margin_m",
@@ -21,6 +21,7 @@ RuleParams read_rules(const ObjectReader& r) {
     r.fail("merge_abort_offset_m", "must be below merge_start_offset_m (the hysteresis)");
   p.merge_complete_offset_m = r.positive_or("merge_complete_offset_m", p.merge_complete_offset_m, 2.0);
   p.merge_complete_yaw_rad = r.positive_or("merge_complete_yaw_rad", p.merge_complete_yaw_rad, 0.5);
+  p.merge_decision_window_s = r.number_or("merge_decision_window_s", p.merge_decision_window_s, 0.0, 20.0);
   p.accel_tolerance_mps2 = r.number_or("accel_tolerance_mps2", p.accel_tolerance_mps2, 0.0, 2.0);
   p.speed_tolerance_mps = r.number_or("speed_tolerance_mps", p.speed_tolerance_mps, 0.0, 5.0);
   p.yield_speed_tolerance_mps = r.number_or("yield_speed_tolerance_mps", p.yield_speed_tolerance_mps, 0.0, 5.0);
@@ -115,6 +116,7 @@ nlohmann::json rule_params_to_json(const RuleParams& p) {
           {"merge_abort_offset_m", p.merge_abort_offset_m},
           {"merge_complete_offset_m", p.merge_complete_offset_m},
           {"merge_complete_yaw_rad", p.merge_complete_yaw_rad},
+          {"merge_decision_window_s", p.merge_decision_window_s},
           {"accel_tolerance_mps2", p.accel_tolerance_mps2},
           {"speed_tolerance_mps", p.speed_tolerance_mps},
           {"yield_speed_tolerance_mps", p.yield_speed_tolerance_mps},

@@ -40,9 +40,7 @@ struct PlannerParams {
 
 // The rule monitors' own parameters (issue #15): the durations Definitions 1 and 2 are judged
 // with, how a merge is recognised in the observed motion, and the tolerances. A planner may use
-// other values (PlannerParams) and is still judged by these. In this release they are validated
-// and kept (docs/scenario_format.md); the merge-phase thresholds are read by rules/merge_phases.h,
-// the rest by the oracle still to come (issue #15).
+// other values (PlannerParams) and is still judged by these (docs/scenario_format.md, docs/spec.md).
 struct RuleParams {
   double merge_duration_s = 4.0;        // rho_m of Def. 1, [0.5, 20]
   double comm_threshold_s = 1.0;        // rho_c of Def. 2, [0.05, 10]
@@ -54,6 +52,9 @@ struct RuleParams {
   double merge_abort_offset_m = 0.05;   // [0, merge_start_offset_m)
   double merge_complete_offset_m = 0.2; // (0, 2]
   double merge_complete_yaw_rad = 0.02; // (0, 0.5]
+  // How long before the observed start of a merge its decision may have been taken: the right of
+  // way is read at the latest instant of [start - window, start] at which it held (docs/spec.md).
+  double merge_decision_window_s = 4.0; // [0, 20]
   double accel_tolerance_mps2 = 0.05;   // measured accelerations beyond a declared limit by less are within it, [0, 2]
   double speed_tolerance_mps = 0.2;     // speed comparisons, [0, 5]
   double yield_speed_tolerance_mps = 0.5;  // a responder "at v_o*" within this, [0, 5]

@@ -13,7 +13,7 @@
 #include "sim/paper_variant.h"
 #include "sim/simulator.h"
 #include "sim/single_track.h"
-#include "sim/svg_plot.h"
+#include "core/svg_plot.h"
 
 namespace mg {
 namespace {

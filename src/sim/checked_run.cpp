@@ -1,12 +1,16 @@
-// check_scenario lives apart from check_trace so that tools which only judge existing traces
-// do not link the planners and the simulator.
+#include "sim/checked_run.h"
+
+#include <memory>
 #include <stdexcept>
 
-#include "planner/planner.h"
-#include "rules/check.h"
+#include "sim/observed_run.h"
 #include "sim/simulator.h"
 
 namespace mg {
+
+CheckResult check_trace(const Scenario& scenario, const Trace& trace) {
+  return check_observed(observed_trace_of(scenario, trace));
+}
 
 CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name) {
   std::unique_ptr<Planner> planner = make_planner(planner_name);

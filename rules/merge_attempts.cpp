@@ -1,0 +1,181 @@
+#include "rules/merge_attempts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "rules/check.h"
+
+namespace mg {
+
+std::string to_string(RowBasis b) {
+  switch (b) {
+    case RowBasis::kNone: return "none";
+    case RowBasis::kDef1: return "Definition 1";
+    case RowBasis::kDef2: return "Definition 2";
+  }
+  return "none";
+}
+
+namespace {
+
+// Trace times are sums of steps, deadlines are computed another way: the same instant may differ
+// by rounding. Closed windows include such ties.
+constexpr double kTieS = 1e-9;
+
+std::size_t step_at_or_after(const ObservedTrace& t, double time_s) {
+  const auto it = std::lower_bound(t.steps.begin(), t.steps.end(), time_s - kTieS,
+                                   [](const ObservedStep& s, double v) { return s.time_s < v; });
+  return static_cast<std::size_t>(it - t.steps.begin());
+}
+
+// The attempts' spans from the merge phases.
+std::vector<MergeAttempt> spans_of(const MergePhases& phases) {
+  std::vector<MergeAttempt> out;
+  for (const MergePhaseEvent& e : phases.events) {
+    if (e.kind == MergePhaseKind::kStart) {
+      out.push_back({});
+      out.back().start_step = e.step;
+      out.back().start_time_s = e.time_s;
+      continue;
+    }
+    if (out.empty()) continue;
+    MergeAttempt& a = out.back();
+    if (e.kind == MergePhaseKind::kMidpoint) a.midpoint_time_s = e.time_s;
+    if (e.kind == MergePhaseKind::kAbort || e.kind == MergePhaseKind::kComplete) a.end_time_s = e.time_s;
+    if (e.kind == MergePhaseKind::kComplete) a.completed = true;
+  }
+  return out;
+}
+
+// Definition 1 at step i for a gap, with rho_m or the observed duration.
+Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, const GapIndices& gap,
+                      std::size_t i) {
+  const double time_s = t.steps[i].time_s;
+  std::vector<double> rhos = {p.merge_duration_s};
+  if (a.midpoint_time_s && 2.0 * (*a.midpoint_time_s - time_s) > p.merge_duration_s)
+    rhos.push_back(2.0 * (*a.midpoint_time_s - time_s));
+  Def1Reading best;
+  bool have = false;
+  for (const double rho : rhos) {
+    Def1Reading r{gap, i, time_s, rho, def1_interval(t, i, gap, rho)};
+    // v_e*: nearest the ego's speed where it crossed the line (or would have, rho/2 on).
+    const std::size_t at = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s)
+                                             : std::min(step_at_or_after(t, time_s + 0.5 * rho), t.steps.size() - 1);
+    const double v_mid = t.steps[std::min(at, t.steps.size() - 1)].vehicles[0].vx_mps;
+    r.ve_star_mps = r.interval.feasible() ? std::clamp(v_mid, r.interval.ve_lo_mps, r.interval.ve_hi_mps)
+                                          : def1_best_speed_mps(t, i, gap, rho);
+    r.margin_11_m = def1_1_margin_m(t, i, gap.follower, r.ve_star_mps, rho);
+    r.margin_12_m = def1_2_margin_m(t, i, gap.leader, r.ve_star_mps, rho);
+    if (!have || (r.interval.feasible() && !best.interval.feasible()) ||
+        (r.interval.feasible() == best.interval.feasible() && r.min_margin_m() > best.min_margin_m())) {
+      best = r;
+      have = true;
+    }
+    if (best.interval.feasible()) break;
+  }
+  return best;
+}
+
+// A Def. 2 exchange with a vehicle of the gap that grants the attempt: accepted, the acceptance
+// delivered within rho_c of the request (closed window) and within [from_s, start]. With
+// `timely` false, the same for an acceptance delivered after rho_c.
+std::optional<CoopExchange> accepted_exchange(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a,
+                                              double from_s, bool timely) {
+  std::optional<CoopExchange> found;
+  for (const CoopExchange& x : coop_exchanges(t)) {
+    const double d = x.accept_delivered_time_s;
+    if (d < 0.0 || d < from_s - kTieS || d > a.start_time_s + kTieS) continue;
+    const int k = t.index_of(x.request->to_id);
+    const GapIndices then = gap_around_ego(t, step_at_or_after(t, d));
+    const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
+    if (!in(a.entered_gap) && !in(then)) continue;
+    if ((d <= x.request_time_s + p.comm_threshold_s + kTieS) == timely) found = x;
+  }
+  return found;
+}
+
+std::string gap_text(const ObservedTrace& t, const GapIndices& g) {
+  const auto side = [&](int k) { return k < 1 ? std::string("open") : party_name(t.vehicles[static_cast<std::size_t>(k)].id); };
+  return "(follower " + side(g.follower) + ", leader " + side(g.leader) + ")";
+}
+
+void describe(const ObservedTrace& t, MergeAttempt& a) {
+  std::ostringstream os;
+  os << "t = " << a.start_time_s << " s: ego starts merging into gap " << gap_text(t, a.gap) << "; ";
+  if (a.basis == RowBasis::kDef2) {
+    os << party_name(a.exchange->request->to_id) << "'s acceptance of the request of t = " << a.exchange->request_time_s
+       << " s was delivered at t = " << a.exchange->accept_delivered_time_s << " s, within rho_c -> ego holds (Def. 2)";
+  } else if (a.def1_read) {
+    const Def1Reading& r = a.def1;
+    os << "at t = " << r.time_s << " s with v_e* = " << r.ve_star_mps << " m/s, rho = " << r.rho_s << " s, ineq. 1.1 "
+       << (r.margin_11_m >= 0.0 ? "holds by " : "is violated by ") << std::abs(r.margin_11_m) << " m, ineq. 1.2 "
+       << (r.margin_12_m >= 0.0 ? "holds by " : "is violated by ") << std::abs(r.margin_12_m) << " m"
+       << (a.basis == RowBasis::kDef1 ? " -> ego holds (Def. 1)" : " (the best instant of the decision window) -> ego has no right of way");
+  } else {
+    os << "no decision window -> ego has no right of way";
+  }
+  a.observation = os.str();
+}
+
+// From a feasible reading, back over the window while the same gap stays feasible: the ego holds
+// the right of way from the start of that run (a planner that decided when the gap opened is
+// credited from then, and its lateral approach before the visible start is covered).
+void extend_back(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, std::size_t first) {
+  for (std::size_t i = a.def1.step; i-- > first;) {
+    const Def1Reading r = read_def1(t, p, a, a.gap, i);
+    if (!r.interval.feasible()) return;
+    a.def1 = r;
+  }
+}
+
+void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double window_from_s) {
+  const std::size_t mid_or_start = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s) : a.start_step;
+  a.entered_gap = gap_around_ego(t, std::min(mid_or_start, t.steps.size() - 1));
+  a.gap = a.entered_gap;
+  if (const auto x = accepted_exchange(t, p, a, window_from_s, true)) {
+    a.basis = RowBasis::kDef2;
+    a.exchange = x;
+    a.decision_time_s = x->accept_delivered_time_s;
+    return;
+  }
+  const std::size_t first = step_at_or_after(t, window_from_s);
+  for (std::size_t i = a.start_step + 1; i-- > first;) {  // latest first
+    // The gap the ego entered first, then the others of the lane at i: which gap a planner aims
+    // for is its own (a follower may also race past the ego, changing the gap it enters).
+    std::vector<GapIndices> gaps = {a.entered_gap};
+    for (const GapIndices& g : lane_gaps(t, i))
+      if (!(g == a.entered_gap)) gaps.push_back(g);
+    for (const GapIndices& gap : gaps) {
+      const Def1Reading r = read_def1(t, p, a, gap, i);
+      if (!a.def1_read || r.interval.feasible() || r.min_margin_m() > a.def1.min_margin_m()) {
+        a.def1 = r;
+        a.def1_read = true;
+        a.gap = gap;
+      }
+      if (r.interval.feasible()) {
+        a.basis = RowBasis::kDef1;
+        extend_back(t, p, a, first);
+        a.decision_time_s = a.def1.time_s;
+        return;
+      }
+    }
+  }
+  a.exchange = accepted_exchange(t, p, a, window_from_s, false);
+}
+
+}  // namespace
+
+MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p, const MergePhases& phases) {
+  MergeAttempts out;
+  out.attempts = spans_of(phases);
+  double previous_end_s = t.steps.empty() ? 0.0 : t.steps.front().time_s;
+  for (MergeAttempt& a : out.attempts) {
+    judge(t, p, a, std::max(previous_end_s, a.start_time_s - p.merge_decision_window_s));
+    describe(t, a);
+    previous_end_s = a.end_time_s.value_or(a.start_time_s);
+  }
+  return out;
+}
+
+}  // namespace mg

@@ -1,0 +1,21 @@
+// A simulated run judged by the rule checker: simulate, turn the run into its observable trace
+// (sim/observed_run.h) and judge that alone (rules/check.h). What `check`, `fuzz` and `replay`
+// run; the checker itself never sees the simulator or the planner.
+#pragma once
+
+#include <string>
+
+#include "core/scenario.h"
+#include "planner/planner.h"
+#include "rules/check.h"
+#include "sim/trace.h"
+
+namespace mg {
+
+// Judges an existing run of `scenario`.
+CheckResult check_trace(const Scenario& scenario, const Trace& trace);
+// Simulates with a new planner of the registry and judges the run. An unknown planner name raises
+// std::invalid_argument.
+CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name);
+
+}  // namespace mg

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "rules/definition1_gap.h"
+
 
 namespace mg {
 
@@ -18,14 +20,16 @@ MonitorOutput monitor_gap_inequality(const MonitorContext& ctx, GapSide side) {
   const ObservedTrace& t = ctx.trace;
   MarginAccumulator acc(side == GapSide::kFollower ? "def1_1_gap" : "def1_2_gap", t.steps.size());
   for (const MergeAttempt& a : ctx.attempts.attempts) {
-    if (a.basis == RowBasis::kDef2 || a.exchange || !a.def1_read) continue;
+    // An attempt that stayed in the side lane took nobody's room.
+    if (a.basis == RowBasis::kDef2 || a.exchange || !a.def1_read || !a.entry_step) continue;
     const int k = side == GapSide::kFollower ? a.gap.follower : a.gap.leader;
     if (k < 1) continue;  // open side of the gap: nothing to satisfy
     const Def1Reading& r = a.def1;
     const double m = side == GapSide::kFollower ? r.margin_11_m : r.margin_12_m;
-    if (acc.record(r.step, r.time_s, m, kEgoId, 0.0, m)) {
+    if (acc.record(*a.entry_step, *a.entry_time_s, m, kEgoId, 0.0, m)) {
       std::ostringstream os;
-      os << "ego started a merge at t = " << a.start_time_s << " s without the right of way: at the best instant "
+      os << "ego entered the main lane at t = " << *a.entry_time_s << " s (merge started at t = " << a.start_time_s
+         << " s) without the right of way: at the best instant "
          << "of its decision window (t = " << r.time_s << " s, v_e* = " << r.ve_star_mps << " m/s, rho = " << r.rho_s
          << " s) " << (side == GapSide::kFollower ? "ineq. (1) toward follower " : "ineq. (2) toward leader ")
          << party_name(party_of(t, static_cast<std::size_t>(k))) << " fails by " << -m << " m";
@@ -69,6 +73,12 @@ MonitorOutput monitor_window_limit(const MonitorContext& ctx, LimitKind kind) {
   return acc.finish();
 }
 
+bool any_def1_gap_feasible(const ObservedTrace& t, std::size_t step, double rho_s) {
+  for (const GapIndices& gap : lane_gaps(t, step))
+    if (def1_interval(t, step, gap, rho_s).feasible()) return true;
+  return false;
+}
+
 }  // namespace
 
 MonitorOutput monitor_def1_1_gap(const MonitorContext& ctx) { return monitor_gap_inequality(ctx, GapSide::kFollower); }
@@ -89,6 +99,9 @@ MonitorOutput monitor_def1_3_halt(const MonitorContext& ctx) {
     const double v = std::max(speed_of(e), 0.0);
     const double stop_x = e.x_m + size_of(s, 0).length_m / 2.0 + v * v / (2.0 * limits_of(s, 0).brake_max_mps2);
     const double m = s.road.side_lane_end_x_m - stop_x;
+    // Def. 1.3 binds only while no gap satisfies ineq. (1.1)/(1.2): with one, the ego may go on
+    // toward it (whether it then enters with the right of way is the gap rules' question).
+    if (m < 0.0 && any_def1_gap_feasible(s, i, ctx.params.merge_duration_s)) continue;
     if (acc.record(i, steps[i].time_s, m, kEgoId, s.road.side_lane_end_x_m, stop_x)) {
       std::ostringstream os;
       os << "ego in the side lane without a gap can no longer halt before its end at x = "

@@ -48,6 +48,19 @@ std::vector<MergeAttempt> spans_of(const MergePhases& phases) {
   return out;
 }
 
+// The first step of [from, to) at which the ego's leftmost corner is past the lane line.
+std::optional<std::size_t> entry_step_of(const ObservedTrace& t, std::size_t from, std::size_t to) {
+  const double line_y = -0.5 * t.road.lane_width_m;
+  const VehicleSize& size = t.vehicles[0].size;
+  for (std::size_t i = from; i < std::min(to, t.steps.size()); ++i) {
+    const ObservedState& e = t.steps[i].vehicles[0];
+    const double left_y = e.y_m + 0.5 * size.width_m * std::abs(std::cos(e.yaw_rad)) +
+                          0.5 * size.length_m * std::abs(std::sin(e.yaw_rad));
+    if (left_y > line_y) return i;
+  }
+  return std::nullopt;
+}
+
 // Definition 1 at step i for a gap, with rho_m or the observed duration.
 Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, const GapIndices& gap,
                       std::size_t i) {
@@ -85,7 +98,7 @@ std::optional<CoopExchange> accepted_exchange(const ObservedTrace& t, const Rule
   std::optional<CoopExchange> found;
   for (const CoopExchange& x : coop_exchanges(t)) {
     const double d = x.accept_delivered_time_s;
-    if (d < 0.0 || d < from_s - kTieS || d > a.start_time_s + kTieS) continue;
+    if (d < 0.0 || d < from_s - kTieS || d > a.entry_time_s.value_or(a.start_time_s) + kTieS) continue;
     const int k = t.index_of(x.request->to_id);
     const GapIndices then = gap_around_ego(t, step_at_or_after(t, d));
     const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
@@ -133,6 +146,9 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
   const std::size_t mid_or_start = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s) : a.start_step;
   a.entered_gap = gap_around_ego(t, std::min(mid_or_start, t.steps.size() - 1));
   a.gap = a.entered_gap;
+  const std::size_t end_step = a.end_time_s ? step_at_or_after(t, *a.end_time_s) : t.steps.size();
+  a.entry_step = entry_step_of(t, a.start_step, end_step + 1);
+  if (a.entry_step) a.entry_time_s = t.steps[*a.entry_step].time_s;
   if (const auto x = accepted_exchange(t, p, a, window_from_s, true)) {
     a.basis = RowBasis::kDef2;
     a.exchange = x;
@@ -140,12 +156,13 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
     return;
   }
   const std::size_t first = step_at_or_after(t, window_from_s);
-  for (std::size_t i = a.start_step + 1; i-- > first;) {  // latest first
-    // The gap the ego entered first, then the others of the lane at i: which gap a planner aims
-    // for is its own (a follower may also race past the ego, changing the gap it enters).
+  for (std::size_t i = std::max(a.entry_step.value_or(a.start_step), a.start_step) + 1; i-- > first;) {  // latest first
+    // The gap the ego entered, then the one around it at i (a follower may have raced past it
+    // since, changing the gap it entered). Never a gap the ego was neither in nor entered: the
+    // paper's model puts the ego at v_e* at once, so "behind the follower at v_e* = 0" would
+    // otherwise grant a cut-in ahead of that follower.
     std::vector<GapIndices> gaps = {a.entered_gap};
-    for (const GapIndices& g : lane_gaps(t, i))
-      if (!(g == a.entered_gap)) gaps.push_back(g);
+    if (const GapIndices around = gap_around_ego(t, i); !(around == a.entered_gap)) gaps.push_back(around);
     for (const GapIndices& gap : gaps) {
       const Def1Reading r = read_def1(t, p, a, gap, i);
       if (!a.def1_read || r.interval.feasible() || r.min_margin_m() > a.def1.min_margin_m()) {

@@ -6,7 +6,8 @@
 //   - the gap it entered is the follower and leader around the ego in the target lane where the
 //     attempt crossed the lane line (its midpoint), or, for an aborted attempt, at its start;
 //   - Definition 2: the right of way comes from an acceptance of the ego's request delivered to
-//     the ego within rho_c of the request, in the decision window [start - W, start];
+//     the ego within rho_c of the request, in the decision window [start - W, entry], entry being
+//     when the ego's body first reached into the main lane (its start, if it never did);
 //   - Definition 1: otherwise, the latest step T of that window at which some v_e* in [0, speed
 //     limit] satisfies ineq. (1.1) and (1.2) (definition1_gap.h) for the gap it entered or for the
 //     gap around the ego at T (a follower may have raced past it since), with rho = the
@@ -52,6 +53,10 @@ struct MergeAttempt {
   std::size_t start_step = 0;
   double start_time_s = 0.0;
   std::optional<double> midpoint_time_s;
+  // The first step at which the ego's body reached into the main lane (its leftmost corner past
+  // the lane line): Definition 1's gap rules judge only attempts that entered it.
+  std::optional<std::size_t> entry_step;
+  std::optional<double> entry_time_s;
   std::optional<double> end_time_s;    // abort or completion
   bool completed = false;
   GapIndices entered_gap;              // around the ego where it crossed the line (or at its start)

@@ -3,7 +3,8 @@
 // (RuleParams::merge_*), never from what a planner says it is doing.
 //
 //   side lane centre  ──●──── start: Y > y_side + merge_start_offset_m
-//                        ╲    abort: back below y_side + merge_abort_offset_m before the line
+//                        ╲    abort: before the line, back below y_side + merge_abort_offset_m, or
+//                         ╲          moving back, merge_abort_reversal_m short of its furthest Y
 //   lane line  ─ ─ ─ ─ ─ ─●─ midpoint: the centre reaches the line (Y >= -W/2)
 //                          ╲
 //   main lane centre  ──────●── complete: |Y| < merge_complete_offset_m, |yaw| < merge_complete_yaw_rad

@@ -11,9 +11,6 @@ namespace mg {
 namespace {
 
 constexpr double kProgressEvalS = 0.1;
-// The slowest merge speed that counts as a drivable merge: at walking pace a lane change needs
-// an unbounded heading. (WIP: a rule parameter, or a drivability criterion from the ego's limits.)
-constexpr double kMinMergeSpeedMps = 5.0;
 // At rest. (Braking toward a stop cannot be told from braking toward a merge speed by observation
 // alone, so the grace period counts from the standstill.)
 bool halting(const MonitorContext& ctx, const ObservedState& ego) { return speed_of(ego) < ctx.params.halted_speed_mps; }
@@ -25,10 +22,12 @@ std::optional<FeasibleMerge> def1_gap_feasible(const ObservedTrace& t, const Rul
   const auto& v = t.steps[step].vehicles;
   const double rho = p.merge_duration_s;
   const Limits& ego = t.vehicles[0].limits;
+  const double front_x_m = v[0].x_m + 0.5 * t.vehicles[0].size.length_m;
+  if (t.road.side_lane_end_x_m - front_x_m < p.progress_min_room_m) return std::nullopt;
   for (const GapIndices& gap : lane_gaps(t, step)) {
     if (gap.leader > 0 && v[static_cast<std::size_t>(gap.leader)].accel_mps2 < -leader_braking_mps2) continue;
     Def1Interval in = def1_interval(t, step, gap, rho, margin_m);
-    in.ve_lo_mps = std::max(in.ve_lo_mps, kMinMergeSpeedMps);
+    in.ve_lo_mps = std::max(in.ve_lo_mps, p.progress_min_merge_speed_mps);
     if (!in.feasible()) continue;
     const double to_mid_m = speed_change_distance_m(std::max(v[0].vx_mps, 0.0), in.ve_lo_mps, ego.accel_max_mps2,
                                                     ego.brake_min_mps2, 0.5 * rho);

@@ -6,12 +6,12 @@ namespace mg {
 namespace {
 
 RuleParams read_rules(const ObjectReader& r) {
-  r.only_keys({"merge_duration_s", "comm_threshold_s", "merge_start_offset_m", "merge_abort_offset_m",
+  r.only_keys({"merge_duration_s", "comm_threshold_s", "merge_start_offset_m", "merge_abort_offset_m", "merge_abort_reversal_m",
                "merge_complete_offset_m", "merge_complete_yaw_rad", "merge_decision_window_s",
                "accel_tolerance_mps2", "speed_tolerance_mps", "yield_speed_tolerance_mps", "halted_speed_mps",
                "road_edge_tolerance_m", "lat_speed_hysteresis_mps", "max_lat_speed_sign_changes_per_merge",
                "sideslip_max_rad", "sideslip_min_speed_mps", "progress_grace_s", "progress_gap_margin_m",
-               "progress_leader_braking_mps2"});
+               "progress_leader_braking_mps2", "progress_min_merge_speed_mps", "progress_min_room_m"});
   RuleParams p;
   p.merge_duration_s = r.number_or("merge_duration_s", p.merge_duration_s, 0.5, 20.0);
   p.comm_threshold_s = r.number_or("comm_threshold_s", p.comm_threshold_s, 0.05, 10.0);
@@ -19,6 +19,7 @@ RuleParams read_rules(const ObjectReader& r) {
   p.merge_abort_offset_m = r.number_or("merge_abort_offset_m", p.merge_abort_offset_m, 0.0, p.merge_start_offset_m);
   if (p.merge_abort_offset_m >= p.merge_start_offset_m)
     r.fail("merge_abort_offset_m", "must be below merge_start_offset_m (the hysteresis)");
+  p.merge_abort_reversal_m = r.number_or("merge_abort_reversal_m", p.merge_abort_reversal_m, 0.0, 1.0);
   p.merge_complete_offset_m = r.positive_or("merge_complete_offset_m", p.merge_complete_offset_m, 2.0);
   p.merge_complete_yaw_rad = r.positive_or("merge_complete_yaw_rad", p.merge_complete_yaw_rad, 0.5);
   p.merge_decision_window_s = r.number_or("merge_decision_window_s", p.merge_decision_window_s, 0.0, 20.0);
@@ -36,6 +37,9 @@ RuleParams read_rules(const ObjectReader& r) {
   p.progress_gap_margin_m = r.number_or("progress_gap_margin_m", p.progress_gap_margin_m, 0.0, 100.0);
   p.progress_leader_braking_mps2 =
       r.number_or("progress_leader_braking_mps2", p.progress_leader_braking_mps2, 0.0, 15.0);
+  p.progress_min_merge_speed_mps =
+      r.number_or("progress_min_merge_speed_mps", p.progress_min_merge_speed_mps, 0.0, 50.0);
+  p.progress_min_room_m = r.number_or("progress_min_room_m", p.progress_min_room_m, 0.0, 1000.0);
   return p;
 }
 
@@ -114,6 +118,7 @@ nlohmann::json rule_params_to_json(const RuleParams& p) {
           {"comm_threshold_s", p.comm_threshold_s},
           {"merge_start_offset_m", p.merge_start_offset_m},
           {"merge_abort_offset_m", p.merge_abort_offset_m},
+          {"merge_abort_reversal_m", p.merge_abort_reversal_m},
           {"merge_complete_offset_m", p.merge_complete_offset_m},
           {"merge_complete_yaw_rad", p.merge_complete_yaw_rad},
           {"merge_decision_window_s", p.merge_decision_window_s},
@@ -128,7 +133,9 @@ nlohmann::json rule_params_to_json(const RuleParams& p) {
           {"sideslip_min_speed_mps", p.sideslip_min_speed_mps},
           {"progress_grace_s", p.progress_grace_s},
           {"progress_gap_margin_m", p.progress_gap_margin_m},
-          {"progress_leader_braking_mps2", p.progress_leader_braking_mps2}};
+          {"progress_leader_braking_mps2", p.progress_leader_braking_mps2},
+          {"progress_min_merge_speed_mps", p.progress_min_merge_speed_mps},
+          {"progress_min_room_m", p.progress_min_room_m}};
 }
 
 nlohmann::json params_to_json(const Params& p) {

@@ -50,6 +50,9 @@ struct RuleParams {
   // merge_complete_yaw_rad, it is complete (the simulator's merge events use the same values).
   double merge_start_offset_m = 0.1;    // [0.01, 2]
   double merge_abort_offset_m = 0.05;   // [0, merge_start_offset_m)
+  // ... or, before the line, once it has turned back toward the side lane by more than this from
+  // the furthest Y of the attempt (smaller reversals are path-tracking ripple), [0, 1]
+  double merge_abort_reversal_m = 0.05;
   double merge_complete_offset_m = 0.2; // (0, 2]
   double merge_complete_yaw_rad = 0.02; // (0, 0.5]
   // How long before the observed start of a merge its decision may have been taken: the right of
@@ -67,6 +70,10 @@ struct RuleParams {
   double progress_grace_s = 3.0;        // progress: how long a feasible gap may go unused, [0, 600]
   double progress_gap_margin_m = 5.0;   // progress: slack a gap must have to count as feasible, [0, 100]
   double progress_leader_braking_mps2 = 0.5;  // progress: leader braking that excuses waiting, [0, 15]
+  double progress_min_merge_speed_mps = 5.0;  // progress: the slowest v_e* that counts as a drivable merge, [0, 50]
+  // progress: the side lane left ahead of the ego's front below which the rule claims no merge was
+  // possible (how to merge from rest close to the end is a matter of path design), [0, 1000]
+  double progress_min_room_m = 40.0;
   bool operator==(const RuleParams&) const = default;
 };
 

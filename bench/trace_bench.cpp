@@ -1,12 +1,17 @@
-// Trace loading (issue #15; figures in docs/performance.md, "Trace loading (issue 15)"): parse
-// and strictly load a 10-vehicle, 60 s, 50 Hz trace (3,001 steps, 180,060 numbers of state)
-// from its text, as `mergeguard check-trace` does with a file. The text is built once.
+// Trace loading and judging (issue #15; figures in docs/performance.md, "Trace loading (issue
+// 15)" and "Judging a trace (check-trace)"): parse and strictly load a 10-vehicle, 60 s, 50 Hz
+// trace (3,001 steps, 180,060 numbers of state) from its text, and load it from a file and judge
+// it by every rule, as `mergeguard check-trace` does. The trace is built once.
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "core/observed_trace_json.h"
+#include "rules/check.h"
 
 namespace {
 
@@ -74,5 +79,88 @@ void BM_ParseTraceTextOnly_10veh_60s_50Hz(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(nlohmann::json::parse(text).size());
 }
 BENCHMARK(BM_ParseTraceTextOnly_10veh_60s_50Hz)->Unit(benchmark::kMillisecond);
+
+// A merge as check-trace sees one: the ego drives 60 s in a 1.5 km side lane beside nine main-lane
+// vehicles 40 m apart (speeds and positions consistent, full-precision doubles) and moves over
+// into the gap between vehicles 4 and 5 from t = 20 s (a logistic lateral profile of about 4 s),
+// after a V2V request and its acceptance.
+mg::ObservedTrace merging_trace_10veh_60s_50hz() {
+  mg::ObservedTrace t;
+  t.name = "bench_merge_10veh_60s_50hz";
+  t.source = "bench/trace_bench.cpp";
+  t.road.side_lane_end_x_m = 1500.0;
+  for (int k = 0; k < 10; ++k) {
+    mg::VehicleDeclaration d;
+    d.id = k;
+    d.v2v_capable = true;
+    t.vehicles.push_back(d);
+  }
+  const double w = t.road.lane_width_m;
+  for (int i = 0; i <= 3000; ++i) {
+    mg::ObservedStep s;
+    s.time_s = i * 0.02;
+    const double tt = s.time_s;
+    // Ego: 22 m/s, lateral logistic from -W to 0 centred at t = 22 s.
+    const double e = std::exp(-2.0 * (tt - 22.0));
+    const double y = -w + w / (1.0 + e);
+    const double vy = w * 2.0 * e / ((1.0 + e) * (1.0 + e));
+    s.vehicles.push_back({-10.0 + 22.0 * tt, y, std::atan2(vy, 22.0), 22.0, vy, 0.0});
+    for (int k = 1; k < 10; ++k) {
+      const double phase = 0.3 * tt + k;
+      const double v = 22.0 + 0.3 * std::sin(phase);
+      const double x = 40.0 * (k - 5) + 10.0 + 22.0 * tt - std::cos(phase) + std::cos(static_cast<double>(k));
+      s.vehicles.push_back({x, 0.0, 0.0, v, 0.0, 0.09 * std::cos(phase)});
+    }
+    t.steps.push_back(std::move(s));
+  }
+  mg::V2vMessage request;
+  request.from_id = 0;
+  request.to_id = 4;
+  request.sent_time_s = 18.0;
+  request.pc_m = 470.0;
+  request.d_lon_star_m = 15.0;
+  request.target_speed_mps = 21.0;
+  t.channel.push_back({18.0, mg::ChannelEventKind::kSent, request});
+  request.delivered_time_s = 18.1;
+  t.channel.push_back({18.1, mg::ChannelEventKind::kDelivered, request});
+  mg::V2vMessage accept;
+  accept.type = mg::MessageType::kAccept;
+  accept.from_id = 4;
+  accept.to_id = 0;
+  accept.sent_time_s = 18.2;
+  t.channel.push_back({18.2, mg::ChannelEventKind::kSent, accept});
+  accept.delivered_time_s = 18.3;
+  t.channel.push_back({18.3, mg::ChannelEventKind::kDelivered, accept});
+  t.planner_annotations = {{"planner", "bench"},
+                           {"decisions", nlohmann::json::array({{{"time_s", 18.0}, {"mode", "def2_request"}}})}};
+  return t;
+}
+
+// What `mergeguard check-trace TRACE.json --json` costs without process start-up and printing:
+// read the file (parse, strict load) and judge it by every rule. The file is written once.
+void BM_ReadAndCheckTrace_10veh_60s_50Hz(benchmark::State& state) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("mg_bench_trace_" + std::to_string(::getpid()) + ".json");
+  const mg::ObservedTrace written = merging_trace_10veh_60s_50hz();
+  mg::write_observed_trace(written, path.string());
+  std::size_t violated = 0;
+  for (auto _ : state) {
+    const mg::CheckResult r = mg::check_observed(mg::load_observed_trace(path.string()));
+    violated = 0;
+    for (const mg::RuleResult& rule : r.rules) violated += rule.holds ? 0 : 1;
+    benchmark::DoNotOptimize(r.holds);
+  }
+  state.counters["file_MB"] = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
+  state.counters["rules_violated"] = static_cast<double>(violated);
+  std::filesystem::remove(path);
+}
+BENCHMARK(BM_ReadAndCheckTrace_10veh_60s_50Hz)->Unit(benchmark::kMillisecond);
+
+// The judgement alone, on the loaded trace.
+void BM_CheckTraceOnly_10veh_60s_50Hz(benchmark::State& state) {
+  const mg::ObservedTrace t = mg::observed_trace_from_text(mg::observed_trace_to_text(merging_trace_10veh_60s_50hz()), "bench.json");
+  for (auto _ : state) benchmark::DoNotOptimize(mg::check_observed(t).holds);
+}
+BENCHMARK(BM_CheckTraceOnly_10veh_60s_50Hz)->Unit(benchmark::kMillisecond);
 
 }  // namespace

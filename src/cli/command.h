@@ -32,6 +32,7 @@ struct Command {
 const std::map<std::string, Command>& commands();
 
 Command check_command();
+Command check_trace_command();
 Command corpus_command();
 Command fuzz_command();
 Command plan_command();

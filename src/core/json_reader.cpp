@@ -167,8 +167,9 @@ double ObjectReader::number_or(std::string_view key, double fallback, double lo,
 }
 
 double ObjectReader::positive(std::string_view key, double hi) const {
-  const double x = number(key, -std::numeric_limits<double>::max(), hi);
+  const double x = number(key, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
   if (!(x > 0.0)) fail(key, "must be > 0, got " + format_number(x));
+  if (x > hi) fail(key, "must be in (0, " + format_number(hi) + "], got " + format_number(x));
   return x;
 }
 

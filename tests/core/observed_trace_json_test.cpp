@@ -307,6 +307,17 @@ TEST(ObservedTraceJson, HostileTraceFilesNameTheFileAndTheJsonPath) {
       {"undeclared_message_id.json", ": /channel/2/message/from_id: vehicle id 7 is not declared in /vehicles"},
       {"truncated.json", ": /: malformed JSON"},
       {"duplicate_key.json", ": /steps/1/time_s: duplicate key 'time_s'"},
+      {"empty.json", ": /: empty input"},
+      {"infinity_literal.json", ": /: malformed JSON"},
+      {"number_overflow.json", ": /: number out of range of a double"},
+      {"decreasing_time.json", ": /steps/1/time_s: times must increase strictly (0.01 after 0.02)"},
+      {"extra_state_row.json", ": /steps/2/states: 4 states for 3 declared vehicles (1 extra)"},
+      {"zero_length.json", ": /vehicles/0/size/length_m: must be > 0, got 0"},
+      {"zero_width.json", ": /vehicles/1/size/width_m: must be > 0, got 0"},
+      {"huge_width.json", ": /vehicles/0/size/width_m: must be in (0, 5], got 50"},
+      {"absurd_limits.json", ": /vehicles/0/limits/brake_max_mps2: must be in (0, 15], got 1000000000"},
+      {"negative_limit.json", ": /vehicles/2/limits/accel_max_mps2: must be in [0, 15], got -2"},
+      {"inconsistent_limits.json", ": /vehicles/0/limits/brake_min_mps2: must be <= brake_max_mps2"},
   };
   std::set<std::string> listed;
   for (const auto& [file, expected] : files) {

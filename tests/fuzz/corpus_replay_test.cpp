@@ -5,6 +5,7 @@
 #include "fuzz/corpus_case.h"
 #include "fuzz/replay.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 
 namespace mg::fuzz {
 namespace {

@@ -1,4 +1,4 @@
-// A test-only stand-in for check_scenario with a planted failure that shrinking can minimise:
+// A test-only stand-in for check_scenario (sim/checked_run.h) with a planted failure that shrinking can minimise:
 // rule "fake_proximity" fails (ego liable) when a main-lane vehicle starts within
 // kFakeProximityM of the ego in X. Deterministic; the digest hashes the scenario JSON.
 #pragma once
@@ -29,8 +29,8 @@ inline CheckResult fake_check(const Scenario& s) {
   }
   r.holds = rule.holds;
   r.rules.push_back(rule);
-  r.trace.planner = "fake";
-  r.trace.digest = std::hash<std::string>{}(scenario_to_json(s).dump());
+  r.trace.source = "fake";
+  r.trace_digest = std::hash<std::string>{}(scenario_to_json(s).dump());
   return r;
 }
 

@@ -8,6 +8,7 @@
 #include "fuzz/properties.h"
 #include "fuzz/scenario_gen.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 
 namespace mg::fuzz {
 namespace {

@@ -85,15 +85,16 @@ TEST(Properties, CollisionBlamedOnTheEgoFailsWithCompliantOthers) {
 TEST(Properties, SideLaneEndIsCrossCheckedOnTheTrace) {
   Scenario s = one_vehicle_scenario();
   CheckResult r = result_with({});
-  TraceStep step;
+  ObservedStep step;
   step.time_s = 4.0;
-  step.ego.x_m = s.road.side_lane_end_x_m;  // front 2.4 m past the end, centre in the side lane
-  step.ego.y_m = -s.road.lane_width_m;
+  step.vehicles.resize(1 + s.vehicles.size());
+  step.vehicles[0].x_m = s.road.side_lane_end_x_m;  // front 2.4 m past the end, centre in the side lane
+  step.vehicles[0].y_m = -s.road.lane_width_m;
   r.trace.steps.push_back(step);
   const auto f = evaluate_properties(s, r, std::nullopt);
   ASSERT_TRUE(fails(f, property::kSideLaneEnd, kRuleSideLaneEnd));
   EXPECT_NEAR(f.front().margin, -s.ego.size.length_m / 2.0, 1e-9);
-  r.trace.steps.front().ego.y_m = 0.0;  // merged: the side lane's end no longer matters
+  r.trace.steps.front().vehicles[0].y_m = 0.0;  // merged: the side lane's end no longer matters
   EXPECT_TRUE(evaluate_properties(s, r, std::nullopt).empty());
 }
 
@@ -107,7 +108,7 @@ TEST(Properties, OscillationAndProgressRulesMapToTheirProperties) {
 
 TEST(Properties, DifferentRerunDigestFailsDeterminism) {
   CheckResult r = result_with({});
-  r.trace.digest = 42;
+  r.trace_digest = 42;
   EXPECT_TRUE(evaluate_properties(one_vehicle_scenario(), r, 42).empty());
   EXPECT_TRUE(fails(evaluate_properties(one_vehicle_scenario(), r, 43), property::kDeterminism, kRuleDigest));
 }

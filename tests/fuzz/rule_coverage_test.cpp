@@ -10,6 +10,7 @@
 
 #include "fuzz/campaign_report.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 #include "rules/rule_catalog.h"
 
 namespace mg::fuzz {

@@ -12,6 +12,7 @@
 
 #include "core/scenario.h"
 #include "rules/check.h"
+#include "sim/checked_run.h"
 
 namespace mg {
 namespace {

@@ -1,5 +1,8 @@
 #include "rules/definition1_monitor.h"
 
+#include <cmath>
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "trace_builder.h"
@@ -11,18 +14,16 @@ using test::base_scenario;
 using test::constant_accel_trace;
 using test::vehicle;
 
-// A Def. 1 merge decided at t = 0 into the gap (follower 1, leader 2) with v_e* = 22 m/s and
-// rho_m = 4 s. Ego at X = 0, all at 20 m/s.
-Trace with_decision(Trace t, int follower, int leader, double ve_star) {
-  Decision d;
-  d.time_s = 0.0;
-  d.mode = DecisionMode::kDef1Merge;
-  d.gap = Gap{follower, leader};
-  d.ve_star_mps = ve_star;
-  d.merge_duration_s = 4.0;
-  t.decisions.push_back(d);
-  return t;
-}
+// The ego (X = 0, 20 m/s, side lane) is seen to start merging at t = 0: it moves toward the main
+// lane at 1.75 m/s, its start observed at t = 0.06 s and its midpoint at t = 1 s (2 (1 - 0) s <
+// rho_m = 4 s, so Definition 1 is read with rho = 4 s). The gap it enters is (follower 1,
+// leader 2); Definition 1 is read in the decision window [0, 0.06 s], and with every vehicle at
+// 20 m/s the geometry, hence each margin, is the same at every step of it. v_e* is the feasible
+// value nearest the ego's 20 m/s at the midpoint.
+//
+//   main lane   --[1]---------(X_o)                 [ego at the midpoint]     [2]-->
+//   side lane                       [ego]  ->  lateral 1.75 m/s
+Trace merging_at_t0(Trace t) { return test::with_lateral_move(std::move(t), 0.0, 1.75); }
 
 Scenario gap_scenario(double follower_x, double leader_x) {
   Scenario s = base_scenario();
@@ -30,43 +31,67 @@ Scenario gap_scenario(double follower_x, double leader_x) {
   return s;
 }
 
-// Ineq. (1): LHS = X_o + 20*2 + 2*16/8 = X_o + 44. D_lon with the follower at 20 + 2*2 = 24 m/s
-// behind the ego at 22: 4.8 + [24*0.5 + 0.25 + 25^2/8 - 22^2/16] = 4.8 + 60.125 = 64.925 m.
-// RHS = 0 + 22*2 - 64.925 = -20.925. Margin = -20.925 - (X_o + 44).
+// Ineq. (1) at v_e* = 20: LHS = X_o + 20*2 + 2*16/8 = X_o + 44. D_lon with the follower at
+// 20 + 2*2 = 24 m/s behind the ego at 20: 4.8 + [24*0.5 + 0.25 + 25^2/8 - 20^2/16] = 70.175 m.
+// RHS = 0 + 20*2 - 70.175 = -30.175. Margin = -30.175 - (X_o + 44) = -X_o - 74.175.
 TEST(Def1Monitor, Ineq1HoldsWhenFollowerFarBehind) {
   const Scenario s = gap_scenario(-80.0, 200.0);
-  const MonitorOutput out = test::run(monitor_def1_1_gap, s, with_decision(constant_accel_trace(s, 1.0), 1, 2, 22.0));
+  const MonitorOutput out = test::run(monitor_def1_1_gap, s, merging_at_t0(constant_accel_trace(s, 1.0)));
   EXPECT_TRUE(out.result.holds);
-  EXPECT_NEAR(out.result.min_margin, -20.925 - (-80.0 + 44.0), 1e-9);  // 15.075 m
+  EXPECT_NEAR(out.result.min_margin, 80.0 - 74.175, 1e-9);  // 5.825 m
 }
 
+// With a speed limit of 22 m/s the best v_e* toward a follower alone is 22 m/s: LHS as above,
+// D_lon(24 behind 22) = 4.8 + [12 + 0.25 + 78.125 - 22^2/16] = 64.925 m, RHS = 44 - 64.925.
+// Margin = -20.925 - (X_o + 44): a follower 55 m behind fails by 9.925 m at every v_e*. (The
+// other gap of the lane, behind vehicle 1, is worse: ineq. (1.2) toward it at v_e* = 0 over
+// rho/2 = 2 s is -55 + 20*2 - 4.8 = -19.8 m. Closer than 35.2 m it would be feasible, see
+// merge_attempts_test.cpp.)
 TEST(Def1Monitor, Ineq1FailsForCloseFollowerAndBlamesEgo) {
-  const Scenario s = gap_scenario(-40.0, 200.0);
-  const MonitorOutput out = test::run(monitor_def1_1_gap, s, with_decision(constant_accel_trace(s, 1.0), 1, 2, 22.0));
+  Scenario s = gap_scenario(-55.0, 200.0);
+  s.vehicles.pop_back();  // the follower alone: no leader constrains v_e*
+  s.road.speed_limit_mps = 22.0;
+  const MonitorOutput out = test::run(monitor_def1_1_gap, s, merging_at_t0(constant_accel_trace(s, 1.0)));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
-  EXPECT_NEAR(out.result.min_margin, -20.925 - 4.0, 1e-9);  // -24.925 m
+  EXPECT_NEAR(out.result.min_margin, -20.925 + 11.0, 1e-6);  // -9.925 m
 }
 
 // Ineq. (2) with v_e* = 20: D_lon(ego rear at 20, leader at 20) = 45.175 m;
-// margin = (X_o + 80 - 45.175) - (0 + 80) = X_o - 45.175.
+// margin = (X_o + 20 tau - 45.175) - (0 + 20 tau) = X_o - 45.175.
 TEST(Def1Monitor, Ineq2MarginIsLeaderDistanceMinusDlon) {
   const Scenario ok = gap_scenario(-200.0, 60.0);
-  const MonitorOutput held = test::run(monitor_def1_2_gap, ok, with_decision(constant_accel_trace(ok, 1.0), 1, 2, 20.0));
+  const MonitorOutput held = test::run(monitor_def1_2_gap, ok, merging_at_t0(constant_accel_trace(ok, 1.0)));
   EXPECT_TRUE(held.result.holds);
   EXPECT_NEAR(held.result.min_margin, 60.0 - 45.175, 1e-9);
-  const Scenario bad = gap_scenario(-200.0, 40.0);
-  const MonitorOutput broke = test::run(monitor_def1_2_gap, bad, with_decision(constant_accel_trace(bad, 1.0), 1, 2, 20.0));
+  // A gap too short from both ends (follower 40 m behind, leader 40 m ahead, speed limit 22 m/s):
+  // no v_e* satisfies both inequalities, the ego merged without the right of way and breaks (1.2).
+  Scenario bad = gap_scenario(-40.0, 40.0);
+  bad.road.speed_limit_mps = 22.0;
+  const MonitorOutput broke = test::run(monitor_def1_2_gap, bad, merging_at_t0(constant_accel_trace(bad, 1.0)));
   ASSERT_FALSE(broke.result.holds);
-  EXPECT_NEAR(broke.result.min_margin, 40.0 - 45.175, 1e-9);
+  EXPECT_EQ(broke.result.liable_id, kEgoId);
+  EXPECT_LT(broke.result.min_margin, 0.0);
+}
+
+TEST(Def1Monitor, NoObservedMergeNoGapRuleApplies) {
+  // The same too-short gap with the ego staying in its lane: no attempt, nothing to judge.
+  Scenario s = gap_scenario(-40.0, 40.0);
+  s.road.speed_limit_mps = 22.0;
+  const Trace t = constant_accel_trace(s, 1.0);
+  for (MonitorFn fn : {monitor_def1_1_gap, monitor_def1_2_gap}) {
+    const MonitorOutput out = test::run(fn, s, t);
+    EXPECT_TRUE(out.result.holds);
+    EXPECT_FALSE(std::isfinite(out.result.min_margin));
+  }
 }
 
 TEST(Def1Monitor, FollowerAcceleratingBeyondItsLimitInTheWindowIsLiable) {
   // Follower accelerates at 3 > a_accel^max 2 (+0.05 tolerance): margin 2.05 - 3 = -0.95 m/s2
-  // from T_dec = 0.
+  // from T_dec = 0 (the gap is feasible from the first step of the window).
   const Scenario s = gap_scenario(-80.0, 200.0);
   const MonitorOutput out =
-      test::run(monitor_def1_1_follower, s, with_decision(constant_accel_trace(s, 3.0, {0.0, 3.0, 0.0}), 1, 2, 22.0));
+      test::run(monitor_def1_1_follower, s, merging_at_t0(constant_accel_trace(s, 3.0, {0.0, 3.0, 0.0})));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, 1);
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.0, 1e-12);
@@ -74,9 +99,9 @@ TEST(Def1Monitor, FollowerAcceleratingBeyondItsLimitInTheWindowIsLiable) {
 }
 
 TEST(Def1Monitor, FollowerAtItsLimitHoldsAndOnlyTheWindowCounts) {
-  // At a = 2 the margin is the tolerance 0.05; a = 3 after the window [0, 2] s does not count.
+  // At a = 2 the margin is the tolerance 0.05; a = 3 after the window [0, rho/2 = 2] s does not count.
   const Scenario s = gap_scenario(-80.0, 200.0);
-  Trace t = with_decision(constant_accel_trace(s, 4.0, {0.0, 2.0, 0.0}), 1, 2, 22.0);
+  Trace t = merging_at_t0(constant_accel_trace(s, 4.0, {0.0, 2.0, 0.0}));
   for (auto& st : t.steps) {
     if (st.time_s > 2.1) st.others[0].accel_mps2 = 3.0;
   }
@@ -85,11 +110,18 @@ TEST(Def1Monitor, FollowerAtItsLimitHoldsAndOnlyTheWindowCounts) {
   EXPECT_NEAR(out.result.min_margin, 0.05, 1e-9);
 }
 
+TEST(Def1Monitor, FollowerLimitIsNotJudgedWithoutADef1RightOfWay) {
+  // The same over-accelerating follower while the ego stays in its lane: no Def. 1 window.
+  const Scenario s = gap_scenario(-80.0, 200.0);
+  const MonitorOutput out = test::run(monitor_def1_1_follower, s, constant_accel_trace(s, 3.0, {0.0, 3.0, 0.0}));
+  EXPECT_TRUE(out.result.holds);
+}
+
 TEST(Def1Monitor, LeaderBrakingBeyondBmaxInTheWindowIsLiable) {
   // Leader brakes at 9 > b_max 8: margin 8.05 - 9 = -0.95 m/s2.
   const Scenario s = gap_scenario(-80.0, 60.0);
   const MonitorOutput out =
-      test::run(monitor_def1_2_leader, s, with_decision(constant_accel_trace(s, 1.0, {0.0, 0.0, -9.0}), 1, 2, 20.0));
+      test::run(monitor_def1_2_leader, s, merging_at_t0(constant_accel_trace(s, 1.0, {0.0, 0.0, -9.0})));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, 2);
   EXPECT_NEAR(out.result.min_margin, -0.95, 1e-9);
@@ -109,12 +141,19 @@ TEST(Def1Monitor, HaltRuleMarginIsDistanceFromStopPointToSideLaneEnd) {
 }
 
 TEST(Def1Monitor, HaltRuleDoesNotApplyWhileTheEgoHoldsTheRightOfWay) {
+  // The ego of the previous test (too fast to halt before the side lane's end), with vehicle 1
+  // 450 m behind: seen merging from t = 0, it holds the right of way by Definition 1 from then
+  // (the gap behind nobody, ahead of vehicle 1, is feasible at 30 m/s) and the halt rule does not
+  // apply. Without the lateral motion it has no right of way and breaks it.
   Scenario s = base_scenario();
   s.ego.x_m = 250.0;
   s.ego.speed_mps = 30.0;
   s.vehicles = {vehicle(1, -200.0, 20.0)};
-  const MonitorOutput out = test::run(monitor_def1_3_halt, s, with_decision(constant_accel_trace(s, 0.5), 1, -1, 30.0));
+  const MonitorOutput out = test::run(monitor_def1_3_halt, s, merging_at_t0(constant_accel_trace(s, 0.5)));
   EXPECT_TRUE(out.result.holds);
+  EXPECT_FALSE(std::isfinite(out.result.min_margin));
+  const MonitorOutput staying = test::run(monitor_def1_3_halt, s, constant_accel_trace(s, 0.5));
+  EXPECT_FALSE(staying.result.holds);
 }
 
 }  // namespace

@@ -1,6 +1,11 @@
 #include "rules/definition2_monitor.h"
 
+#include <cmath>
+#include <utility>
+
 #include <gtest/gtest.h>
+
+#include "rules/definition1_monitor.h"
 
 #include "trace_builder.h"
 
@@ -148,41 +153,62 @@ TEST(Def2Monitor, ResponderThatDoesNotSpeedUpForA22RequestIsLiable) {
   EXPECT_NEAR(out.result.min_margin, -3.5, 1e-9);
 }
 
-Trace with_coop_merge(Trace t, double merge_time_s) {
-  Decision d;
-  d.time_s = merge_time_s;
-  d.mode = DecisionMode::kDef2Merge;
-  d.coop_partner_id = 1;
-  t.decisions.push_back(d);
-  return t;
+// The ego seen moving toward the main lane from merge_time_s at 1.75 m/s (its start observed 0.06 s
+// later). Vehicle 1 is moved 45 m behind, and with a speed limit of 22 m/s leaves no Definition 1
+// gap: ahead of it ineq. (1.1) needs 64.925 m (definition1_monitor_test.cpp), behind it ineq. (1.2)
+// at v_e* = 0 over rho/2 = 2 s fails by -45 + 20*2 - 4.8 = -9.8 m. Only an acceptance grants the merge.
+Trace with_coop_merge(Trace t, double merge_time_s) { return test::with_lateral_move(std::move(t), merge_time_s, 1.75); }
+Scenario coop_merge_scenario() {
+  Scenario s = coop_scenario();
+  s.vehicles[0].x_m = -45.0;
+  s.road.speed_limit_mps = 22.0;
+  return s;
 }
 
 TEST(Def2Monitor, CooperativeMergeNeedsAnAcceptanceWithinRhoC) {
-  const Scenario s = coop_scenario();
-  // Request at 0, acceptance sent at 0.1 s and delivered at 0.3 s: margin 0 + 1 - 0.3 = 0.7 s.
-  Trace ok = with_coop_merge(constant_accel_trace(s, 1.0), 0.5);
-  ok.events.push_back(message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 50, 30, 16));
-  TraceEvent delivered = message_event(0.3, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 50, 30, 16);
-  delivered.kind = EventKind::kMessageDelivered;
-  ok.events.push_back(delivered);
+  const Scenario s = coop_merge_scenario();
+  const TraceEvent request = message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 50, 30, 16);
+  const TraceEvent accept = message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 50, 30, 16);
+  // Request at 0, acceptance delivered at 0.3 s, merge from 0.5 s: margin 0 + 1 - 0.3 = 0.7 s.
+  Trace ok = with_coop_merge(constant_accel_trace(s, 2.0), 0.5);
+  ok.events = {request, accept, test::delivered_event(accept, 0.3)};
   const MonitorOutput held = test::run(monitor_def2_3_fallback, s, ok);
   EXPECT_TRUE(held.result.holds);
   EXPECT_NEAR(held.result.min_margin, 0.7, 1e-9);
-  // No acceptance at all: margin -rho_c = -1 s, the ego liable.
-  Trace bad = with_coop_merge(constant_accel_trace(s, 1.0), 0.5);
-  bad.events.push_back(message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 50, 30, 16));
-  const MonitorOutput broke = test::run(monitor_def2_3_fallback, s, bad);
+  // The acceptance delivered at 1.4 s, after rho_c, and the merge from 1.5 s: margin 1 - 1.4 =
+  // -0.4 s, the ego liable.
+  Trace late = with_coop_merge(constant_accel_trace(s, 2.0), 1.5);
+  late.events = {request, accept, test::delivered_event(accept, 1.4)};
+  const MonitorOutput broke = test::run(monitor_def2_3_fallback, s, late);
   ASSERT_FALSE(broke.result.holds);
   EXPECT_EQ(broke.result.liable_id, kEgoId);
-  EXPECT_NEAR(broke.result.min_margin, -1.0, 1e-9);
+  EXPECT_NEAR(broke.result.min_margin, -0.4, 1e-9);
+}
+
+TEST(Def2Monitor, AMergeWithoutAnyAcceptanceIsDefinition1s) {
+  // No acceptance at all: not a cooperative merge, so def2_3 does not apply; the ego merged
+  // without the right of way and a def1 gap rule holds it liable: the best reading of its
+  // decision window is the gap behind vehicle 1, where ineq. (1.2) fails by 9.8 m.
+  const Scenario s = coop_merge_scenario();
+  Trace t = with_coop_merge(constant_accel_trace(s, 2.0), 0.5);
+  t.events.push_back(message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 50, 30, 16));
+  const MonitorOutput fallback = test::run(monitor_def2_3_fallback, s, t);
+  EXPECT_TRUE(fallback.result.holds);
+  EXPECT_FALSE(std::isfinite(fallback.result.min_margin));
+  const MonitorOutput gap = test::run(monitor_def1_2_gap, s, t);
+  ASSERT_FALSE(gap.result.holds);
+  EXPECT_EQ(gap.result.liable_id, kEgoId);
+  EXPECT_NEAR(gap.result.min_margin, -9.8, 1e-6);
 }
 
 TEST(Def2Monitor, AnAcceptanceDeliveredAtTheDeadlineItselfIsInTime) {
   // Run 60204 of the seed-1 campaign: the request at step 455 (t = 9.1 s), rho_c = 1.2 s, the
   // acceptance delivered at step 515 (t = 10.3 s). As trace times they differ from t_r + rho_c by
   // rounding, and the margin was -1.8e-15 s (the ego liable); the window is closed, so a tie
-  // holds with margin 0. One step later (10.32 s) is late: margin -0.02 s.
-  const Scenario s = coop_scenario();
+  // holds with margin 0. One step later (10.32 s) is late: margin -0.02 s. The ego is seen to
+  // start merging right after the acceptance arrives.
+  Scenario s = coop_merge_scenario();
+  s.params.rules.comm_threshold_s = 1.2;
   const auto traced = [&](double accept_time_s) {
     Trace t = with_coop_merge(constant_accel_trace(s, 11.0), accept_time_s);
     const double t_r = t.steps[455].time_s;
@@ -192,14 +218,12 @@ TEST(Def2Monitor, AnAcceptanceDeliveredAtTheDeadlineItselfIsInTime) {
     t.events.push_back(delivered);
     return t;
   };
-  Scenario tie = s;
-  tie.params.planner.comm_threshold_s = 1.2;
   const Trace on_time = traced(constant_accel_trace(s, 11.0).steps[515].time_s);
   ASSERT_LT(on_time.steps[455].time_s + 1.2 - on_time.steps[515].time_s, 0.0);  // the rounding of the finding
-  const MonitorOutput held = test::run(monitor_def2_3_fallback, tie, on_time);
+  const MonitorOutput held = test::run(monitor_def2_3_fallback, s, on_time);
   EXPECT_TRUE(held.result.holds);
   EXPECT_EQ(held.result.min_margin, 0.0);
-  const MonitorOutput late = test::run(monitor_def2_3_fallback, tie, traced(constant_accel_trace(s, 11.0).steps[516].time_s));
+  const MonitorOutput late = test::run(monitor_def2_3_fallback, s, traced(constant_accel_trace(s, 11.0).steps[516].time_s));
   ASSERT_FALSE(late.result.holds);
   EXPECT_EQ(late.result.liable_id, kEgoId);
   EXPECT_NEAR(late.result.min_margin, -0.02, 1e-9);

@@ -1,5 +1,8 @@
 #include "rules/liability.h"
 
+#include <algorithm>
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "rules/check.h"
@@ -12,45 +15,66 @@ using test::base_scenario;
 using test::constant_accel_trace;
 using test::vehicle;
 
+// The right of way of a run, as rules/check.cpp computes it from the observable trace.
+RightOfWay right_of_way(const Scenario& s, const Trace& t) { return test::judge(s, t)->row; }
+
+// Vehicle 1 starts 10.05 m behind the ego at 15 m/s, the ego at 20 m/s (speed limit 22 m/s): the
+// gap ahead of vehicle 1 opens by 5 m/s. Ineq. (1.1) at the best v_e* = 22 m/s: LHS = X_o + 15*2
+// + 2*4^2/8 = X_o + 34, D_lon(19 behind 22) = 4.8 + 9.5 + 0.25 + 20^2/8 - 22^2/16 = 34.3 m,
+// RHS = X + 44 - 34.3: it holds once X - X_o >= 24.3 m, i.e. from t = 2.85 s (first step 2.86 s).
+// (Behind vehicle 1 there is no gap: it is slower than the ego and starts too close for (1.2).)
+// The ego is seen to move toward the main lane from t = 3 s at 1 m/s (start 3.1 s, midpoint
+// 4.75 s, on the main-lane centre from 6.3 s); the gap has stayed feasible since 2.46 s.
+//
+//   t = 0      [1]--10 m--[ego]          t = 2.86 s   [1]------24.3 m------[ego]  Def. 1 holds
 TEST(RightOfWay, MainLaneHoldsUntilADef1GapIsEstablished) {
   Scenario s = base_scenario();
-  s.vehicles = {vehicle(1, -80.0, 20.0)};
-  Trace t = constant_accel_trace(s, 5.0);
-  Decision halt;
-  halt.time_s = 0.0;
-  halt.mode = DecisionMode::kDef1Halt;
-  Decision merge;
-  merge.time_s = 1.0;
-  merge.mode = DecisionMode::kDef1Merge;
-  merge.gap = Gap{1, -1};
-  t.decisions = {halt, merge};
-  // The ego drifts toward the main lane at 0.8 m/s and is on its centre at t = 4 s: the merge
-  // is observed complete there.
-  for (TraceStep& st : t.steps) st.ego.y_m = st.time_s < 4.0 ? -3.5 + 0.8 * st.time_s : 0.0;
-  const RightOfWay row = compute_right_of_way(s, t);
+  s.road.speed_limit_mps = 22.0;
+  s.vehicles = {vehicle(1, -10.05, 15.0)};
+  const Trace t = test::with_lateral_move(constant_accel_trace(s, 7.0), 3.0, 1.0);
+  const RightOfWay row = right_of_way(s, t);
   ASSERT_EQ(row.timeline.size(), 3u);
   EXPECT_EQ(row.timeline[0], std::make_pair(0.0, kMainLane));
-  EXPECT_EQ(row.timeline[1], std::make_pair(1.0, kEgoId));
-  EXPECT_EQ(row.timeline[2], std::make_pair(4.0, kNobody));
-  EXPECT_FALSE(row.ego_holds_at(0.5));
-  EXPECT_TRUE(row.ego_holds_at(2.0));
-  EXPECT_FALSE(row.ego_holds_at(4.5));
-  EXPECT_FALSE(row.ego_held_within(4.2, 4.5));
-  EXPECT_TRUE(row.ego_held_within(3.5, 4.5));
-  EXPECT_TRUE(row.ego_held_within(0.0, 1.0));
-  EXPECT_FALSE(row.ego_held_within(0.0, 0.9));
+  EXPECT_EQ(row.timeline[1].second, kEgoId);
+  EXPECT_NEAR(row.timeline[1].first, 2.86, 1e-9);
+  EXPECT_EQ(row.timeline[2].second, kNobody);
+  EXPECT_NEAR(row.timeline[2].first, 6.3, 0.021);
+  EXPECT_FALSE(row.ego_holds_at(2.8));
+  EXPECT_TRUE(row.ego_holds_at(3.0));
+  EXPECT_FALSE(row.ego_holds_at(6.5));
+  EXPECT_FALSE(row.ego_held_within(6.4, 6.6));
+  EXPECT_TRUE(row.ego_held_within(6.0, 6.6));
+  EXPECT_TRUE(row.ego_held_within(0.0, 2.9));
+  EXPECT_FALSE(row.ego_held_within(0.0, 2.8));
 }
 
+TEST(RightOfWay, TheEgoThatNeverMovesTowardTheMainLaneNeverHoldsIt) {
+  // The same traffic, the ego staying in its lane: an open gap alone grants nothing.
+  Scenario s = base_scenario();
+  s.road.speed_limit_mps = 22.0;
+  s.vehicles = {vehicle(1, -10.05, 15.0)};
+  const RightOfWay row = right_of_way(s, constant_accel_trace(s, 7.0));
+  EXPECT_TRUE(row.ego_holds.empty());
+  ASSERT_EQ(row.timeline.size(), 1u);
+  EXPECT_EQ(row.timeline[0], std::make_pair(0.0, kMainLane));
+}
+
+// Vehicle 1 45 m behind the ego, both 20 m/s, speed limit 22 m/s: Definition 1 fails (ahead of it
+// ineq. (1.1) needs 64.925 m, behind it (1.2) at v_e* = 0 fails by -45 + 40 - 4.8 = -9.8 m). The ego requests a Def. 2 merge at t = 0 and moves over from t = 0.5 s.
 TEST(RightOfWay, Def2MergeWithoutAcceptanceGivesNoRightOfWay) {
   Scenario s = base_scenario();
-  s.vehicles = {vehicle(1, -30.0, 20.0)};
-  Trace t = constant_accel_trace(s, 2.0);
-  Decision d;
-  d.time_s = 0.5;
-  d.mode = DecisionMode::kDef2Merge;
-  d.coop_partner_id = 1;
-  t.decisions = {d};
-  EXPECT_FALSE(compute_right_of_way(s, t).ego_holds_at(1.0));
+  s.road.speed_limit_mps = 22.0;
+  s.vehicles = {vehicle(1, -45.0, 20.0)};
+  Trace t = test::with_lateral_move(constant_accel_trace(s, 2.0), 0.5, 1.75);
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 30, 18));
+  EXPECT_FALSE(right_of_way(s, t).ego_holds_at(1.0));
+  // The same merge with vehicle 1's acceptance delivered at 0.3 s (within rho_c = 1 s): Def. 2.
+  const TraceEvent accept = test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 30, 18);
+  t.events.push_back(accept);
+  t.events.push_back(test::delivered_event(accept, 0.3));
+  const RightOfWay row = right_of_way(s, t);
+  EXPECT_TRUE(row.ego_holds_at(1.0));
+  EXPECT_FALSE(row.ego_holds_at(0.2));
 }
 
 // Two main-lane vehicles 3 m apart (centres; 4.8 m long): they overlap from t = 0 and nobody

@@ -42,12 +42,14 @@ RC_GTEST_PROP(PairStepper, StreamedGeometryEqualsFreshGeometryBitForBit, ()) {
     t.steps[k].ego.vy_mps = k % 40 < 20 ? vy : 0.0;
     t.steps[k].ego.y_m += 0.02 * static_cast<double>(k) * vy;
   }
-  PairStepper stepper(s);
+  const ObservedTrace o = observed(s, t);
+  PairStepper stepper(o);
   const std::size_t n = stepper.vehicles();
-  for (const TraceStep& st : t.steps) {
+  RC_ASSERT(n == static_cast<std::size_t>(vehicles) + 1);
+  for (const ObservedStep& st : o.steps) {
     stepper.load(st);
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j) expect_same_bits(stepper.at(PairStepper::index(n, i, j), i, j), pair_geometry(s, st, i, j));
+      for (std::size_t j = i + 1; j < n; ++j) expect_same_bits(stepper.at(PairStepper::index(n, i, j), i, j), pair_geometry(o, st, i, j));
   }
 }
 

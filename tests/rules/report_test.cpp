@@ -81,7 +81,7 @@ std::pair<Scenario, CheckResult> violated_check() {
   s.name = "report_fixture";
   s.vehicles = {test::vehicle(1, -20.0, 30.0), test::vehicle(2, 10.0, 20.0)};
   Trace t = test::constant_accel_trace(s, 4.0);
-  t.events.push_back({0.5, EventKind::kMergeStart, 0, "ego leaves the side lane centre", std::nullopt});
+  t.events.push_back(test::message_event(0.5, MessageType::kRequest, 0, 2, CoopCase::kEgoBehind, 60, 30, 22));
   return {s, check_trace(s, std::move(t))};
 }
 
@@ -89,7 +89,7 @@ TEST(Report, JsonFollowsTheStructureDocumentedInDocsRulesMd) {
   const auto fields = documented_fields();
   ASSERT_GE(fields.size(), 30u) << "docs/rules.md report.json table not found";
   const auto [s, r] = violated_check();
-  const nlohmann::json j = report_json(s, r);
+  const nlohmann::json j = report_json(r);
   for (const FieldSpec& f : fields) expect_field(j, f);
   // Every top-level key of the report is documented.
   for (const auto& [key, value] : j.items()) {
@@ -103,7 +103,7 @@ TEST(Report, JsonFollowsTheStructureDocumentedInDocsRulesMd) {
 
 TEST(Report, HtmlIsSelfContainedAndStartsWithTheVerdict) {
   const auto [s, r] = violated_check();
-  const std::string html = report_html(s, r);
+  const std::string html = report_html(r);
   for (const char* external : {"http://", "https://", "src=", "href=", "@import", "<link", "<script"}) {
     EXPECT_EQ(html.find(external), std::string::npos) << external;
   }
@@ -117,7 +117,7 @@ TEST(Report, HtmlIsSelfContainedAndStartsWithTheVerdict) {
 
 TEST(Report, MarkdownStartsWithVerdictAndListsEachViolation) {
   const auto [s, r] = violated_check();
-  const std::string md = report_markdown(s, r);
+  const std::string md = report_markdown(r);
   EXPECT_LT(md.find("**Verdict: VIOLATED**"), 200u);
   for (const RuleResult& rule : r.rules) {
     if (rule.holds) continue;
@@ -128,15 +128,16 @@ TEST(Report, MarkdownStartsWithVerdictAndListsEachViolation) {
 TEST(Report, WriterPutsTheThreeFilesIntoTheDirectory) {
   const auto [s, r] = violated_check();
   const fs::path dir = fs::temp_directory_path() / ("mg_report_test_" + std::to_string(::getpid()));
-  write_check_reports((dir / "nested").string(), s, r);
+  write_check_reports((dir / "nested").string(), r);
   for (const char* f : {"report.json", "report.md", "report.html"}) EXPECT_TRUE(fs::exists(dir / "nested" / f)) << f;
   std::ifstream in(dir / "nested" / "report.json");
-  EXPECT_EQ(nlohmann::json::parse(in), report_json(s, r));
+  EXPECT_EQ(nlohmann::json::parse(in), report_json(r));
   fs::remove_all(dir);
 }
 
 // Reports stay readable at any size (issue 20): the largest scene the format allows (64
-// vehicles) over a long trace, with thousands of events, still gives an HTML page under 3 MB.
+// vehicles) over a long trace, with thousands of V2V channel events, still gives an HTML page
+// under 3 MB.
 TEST(Report, HtmlStaysUnderThreeMegabytesForTheLargestScene) {
   Scenario s = test::base_scenario();
   s.road.main_lanes = 4;
@@ -146,9 +147,10 @@ TEST(Report, HtmlStaysUnderThreeMegabytesForTheLargestScene) {
     s.vehicles.push_back(v);
   }
   Trace t = test::constant_accel_trace(s, 120.0);  // 6001 steps: every series is thinned
-  for (int e = 0; e < 3000; ++e) t.events.push_back({e * 0.04, EventKind::kDecision, 0, "keep lane: no gap yet", std::nullopt});
+  for (int e = 0; e < 3000; ++e)
+    t.events.push_back(test::message_event(e * 0.04, MessageType::kRefuse, 1, 2, CoopCase::kEgoBehind, 0, 0, 0));
   const CheckResult r = check_trace(s, std::move(t));
-  const std::string html = report_html(s, r);
+  const std::string html = report_html(r);
   EXPECT_LT(html.size(), 3u * 1024u * 1024u);
   EXPECT_NE(html.find("more (report.json lists all)"), std::string::npos);
 }

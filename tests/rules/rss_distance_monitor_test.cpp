@@ -103,24 +103,53 @@ TEST(RssLongitudinalMonitor, AnEgoMovingTowardALongitudinallyUnsafeVehicleCutsIn
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.3, 1e-9);
 }
 
+// Vehicle 1 drives 42 m behind the ego (both 20 m/s): longitudinally unsafe throughout (D_lon
+// 45.175 m). With a speed limit of 22 m/s Definition 1 never holds: ahead of it ineq. (1.1) needs
+// 64.925 m, behind it (1.2) at v_e* = 0 fails by -42 + 40 - 4.8 = -6.8 m. The ego requests a Def. 2 merge at t = 0 and vehicle
+// 1's acceptance reaches it at 0.1 s: its first attempt (out at 0.5 m/s for 0.4 s, to Y = -3.3,
+// laterally safe; back at 0.5 m/s) holds the right of way from 0.1 s until it is seen aborted
+// back on the side-lane centre (Y < -3.45, t = 0.92 s). From `resume_s` it moves toward the main
+// lane at 1.2 m/s: D_lat = 0.1 + 1.9 + (1.2 + 1.3)/2 * 0.5 + 1.3^2/1.6 = 3.68 m > 3.5 m, dangerous
+// from t_b = resume_s, a new attempt without the right of way.
+Scenario abort_scenario() {
+  Scenario s = base_scenario();
+  s.road.speed_limit_mps = 22.0;
+  s.vehicles = {vehicle(1, -42.0, 20.0)};
+  return s;
+}
+
+Trace abort_then_resume(const Scenario& s, double resume_s) {
+  Trace t = constant_accel_trace(s, 2.5);
+  double y = s.ego.y_m;
+  for (auto& st : t.steps) {
+    const double tt = st.time_s + 1e-9;
+    st.ego.vy_mps = tt < 0.2 ? 0.0 : tt < 0.6 ? 0.5 : tt < 1.0 ? -0.5 : tt < resume_s ? 0.0 : 1.2;
+    st.ego.y_m = std::min(y, 0.0);
+    y = std::max(y + st.ego.vy_mps * 0.02, tt < resume_s ? -3.5 : -10.0);
+  }
+  const TraceEvent accept = test::message_event(0.05, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 30, 18);
+  t.events = {test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 30, 18), accept,
+              test::delivered_event(accept, 0.1)};
+  return t;
+}
+
 TEST(RssLongitudinalMonitor, AnEgoThatAbortedWithinTheResponseTimeHasNotCutIn) {
-  // As above (moving toward from t = 0.3 s), but the ego held a Def. 1 right of way until it
-  // aborted at t = 0.1 s: at t_b = 0.3 s it is within T = 0.5 s of holding it, so its lateral
-  // motion is no cut-in; vehicle 1, the rear vehicle, owes b_min from 0.8 s.
-  const Scenario s = off_centre_beside_rear_vehicle();
-  Trace t = stop_moving_away_trace(s, 0.1);
-  Decision merge;
-  merge.mode = DecisionMode::kDef1Merge;
-  merge.gap = Gap{1, -1};
-  Decision abort = merge;
-  abort.time_s = 0.1;
-  abort.mode = DecisionMode::kDef1Halt;
-  abort.gap.reset();
-  t.decisions = {merge, abort};
+  // Resuming at t_b = 1.2 s: the ego held the right of way until 0.92 s, within T = 0.5 s of t_b,
+  // so its lateral motion is no cut-in; vehicle 1, the rear vehicle, owes b_min from t_b + T.
+  const Scenario s = abort_scenario();
+  const Trace t = abort_then_resume(s, 1.2);
+  const auto judged = test::judge(s, t);
+  ASSERT_EQ(judged->phases.count(MergePhaseKind::kAbort), 1);
+  ASSERT_EQ(judged->attempts.attempts.front().basis, RowBasis::kDef2);
   const MonitorOutput out = test::run(monitor_rss_longitudinal, s, t);
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, 1);
-  EXPECT_NEAR(*out.result.first_violation_time_s, 0.8, 1e-9);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 1.7, 0.021);
+  // Resuming at 1.6 s, more than T after the abort: a cut-in, the ego liable at t_b.
+  const MonitorOutput late = test::run(monitor_rss_longitudinal, s, abort_then_resume(s, 1.6));
+  ASSERT_FALSE(late.result.holds);
+  EXPECT_EQ(late.result.liable_id, kEgoId);
+  EXPECT_NEAR(*late.result.first_violation_time_s, 1.6, 0.021);
 }
 
 // Vehicle 1 (30 m/s) passes the ego (20 m/s, Y = -2.0: laterally unsafe at rest) from 3 m behind:
@@ -158,9 +187,13 @@ TEST(RssLongitudinalMonitor, AVehicleThatBecomesTheRearMidEpisodeHasItsOwnRespon
 // as the right vehicle: v_R = 1, v_R,rho = 1 + 0.5*0.2 = 1.1, d_R = -(1 + 1.1)/2*0.5 - 1.1^2/1.6
 // = -1.28125; v_L = 0, v_L,rho = -0.1, d_L = 0.025 + 0.1^2/1.6 = 0.03125;
 // D_lat = 0.1 + 1.9 + 1.3125 = 3.3125 m. dy = 3.5 - t: dangerous from t_b = 0.2 s.
+// The ego is seen merging but has no right of way: vehicle 2, 41 m behind in the lane, leaves no
+// Definition 1 gap (behind vehicle 1 ineq. (1.1) toward vehicle 2 needs v_e* >= 27 m/s, at which
+// (1.2) toward vehicle 1 fails; ahead of vehicle 1 (1.1) fails at every v_e* up to the 33.34 m/s
+// limit; behind vehicle 2 (1.2) fails at v_e* = 0 by -41 + 40 - 4.8 m), and no acceptance.
 Scenario side_by_side() {
   Scenario s = base_scenario();
-  s.vehicles = {vehicle(1, 0.0, 20.0)};
+  s.vehicles = {vehicle(1, 0.0, 20.0), vehicle(2, -41.0, 20.0)};
   return s;
 }
 

@@ -1,5 +1,6 @@
 #include "rules/sigmoid_bounds_monitor.h"
 
+#include <algorithm>
 #include <utility>
 
 #include <gtest/gtest.h>
@@ -13,17 +14,27 @@ using test::base_scenario;
 using test::constant_accel_trace;
 using test::vehicle;
 
-// The ego drifts from the side lane centre (Y = -3.5) toward the main lane at 1.75 m/s, so its
-// centre reaches the lane line (Y = -1.75): the merge midpoint, at t = 1 s. All at 20 m/s, so
-// D_lon = 45.175 m both ways (see the RSS test).
-Trace with_midpoint_at(Trace t, double midpoint_s) {
-  for (TraceStep& st : t.steps) {
-    st.ego.y_m = -3.5 + 1.75 * st.time_s / midpoint_s;
-    st.ego.vy_mps = 1.75 / midpoint_s;
-  }
-  return t;
+// The ego is seen moving from the side lane centre (Y = -3.5) toward the main lane from t = from_s,
+// so that its centre reaches the lane line (Y = -1.75), the merge midpoint, at midpoint_s (t = 1 s
+// by default; the start is observed 0.1 m out, at 0.06 s). All at 20 m/s, so D_lon = 45.175 m both
+// ways (see the RSS test). The right of way the monitor reads is inferred from this motion and
+// the channel (rules/merge_attempts.h).
+Trace with_midpoint_at(Trace t, double midpoint_s, double from_s = 0.0) {
+  return test::with_lateral_move(std::move(t), from_s, 1.75 / (midpoint_s - from_s));
 }
 Trace with_midpoint(Trace t) { return with_midpoint_at(std::move(t), 1.0); }
+
+// The ego's request for a Def. 2 merge to `partner`, accepted and the acceptance delivered at
+// `accepted_s` (before the observed start of the merge: the ego holds the right of way by
+// Definition 2 from then).
+Trace with_def2_exchange(Trace t, int partner, CoopCase c, double target_mps, double accepted_s = 0.0) {
+  const TraceEvent accept = test::message_event(std::min(accepted_s, 0.1), MessageType::kAccept, partner, 0, c, 40, 44,
+                                                target_mps);
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, partner, c, 40, 44, target_mps));
+  t.events.push_back(accept);
+  t.events.push_back(test::delivered_event(accept, accepted_s));
+  return t;
+}
 
 TEST(SigmoidBoundsMonitor, MidpointBetweenFollowerAndLeaderWithSafeDistancesHolds) {
   // Follower 50 m behind: 50 - 45.175 = 4.825 m; leader 60 m ahead: 14.825 m. Margin 4.825 m.
@@ -54,39 +65,18 @@ TEST(SigmoidBoundsMonitor, FollowerThatOveracceleratedBeforeTheMidpointIsLiable)
 }
 
 TEST(SigmoidBoundsMonitor, AFollowerThatRacedPastTheEgoBeyondItsAmaxIsLiable) {
-  // The merge decided at t = 0 goes ahead of vehicle 1 (3 m behind, 20 m/s). It accelerates at
+  // The merge started at t = 0 goes ahead of vehicle 1 (3 m behind, 20 m/s). It accelerates at
   // 10 m/s2 > a_max 2 and at the midpoint (t = 1 s) is 2 m ahead of the ego: the leader there,
   // inside the ego's safe distance, because of its own breach.
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, -3.0, 20.0)};
-  Trace t = with_midpoint(constant_accel_trace(s, 2.0, {0.0, 10.0}));
-  Decision d;
-  d.mode = DecisionMode::kDef1Merge;
-  d.gap = Gap{1, -1};
-  d.pc_min_m = 0.0;
-  d.pc_m = 20.0;
-  d.pc_max_m = 40.0;
-  d.merge_duration_s = 2.0;
-  t.decisions.push_back(d);
+  const Trace t = with_midpoint(constant_accel_trace(s, 2.0, {0.0, 10.0}));
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, 1);
 }
 
-// A Def. 1 merge decided at t = 0 (P_c inside its bounds) for the gap behind vehicle 1.
-Trace with_def1_decision(Trace t) {
-  Decision d;
-  d.mode = DecisionMode::kDef1Merge;
-  d.gap = Gap{-1, 1};
-  d.pc_min_m = 0.0;
-  d.pc_m = 20.0;
-  d.pc_max_m = 40.0;
-  d.merge_duration_s = 2.0;
-  t.decisions.push_back(d);
-  return t;
-}
-
-// The merge decided at t = 0 goes behind vehicle 1, 2 m ahead at the ego's 20 m/s. It brakes
+// The merge started at t = 0 goes behind vehicle 1, 2 m ahead at the ego's 20 m/s. It brakes
 // at 10 m/s2 and at the midpoint (t = 1 s) is 3 m behind the ego: the follower there, inside the
 // ego's safe distance, because it fell back level with the ego.
 //
@@ -96,7 +86,7 @@ Trace leader_falling_back(Scenario& s, double brake_mps2) {
   MainVehicle v = vehicle(1, 2.0, 20.0);
   v.limits.brake_max_mps2 = 8.0;
   s.vehicles = {v};
-  return with_def1_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -brake_mps2})));
+  return with_midpoint(constant_accel_trace(s, 2.0, {0.0, -brake_mps2}));
 }
 
 TEST(SigmoidBoundsMonitor, ALeaderThatFellBackBesideTheEgoBeyondItsBmaxIsLiable) {
@@ -119,10 +109,15 @@ TEST(SigmoidBoundsMonitor, LeaderThatSlowedWithinItsLimitsLeavesThePairToTheRssR
   // Leader 50 m ahead, all at 20 m/s; it brakes at 3 m/s^2 (its b_max is 8). At the midpoint
   // (t = 1 s) it is 50 - 1.5 = 48.5 m ahead at 17 m/s, D_lon(20, 17) = 45.175 + (400 - 289)/16
   // = 52.11 m: 3.6 m inside. Def. 1.2 predicted it holding 20 m/s, 50 m ahead: 4.825 m clear.
-  // The ego gets the benefit of the doubt; rss_longitudinal judges its response.
+  // The ego gets the benefit of the doubt; rss_longitudinal judges its response. (The gap behind
+  // vehicle 1 is a Def. 1 gap from t = 0: ineq. (1.2) holds by 4.825 m at v_e* = 20 m/s.)
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, 50.0, 20.0)};
-  const Trace t = with_def1_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0})));
+  const Trace t = with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0}));
+  const auto judged = test::judge(s, t);
+  ASSERT_EQ(judged->attempts.attempts.size(), 1u);
+  ASSERT_EQ(judged->attempts.attempts[0].basis, RowBasis::kDef1);
+  EXPECT_EQ(judged->attempts.attempts[0].decision_time_s, 0.0);
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   EXPECT_TRUE(out.result.holds);
   EXPECT_NEAR(out.result.min_margin, 4.825, 1e-6);
@@ -133,24 +128,11 @@ TEST(SigmoidBoundsMonitor, LeaderAtItsPredictedSpeedButTooCloseBlamesTheEgo) {
   // both the real and the predicted positions.
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, 40.0, 20.0)};
-  const Trace t = with_def1_decision(with_midpoint(constant_accel_trace(s, 2.0)));
+  const Trace t = with_midpoint(constant_accel_trace(s, 2.0));
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
-}
-
-// A Def. 2 merge decided at t = 0 with partner `partner` (its acceptance in hand).
-Trace with_def2_decision(Trace t, int partner) {
-  Decision d;
-  d.mode = DecisionMode::kDef2Merge;
-  d.coop_partner_id = partner;
-  d.pc_min_m = 0.0;
-  d.pc_m = 20.0;
-  d.pc_max_m = 40.0;
-  d.merge_duration_s = 2.0;
-  t.decisions.push_back(d);
-  return t;
 }
 
 TEST(SigmoidBoundsMonitor, NonPartnerLeaderThatSlowedWithinItsLimitsInADef2MergeLeavesThePairToTheRssRules) {
@@ -160,7 +142,9 @@ TEST(SigmoidBoundsMonitor, NonPartnerLeaderThatSlowedWithinItsLimitsInADef2Merge
   // the real positions only: -3.6 m, the ego liable; campaign run 30286 of seed 1.)
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, 50.0, 20.0), vehicle(2, -60.0, 20.0)};
-  const Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0, 0.0})), 2);
+  // Request and acceptance exchanged at t = 0 (an instantaneous channel): Def. 2 from t = 0.
+  const Trace t = with_def2_exchange(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0, 0.0})), 2,
+                                     CoopCase::kEgoAhead, 20.0);
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   EXPECT_TRUE(out.result.holds);
   EXPECT_NEAR(out.result.min_margin, 4.825, 1e-6);
@@ -172,9 +156,7 @@ TEST(SigmoidBoundsMonitor, PartnerLeaderIsJudgedAtItsRealPositionInADef2Merge) {
   // Definition 1's prediction: judged at its real position, 3.6 m inside, and liable.
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, 50.0, 20.0)};
-  Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0})), 1);
-  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoBehind, 20, 45, 20));
-  t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoBehind, 20, 45, 20));
+  const Trace t = with_def2_exchange(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0})), 1, CoopCase::kEgoBehind, 20.0);
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, 1);
@@ -185,7 +167,7 @@ TEST(SigmoidBoundsMonitor, NonPartnerLeaderAtItsPredictedSpeedButTooCloseInADef2
   // The non-partner leader holding its speed 40 m ahead: -5.175 m at both positions.
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, 40.0, 20.0), vehicle(2, -60.0, 20.0)};
-  const Trace t = with_def2_decision(with_midpoint(constant_accel_trace(s, 2.0)), 2);
+  const Trace t = with_def2_exchange(with_midpoint(constant_accel_trace(s, 2.0)), 2, CoopCase::kEgoAhead, 20.0);
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
@@ -228,15 +210,12 @@ TEST(SigmoidBoundsMonitor, ResponderThatYieldedInTimeLeavesTheEgoLiable) {
   EXPECT_LT(out.result.min_margin, -4.0);
 }
 
-// A Def. 2.1 merge decided at 0.2 s with partner vehicle 1 (x0 behind the ego, both 20 m/s), which
-// accepted v_o* = 19.8 m/s and kept 20 m/s: within the 0.5 m/s yield tolerance. Midpoint at 2 s,
-// the ego at 40 m.
+// A Def. 2.1 merge with partner vehicle 1 (x0 behind the ego, both 20 m/s): its acceptance of the
+// request of t = 0 (v_o* = 19.8 m/s, sent at 0.1 s) reaches the ego at 0.2 s, which is then seen
+// moving over (midpoint at 2 s, the ego at 40 m). Vehicle 1 keeps 20 m/s: within the 0.5 m/s yield
+// tolerance.
 Trace partner_within_tolerance(const Scenario& s) {
-  Trace t = with_def2_decision(constant_accel_trace(s, 3.0), 1);
-  t.decisions.back().time_s = 0.2;
-  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 44, 19.8));
-  t.events.push_back(test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 44, 19.8));
-  return with_midpoint_at(std::move(t), 2.0);
+  return with_midpoint_at(with_def2_exchange(constant_accel_trace(s, 3.0), 1, CoopCase::kEgoAhead, 19.8, 0.2), 2.0, 0.2);
 }
 
 TEST(SigmoidBoundsMonitor, PartnerWithinItsYieldToleranceIsJudgedOnItsAcceptedProfileToo) {
@@ -261,12 +240,11 @@ TEST(SigmoidBoundsMonitor, PartnerTooCloseEvenOnItsAcceptedProfileBlamesTheEgo) 
   EXPECT_NEAR(out.result.min_margin, -13.75, 0.01);
 }
 
-// The partner (vehicle 1, 50 m behind, on its accepted 20 m/s) of a Def. 2.1 merge decided at
-// 0.2 s with v_e* = 20 m/s; the ego slows to 15 m/s from 1.5 s. At the midpoint (2 s, ego at 40 m)
+// The partner (vehicle 1, 50 m behind, on its accepted 20 m/s) of a Def. 2.1 merge granted at
+// 0.2 s, the ego then at 20 m/s; the ego slows to 15 m/s from 1.5 s. At the midpoint (2 s, ego at 40 m)
 // D_lon(20 behind 15) = 56.11 m against 50 m: -6.11 m, 4.825 m at the planned 20 m/s.
 Trace slowed_ego_before_partner(const Scenario& s) {
   Trace t = partner_within_tolerance(s);
-  t.decisions.back().ve_star_mps = 20.0;
   for (auto& e : t.events)
     if (e.message) e.message->target_speed_mps = 20.0;
   for (auto& st : t.steps)
@@ -302,21 +280,6 @@ TEST(SigmoidBoundsMonitor, EgoSlowerThanPlannedWithoutAnRssDangerIsLiableBeforeT
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
   EXPECT_NEAR(out.result.min_margin, -6.11, 0.02);
-}
-
-TEST(SigmoidBoundsMonitor, DecisionPcOutsideItsBoundsIsAViolation) {
-  Scenario s = base_scenario();
-  Trace t = constant_accel_trace(s, 1.0);
-  Decision d;
-  d.mode = DecisionMode::kDef1Merge;
-  d.gap = Gap{-1, -1};
-  d.pc_min_m = 30.0;
-  d.pc_max_m = 60.0;
-  d.pc_m = 65.0;  // 5 m beyond pc_max
-  t.decisions.push_back(d);
-  const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
-  ASSERT_FALSE(out.result.holds);
-  EXPECT_NEAR(out.result.min_margin, -5.0, 1e-9);
 }
 
 }  // namespace

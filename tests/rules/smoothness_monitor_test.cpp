@@ -40,54 +40,41 @@ TEST(SmoothnessMonitor, WeavingPathViolates) {
   EXPECT_NEAR(out.result.min_margin, -3.0, 1e-12);
 }
 
-// A merge, an abort and a second merge, with lateral speed out (+), back (-) and out again (+)
-// after a start pulled toward the side lane's centre (-): vy = -0.3, +0.5, -0.5, +0.5 over four
-// 1.5 s phases, three sign changes. `between` are the decisions of the abort.
-Trace merge_abort_merge(const Scenario& s, std::vector<DecisionMode> between) {
-  Trace t = with_lateral_speed(constant_accel_trace(s, 6.0), [](double t) {
-    return t < 1.5 ? -0.3 : t < 3.0 ? 0.5 : t < 4.5 ? -0.5 : 0.5;
-  });
-  Decision first;
-  first.mode = DecisionMode::kDef1Merge;
-  first.pc_m = 100.0;
-  first.kappa_per_m = 0.1;
-  t.decisions = {first, first};
-  for (const DecisionMode m : between) {
-    Decision d = first;  // an RSS override keeps the overridden decision's record, mode aside
-    d.mode = m;
-    t.decisions.push_back(d);
+// The ego's lateral speed vy(t), its Y integrated from the side-lane centre: what an observer
+// sees of a lateral path.
+Trace with_lateral_path(Trace t, double (*vy)(double)) {
+  double y = t.steps.front().ego.y_m;
+  for (auto& st : t.steps) {
+    st.ego.y_m = y;
+    st.ego.vy_mps = vy(st.time_s);
+    y += st.ego.vy_mps * 0.02;
   }
-  Decision second = first;
-  second.pc_m = 145.0;
-  second.kappa_per_m = 0.11;
-  t.decisions.push_back(second);
   return t;
 }
 
-TEST(SmoothnessMonitor, AMergeAbortedUnderTheRssOverrideIsAnAttemptOfItsOwn) {
-  // Every decision between the two merges is the RSS proper response (the abort's side-lane
-  // decisions overridden): the second merge's new sigmoid shows the abort. 2 attempts allow 4
-  // changes; margin 4 - 3 = 1.
+// A merge, an abort and a second merge: out at 0.5 m/s for 1.5 s (Y -3.5 -> -2.75, short of the
+// line), back at 0.5 m/s to the side-lane centre (the abort), out again and back again: vy = +0.5,
+// -0.5, +0.5, -0.5 over four 1.5 s phases, three sign changes from the first start. Two observed
+// attempts allow 4 changes: margin 4 - 3 = 1.
+TEST(SmoothnessMonitor, AMergeAbortedBackToTheSideLaneIsAnAttemptOfItsOwn) {
   const Scenario s = base_scenario();
-  const MonitorOutput out = test::run(monitor_smoothness_oscillation, s,
-                                      merge_abort_merge(s, {DecisionMode::kProperResponse, DecisionMode::kProperResponse}));
-  EXPECT_TRUE(out.result.holds);
-  EXPECT_NEAR(out.result.min_margin, 1.0, 1e-12);
-}
-
-TEST(SmoothnessMonitor, AMergeAbortedInTheOpenIsAnAttemptOfItsOwn) {
-  const Scenario s = base_scenario();
-  const MonitorOutput out =
-      test::run(monitor_smoothness_oscillation, s, merge_abort_merge(s, {DecisionMode::kDef1Halt}));
+  const Trace t = with_lateral_path(constant_accel_trace(s, 6.0), [](double t) {
+    return t < 1.5 ? 0.5 : t < 3.0 ? -0.5 : t < 4.5 ? 0.5 : -0.5;
+  });
+  ASSERT_EQ(test::judge(s, t)->phases.count(MergePhaseKind::kStart), 2);
+  const MonitorOutput out = test::run(monitor_smoothness_oscillation, s, t);
   EXPECT_TRUE(out.result.holds);
   EXPECT_NEAR(out.result.min_margin, 1.0, 1e-12);
 }
 
 TEST(SmoothnessMonitor, ThreeSignChangesInOneMergeViolate) {
-  // The same lateral motion with one merge decision throughout: 1 attempt allows 2; margin -1.
+  // The same three reversals without returning to the side-lane centre (vy = +0.5, -0.3, +0.5,
+  // -0.3: Y -2.75, -3.2, -2.45, -2.9): one observed attempt allows 2; margin -1.
   const Scenario s = base_scenario();
-  Trace t = merge_abort_merge(s, {});
-  t.decisions.back() = t.decisions.front();
+  const Trace t = with_lateral_path(constant_accel_trace(s, 6.0), [](double t) {
+    return t < 1.5 ? 0.5 : t < 3.0 ? -0.3 : t < 4.5 ? 0.5 : -0.3;
+  });
+  ASSERT_EQ(test::judge(s, t)->phases.count(MergePhaseKind::kStart), 1);
   const MonitorOutput out = test::run(monitor_smoothness_oscillation, s, t);
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);

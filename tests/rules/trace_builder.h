@@ -1,15 +1,27 @@
 // Hand-built scenarios and traces for the monitor tests: every vehicle moves with a constant
 // acceleration unless a test edits the steps. Defaults: T = 0.5 s, a_acc = 2, b_min = 4,
 // b_max = 8 m/s2, length 4.8 m, width 1.9 m, mu = 0.1 m, a_lat = 0.2, b_lat = 0.8 m/s2.
+//
+// A test builds a simulator Trace (sim/trace.h) of a Scenario, as a run would produce; the rules
+// judge only its observable trace (sim/observed_run.h), exactly as rules/check.cpp does: the
+// merge phases and attempts are read from the ego's observed motion, the right of way from them
+// and from the V2V channel. Planner decisions in a Trace are annotations, never read by a rule.
 #pragma once
 
+#include <algorithm>
 #include <functional>
+#include <memory>
+#include <optional>
+#include <utility>
 
 #include "core/scenario.h"
 #include "rules/check.h"
 #include "rules/liability.h"
+#include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
 #include "rules/monitor.h"
+#include "sim/checked_run.h"
+#include "sim/observed_run.h"
 #include "sim/trace.h"
 
 namespace mg::test {
@@ -69,13 +81,77 @@ inline Trace constant_accel_trace(const Scenario& s, double duration_s, std::vec
   return t;
 }
 
-// Runs one monitor over a trace with the right of way derived from it.
-inline MonitorOutput run(MonitorFn fn, const Scenario& s, const Trace& t) {
-  const MergePhases phases = observe_merge_phases(s, t);
-  const RightOfWay row = compute_right_of_way(s, t, phases);
-  return fn(MonitorContext{s, t, row, catalog_params(), phases});
+// The ego's observed lateral motion: in the side lane (Y = -W) until from_s, then toward the main
+// lane at vy_mps (the road-frame lateral speed an observer measures) until it is on the main-lane
+// centre (Y = 0), where it stays. With W = 3.5 m an observer sees
+//
+//   start    (Y > -3.4, vy > 0.1) at from_s + 0.1 / vy (the first step after),
+//   midpoint (Y >= -1.75)         at from_s + 1.75 / vy,
+//   complete (|Y| < 0.2)          at from_s + 3.3 / vy (the first step after).
+inline Trace with_lateral_move(Trace t, double from_s, double vy_mps, double lane_width_m = 3.5) {
+  for (TraceStep& st : t.steps) {
+    const double y = std::min(0.0, -lane_width_m + vy_mps * std::max(0.0, st.time_s - from_s));
+    st.ego.y_m = y;
+    st.ego.vy_mps = st.time_s >= from_s && y < 0.0 ? vy_mps : 0.0;
+  }
+  return t;
 }
 
+// An aborted attempt: toward the main lane at vy_mps from from_s for out_s seconds, then back at
+// the same speed to the side-lane centre (before the lane line when vy_mps * out_s < W/2).
+inline Trace with_aborted_move(Trace t, double from_s, double vy_mps, double out_s, double lane_width_m = 3.5) {
+  for (TraceStep& st : t.steps) {
+    const double dt = st.time_s - from_s;
+    double y = -lane_width_m, vy = 0.0;
+    if (dt >= 0.0 && dt < out_s) {
+      y += vy_mps * dt;
+      vy = vy_mps;
+    } else if (dt >= out_s && dt < 2.0 * out_s) {
+      y += vy_mps * (2.0 * out_s - dt);
+      vy = -vy_mps;
+    }
+    st.ego.y_m = y;
+    st.ego.vy_mps = vy;
+  }
+  return t;
+}
+
+// The observable trace of a hand-built run, its channel in time order (tests append messages in
+// any order; the simulator records them in order).
+inline ObservedTrace observed(const Scenario& s, const Trace& t) {
+  ObservedTrace o = observed_trace_of(s, t);
+  std::stable_sort(o.channel.begin(), o.channel.end(),
+                   [](const ChannelEvent& a, const ChannelEvent& b) { return a.time_s < b.time_s; });
+  return o;
+}
+
+// What rules/check.cpp infers from an observable trace before it runs the monitors.
+struct Judged {
+  ObservedTrace trace;
+  RuleParams params;
+  MergePhases phases;
+  MergeAttempts attempts;
+  RightOfWay row;
+  MonitorContext context() const { return MonitorContext{trace, row, params, phases, attempts}; }
+};
+
+inline std::unique_ptr<Judged> judge(const Scenario& s, const Trace& t) {
+  auto j = std::make_unique<Judged>();
+  j->trace = observed(s, t);
+  j->params = j->trace.params.rules;
+  j->phases = observe_merge_phases(j->trace, j->params);
+  j->attempts = observe_merge_attempts(j->trace, j->params, j->phases);
+  j->row = compute_right_of_way(j->trace, j->attempts);
+  return j;
+}
+
+// Runs one monitor over a trace with the phases, attempts and right of way observed in it.
+inline MonitorOutput run(MonitorFn fn, const Scenario& s, const Trace& t) {
+  const auto j = judge(s, t);
+  return fn(j->context());
+}
+
+// A message as its sender put it on the channel (EventKind::kMessageSent) ...
 inline TraceEvent message_event(double time_s, MessageType type, int from, int to, CoopCase c, double pc_m,
                                 double d_star_m, double target_mps) {
   V2vMessage m;
@@ -88,6 +164,13 @@ inline TraceEvent message_event(double time_s, MessageType type, int from, int t
   m.d_lon_star_m = d_star_m;
   m.target_speed_mps = target_mps;
   return TraceEvent{time_s, EventKind::kMessageSent, from, "", m};
+}
+
+// ... and as the channel delivered it at delivered_s.
+inline TraceEvent delivered_event(TraceEvent sent, double delivered_s) {
+  sent.time_s = delivered_s;
+  sent.kind = EventKind::kMessageDelivered;
+  return sent;
 }
 
 }  // namespace mg::test

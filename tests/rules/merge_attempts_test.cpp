@@ -1,0 +1,194 @@
+// Each observed merge attempt and the right of way it had (rules/merge_attempts.h): Definition 1
+// from the gap inequalities in the decision window before the observed start, Definition 2 from an
+// acceptance delivered within rho_c, none otherwise; read from the ego's motion and the channel.
+#include "rules/merge_attempts.h"
+
+#include <optional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "trace_builder.h"
+
+namespace mg {
+namespace {
+
+using test::base_scenario;
+using test::constant_accel_trace;
+using test::vehicle;
+
+// The ego at X = 0, 20 m/s in the side lane; vehicles 1 (follower_x) and 2 (leader_x, when given)
+// in the main lane at 20 m/s.
+Scenario gap_scenario(double follower_x, std::optional<double> leader_x = std::nullopt, double limit_mps = 33.34) {
+  Scenario s = base_scenario();
+  s.road.speed_limit_mps = limit_mps;
+  s.vehicles = {vehicle(1, follower_x, 20.0)};
+  if (leader_x) s.vehicles.push_back(vehicle(2, *leader_x, 20.0));
+  return s;
+}
+
+const MergeAttempt& only_attempt(const test::Judged& j) {
+  EXPECT_EQ(j.attempts.attempts.size(), 1u);
+  return j.attempts.attempts.front();
+}
+
+// The ego moves over from t = 1 s at 1.75 m/s: start observed at 1.06 s, midpoint at 2 s, complete
+// at about 2.9 s.
+Trace merging_from(const Scenario& s, double from_s, double duration_s = 4.0) {
+  return test::with_lateral_move(constant_accel_trace(s, duration_s), from_s, 1.75);
+}
+
+//   main lane   [1]----80 m----+                     +----200 m----[2]
+//   side lane                  [ego] -> starts at 1.06 s, midpoint 2 s
+// Ineq. (1.1) holds by 5.825 m and (1.2) by 154.825 m at v_e* = 20 m/s (definition1_gap_test.cpp).
+TEST(MergeAttempts, AStartWhereBothGapInequalitiesHoldHasTheRightOfWayByDefinition1) {
+  const Scenario s = gap_scenario(-80.0, 200.0);
+  const auto j = test::judge(s, merging_from(s, 1.0));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_NEAR(a.start_time_s, 1.06, 1e-9);
+  ASSERT_TRUE(a.midpoint_time_s.has_value());
+  EXPECT_NEAR(*a.midpoint_time_s, 2.0, 1e-9);
+  EXPECT_TRUE(a.completed);
+  EXPECT_EQ(a.entered_gap, (GapIndices{1, 2}));
+  EXPECT_EQ(a.gap, a.entered_gap);
+  EXPECT_EQ(a.basis, RowBasis::kDef1);
+  // The gap was feasible since the first step of the window [start - 4 s, start], clipped to 0.
+  EXPECT_EQ(a.decision_time_s, 0.0);
+  EXPECT_EQ(a.def1.rho_s, 4.0);
+  EXPECT_NEAR(a.def1.ve_star_mps, 20.0, 1e-9);
+  EXPECT_NEAR(a.def1.margin_11_m, 5.825, 1e-9);
+  EXPECT_NE(a.observation.find("ego holds (Def. 1)"), std::string::npos) << a.observation;
+  EXPECT_TRUE(j->row.ego_holds_at(1.5));
+}
+
+TEST(MergeAttempts, TheRightOfWayIsCreditedNoEarlierThanTheDecisionWindow) {
+  // The same gap, the merge from t = 6 s (start 6.06 s): the window is [2.06, 6.06] s, and the gap
+  // feasible all along is credited from its first step.
+  const Scenario s = gap_scenario(-80.0, 200.0);
+  const auto j = test::judge(s, merging_from(s, 6.0, 8.0));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kDef1);
+  EXPECT_NEAR(a.decision_time_s, 6.06 - s.params.rules.merge_decision_window_s, 1e-9);
+  EXPECT_FALSE(j->row.ego_holds_at(2.0));
+  EXPECT_TRUE(j->row.ego_holds_at(2.1));
+}
+
+// Vehicle 1 45 m behind the ego at its speed, speed limit 22 m/s: ahead of vehicle 1, ineq. (1.1)
+// needs 64.925 m at the best v_e* = 22 m/s; behind it, (1.2) at v_e* = 0 over rho/2 = 2 s fails by
+// -45 + 20*2 - 4.8 = -9.8 m. No gap of the lane is feasible anywhere in the window.
+//
+//   main lane   [1]----45 m----+
+//   side lane                  [ego] -> starts at 1.06 s
+TEST(MergeAttempts, AStartWithTheFollowerTooCloseHasNoRightOfWay) {
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, merging_from(s, 1.0));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.entered_gap, (GapIndices{1, -1}));
+  EXPECT_EQ(a.basis, RowBasis::kNone);
+  EXPECT_TRUE(a.def1_read);
+  EXPECT_LT(a.def1.min_margin_m(), 0.0);
+  EXPECT_FALSE(a.exchange.has_value());
+  EXPECT_NE(a.observation.find("no right of way"), std::string::npos) << a.observation;
+  EXPECT_TRUE(j->row.ego_holds.empty());
+}
+
+// The same too-close follower; the ego asks it to yield (a Def. 2.1 request at request_s, 0.5 s
+// unless given), its acceptance sent 0.1 s later and delivered at accept_delivered_s.
+Trace with_exchange(Trace t, int responder, double accept_delivered_s, double request_s = 0.5) {
+  const TraceEvent accept = test::message_event(request_s + 0.1, MessageType::kAccept, responder, 0,
+                                                CoopCase::kEgoAhead, 40, 30, 18);
+  t.events = {test::message_event(request_s, MessageType::kRequest, 0, responder, CoopCase::kEgoAhead, 40, 30, 18),
+              accept, test::delivered_event(accept, accept_delivered_s)};
+  return t;
+}
+
+TEST(MergeAttempts, AnAcceptanceDeliveredWithinRhoCBeforeTheStartGrantsDefinition2) {
+  // Delivered at 0.9 s: 0.4 s after the request (rho_c = 1 s), before the start at 1.06 s.
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, with_exchange(merging_from(s, 1.0), 1, 0.9));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kDef2);
+  EXPECT_NEAR(a.decision_time_s, 0.9, 1e-12);
+  ASSERT_TRUE(a.exchange.has_value());
+  EXPECT_EQ(a.exchange->request_time_s, 0.5);
+  EXPECT_NE(a.observation.find("ego holds (Def. 2)"), std::string::npos) << a.observation;
+  EXPECT_FALSE(j->row.ego_holds_at(0.8));
+  EXPECT_TRUE(j->row.ego_holds_at(0.95));
+}
+
+TEST(MergeAttempts, AnAcceptanceDeliveredAfterRhoCGrantsNothingAndIsKeptForDef23) {
+  // Requested at 0.1 s, delivered at 1.2 s (1.1 s later); the merge from 1.2 s (start 1.26 s,
+  // midpoint 2.2 s). (The window starts at 0: rho = max(4, 2 (2.2 - T)) stays below the 4.98 s at
+  // which merging behind vehicle 1 at v_e* = 0 would satisfy ineq. (1.2).)
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, with_exchange(merging_from(s, 1.2), 1, 1.2, 0.1));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kNone) << a.observation;
+  ASSERT_TRUE(a.exchange.has_value());
+  EXPECT_EQ(a.exchange->accept_delivered_time_s, 1.2);
+  EXPECT_TRUE(j->row.ego_holds.empty());
+}
+
+TEST(MergeAttempts, AnAcceptanceDeliveredOnlyAfterTheStartGrantsNothing) {
+  // In time for rho_c (1.3 s) but after the ego had already started (1.06 s).
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, with_exchange(merging_from(s, 1.0), 1, 1.3));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kNone);
+  EXPECT_FALSE(a.exchange.has_value());
+}
+
+TEST(MergeAttempts, AnAcceptanceFromAVehicleOutsideTheGapGrantsNothing) {
+  // Vehicle 2 drives in the second main lane: its acceptance in time says nothing of the gap.
+  Scenario s = gap_scenario(-45.0, 10.0, 22.0);
+  s.road.main_lanes = 2;
+  s.vehicles[1].lane = 1;
+  const auto j = test::judge(s, with_exchange(merging_from(s, 1.0), 2, 0.9));
+  EXPECT_EQ(only_attempt(*j).basis, RowBasis::kNone);
+}
+
+TEST(MergeAttempts, AnAbortedAttemptsAcceptanceDoesNotCarryOverToTheNextAttempt) {
+  // Out at 1 m/s for 0.5 s from 1 s and back (aborted at about 1.96 s), then over from 2.5 s: the
+  // acceptance of 0.9 s grants the first attempt; the second one's window starts at the abort.
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  Trace t = with_exchange(test::with_aborted_move(constant_accel_trace(s, 5.0), 1.0, 1.0, 0.5), 1, 0.9);
+  const Trace second = merging_from(s, 2.5, 5.0);
+  for (std::size_t i = 0; i < t.steps.size(); ++i)
+    if (t.steps[i].time_s >= 2.5) t.steps[i].ego = second.steps[i].ego;
+  const auto j = test::judge(s, t);
+  ASSERT_EQ(j->attempts.attempts.size(), 2u);
+  const MergeAttempt& first = j->attempts.attempts[0];
+  const MergeAttempt& again = j->attempts.attempts[1];
+  EXPECT_EQ(first.basis, RowBasis::kDef2);
+  ASSERT_TRUE(first.end_time_s.has_value());
+  EXPECT_FALSE(first.completed);
+  EXPECT_EQ(again.basis, RowBasis::kNone);
+  EXPECT_TRUE(j->row.ego_holds_at(1.5));
+  EXPECT_FALSE(j->row.ego_holds_at(*first.end_time_s + 0.01));
+  EXPECT_FALSE(j->row.ego_holds_at(3.0));
+}
+
+// Vehicle 1 25 m behind the ego at its speed: D_lon(20, 20) = 45.175 m, so the ego that moves over
+// ahead of it (and completes the merge there at 20 m/s) cuts in. The gap it entered, ahead of
+// vehicle 1, fails ineq. (1.1) at every v_e* up to the 22 m/s limit (by -39.925 m at 22 m/s).
+// Merging behind vehicle 1 would have been a Definition 1 merge (ineq. (1.2) at v_e* = 0: -25 +
+// 20*2 - 4.8 = 10.2 m), but the ego did not do that.
+//
+//   main lane   [1]--25 m--+
+//   side lane              [ego] -> over at 1.75 m/s, ahead of vehicle 1
+TEST(MergeAttempts, AnEgoCuttingInAheadOfAFollowerTooCloseHasNoRightOfWay) {
+  const Scenario s = gap_scenario(-25.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, merging_from(s, 1.0));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.entered_gap, (GapIndices{1, -1}));
+  EXPECT_EQ(a.basis, RowBasis::kNone) << a.observation;
+  EXPECT_FALSE(j->row.ego_holds_at(1.5));
+}
+
+TEST(MergeAttempts, NoLateralMotionNoAttempt) {
+  const Scenario s = gap_scenario(-80.0, 200.0);
+  EXPECT_TRUE(test::judge(s, constant_accel_trace(s, 4.0))->attempts.attempts.empty());
+}
+
+}  // namespace
+}  // namespace mg

@@ -9,10 +9,6 @@ namespace {
 
 const char* const kNoV2vRequests =
     "the planner never sends a V2V request, and Definition 2's rules judge the ego's requests and what follows them";
-const char* const kNoDeclaredDef1Merges =
-    "these rules judge the Definition 1 merges a planner declares (T_dec, gap, v_e*), and the baseline declares none "
-    "(docs/rules.md)";
-
 std::map<std::string, std::string> definition2_rules() {
   std::map<std::string, std::string> out;
   for (const char* id : {"def2_1a_request", "def2_1b_responder", "def2_2a_ego_brake", "def2_2b_responder", "def2_3_fallback"})
@@ -23,12 +19,9 @@ std::map<std::string, std::string> definition2_rules() {
 }  // namespace
 
 std::map<std::string, std::string> rules_not_applicable(const std::string& planner) {
-  if (planner == "rcpp") return definition2_rules();
-  if (planner == "tripfield") {
-    std::map<std::string, std::string> out = definition2_rules();
-    for (const char* id : {"def1_1_gap", "def1_1_follower", "def1_2_gap", "def1_2_leader"}) out[id] = kNoDeclaredDef1Merges;
-    return out;
-  }
+  // Definition 1 judges every observed merge, whoever drives it; only the built-ins that never
+  // use V2V leave Definition 2's rules without anything to judge.
+  if (planner == "rcpp" || planner == "tripfield") return definition2_rules();
   return {};
 }
 

@@ -59,7 +59,7 @@ double def1_1_margin_m(const ObservedTrace& t, std::size_t step, int follower, d
   if (follower < 1) return kInf;
   const ObservedState& ego = t.steps[step].vehicles[0];
   const ObservedState& fo = t.steps[step].vehicles[static_cast<std::size_t>(follower)];
-  return std::max(ineq1_m(t, ego.x_m, fo, follower, ve, rho),
+  return std::min(ineq1_m(t, ego.x_m, fo, follower, ve, rho),
                   ineq1_m(t, real_position_x_m(t, ego, ve, 0.5 * rho), fo, follower, ve, rho));
 }
 
@@ -68,7 +68,7 @@ double def1_2_margin_m(const ObservedTrace& t, std::size_t step, int leader, dou
   const ObservedState& ego = t.steps[step].vehicles[0];
   const ObservedState& lo = t.steps[step].vehicles[static_cast<std::size_t>(leader)];
   const auto at = [&](double f) {
-    return std::max(ineq2_m(t, ego.x_m, lo, leader, ve, f * rho),
+    return std::min(ineq2_m(t, ego.x_m, lo, leader, ve, f * rho),
                     ineq2_m(t, real_position_x_m(t, ego, ve, f * rho), lo, leader, ve, f * rho));
   };
   return std::min(at(1.0), at(0.5));

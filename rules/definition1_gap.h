@@ -2,9 +2,10 @@
 // docs/spec.md "Right of way"): ineq. (1.1) toward the follower and (1.2) toward the leader for a
 // merge speed v_e* and a merge duration rho, and the interval of v_e* for which both hold.
 //
-// The ego gets the benefit of the doubt between the paper's model (the ego already at v_e*) and
-// the bounded-rate model of spec §4 (the ego changing speed toward v_e* at a_accel^max / b_min):
-// an inequality fails only when it fails under both.
+// An inequality holds only when it holds under both the paper's model (the ego already at v_e*)
+// and the bounded-rate model of spec §4 (the ego changing speed toward v_e* at a_accel^max /
+// b_min), as the planner of spec §4 requires: the paper's model alone would let an ego at speed
+// "be" at v_e* = 0 at once and so claim the gap behind any vehicle alongside it.
 #pragma once
 
 #include <cstddef>

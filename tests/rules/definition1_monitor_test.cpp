@@ -43,7 +43,9 @@ TEST(Def1Monitor, Ineq1HoldsWhenFollowerFarBehind) {
 
 // With a speed limit of 22 m/s the best v_e* toward a follower alone is 22 m/s: LHS as above,
 // D_lon(24 behind 22) = 4.8 + [12 + 0.25 + 78.125 - 22^2/16] = 64.925 m, RHS = 44 - 64.925.
-// Margin = -20.925 - (X_o + 44): a follower 55 m behind fails by 9.925 m at every v_e*. (The
+// Margin = -20.925 - (X_o + 44) in the paper's model; the bounded-rate ego (20 -> 22 m/s at
+// 2 m/s2) is 1 m further back at rho/2, and both must hold: a follower 55 m behind fails by
+// 10.925 m at every v_e*. (The
 // other gap of the lane, behind vehicle 1, is worse: ineq. (1.2) toward it at v_e* = 0 over
 // rho/2 = 2 s is -55 + 20*2 - 4.8 = -19.8 m. Closer than 35.2 m it would be feasible, see
 // merge_attempts_test.cpp.)
@@ -54,7 +56,7 @@ TEST(Def1Monitor, Ineq1FailsForCloseFollowerAndBlamesEgo) {
   const MonitorOutput out = test::run(monitor_def1_1_gap, s, merging_at_t0(constant_accel_trace(s, 1.0)));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
-  EXPECT_NEAR(out.result.min_margin, -20.925 + 11.0, 1e-6);  // -9.925 m
+  EXPECT_NEAR(out.result.min_margin, -20.925 + 11.0 - 1.0, 1e-6);  // -10.925 m
 }
 
 // Ineq. (2) with v_e* = 20: D_lon(ego rear at 20, leader at 20) = 45.175 m;
@@ -127,10 +129,19 @@ TEST(Def1Monitor, LeaderBrakingBeyondBmaxInTheWindowIsLiable) {
   EXPECT_NEAR(out.result.min_margin, -0.95, 1e-9);
 }
 
+// A platoon at 30 m/s, 15 m apart, from alongside the ego at x = 250 back to x = 190: no gap of
+// the lane satisfies ineq. (1.1)/(1.2) (the gaps are far shorter than D_lon at 30 m/s; ahead of
+// the front vehicle the ego cannot get, behind the last one it cannot drop in rho_m = 4 s at b_min).
+std::vector<MainVehicle> dense_platoon() {
+  return {vehicle(1, 250.0, 30.0), vehicle(2, 235.0, 30.0), vehicle(3, 220.0, 30.0), vehicle(4, 205.0, 30.0),
+          vehicle(5, 190.0, 30.0)};
+}
+
 // Def. 1.3: stop point = x + 4.8/2 + v^2/(2*8); side lane ends at 300 m.
 TEST(Def1Monitor, HaltRuleMarginIsDistanceFromStopPointToSideLaneEnd) {
   Scenario s = base_scenario();
   s.ego.x_m = 250.0;
+  s.vehicles = dense_platoon();
   const MonitorOutput held = test::run(monitor_def1_3_halt, s, constant_accel_trace(s, 0.0));
   EXPECT_NEAR(held.result.min_margin, 300.0 - (252.4 + 400.0 / 16.0), 1e-9);  // 22.6 m
   s.ego.speed_mps = 30.0;
@@ -140,11 +151,23 @@ TEST(Def1Monitor, HaltRuleMarginIsDistanceFromStopPointToSideLaneEnd) {
   EXPECT_NEAR(broke.result.min_margin, 300.0 - (252.4 + 900.0 / 16.0), 1e-9);  // -8.65 m
 }
 
+// Definition 1.3 asks the ego to halt only when no gap satisfies (1.1)/(1.2): on an empty road
+// the same too-fast ego may go on toward the open lane.
+TEST(Def1Monitor, HaltRuleDoesNotBindWhileSomeGapIsFeasible) {
+  Scenario s = base_scenario();
+  s.ego.x_m = 250.0;
+  s.ego.speed_mps = 30.0;
+  EXPECT_TRUE(test::run(monitor_def1_3_halt, s, constant_accel_trace(s, 0.0)).result.holds);
+  s.vehicles = dense_platoon();
+  EXPECT_FALSE(test::run(monitor_def1_3_halt, s, constant_accel_trace(s, 0.0)).result.holds);
+}
+
 TEST(Def1Monitor, HaltRuleDoesNotApplyWhileTheEgoHoldsTheRightOfWay) {
   // The ego of the previous test (too fast to halt before the side lane's end), with vehicle 1
   // 450 m behind: seen merging from t = 0, it holds the right of way by Definition 1 from then
   // (the gap behind nobody, ahead of vehicle 1, is feasible at 30 m/s) and the halt rule does not
-  // apply. Without the lateral motion it has no right of way and breaks it.
+  // apply (it would not bind either way while that gap is feasible:
+  // HaltRuleDoesNotBindWhileSomeGapIsFeasible).
   Scenario s = base_scenario();
   s.ego.x_m = 250.0;
   s.ego.speed_mps = 30.0;
@@ -152,8 +175,7 @@ TEST(Def1Monitor, HaltRuleDoesNotApplyWhileTheEgoHoldsTheRightOfWay) {
   const MonitorOutput out = test::run(monitor_def1_3_halt, s, merging_at_t0(constant_accel_trace(s, 0.5)));
   EXPECT_TRUE(out.result.holds);
   EXPECT_FALSE(std::isfinite(out.result.min_margin));
-  const MonitorOutput staying = test::run(monitor_def1_3_halt, s, constant_accel_trace(s, 0.5));
-  EXPECT_FALSE(staying.result.holds);
+  EXPECT_FALSE(test::judge(s, merging_at_t0(constant_accel_trace(s, 0.5)))->row.ego_holds.empty());
 }
 
 }  // namespace

@@ -129,13 +129,26 @@ TEST(MergeAttempts, AnAcceptanceDeliveredAfterRhoCGrantsNothingAndIsKeptForDef23
   EXPECT_TRUE(j->row.ego_holds.empty());
 }
 
-TEST(MergeAttempts, AnAcceptanceDeliveredOnlyAfterTheStartGrantsNothing) {
-  // In time for rho_c (1.3 s) but after the ego had already started (1.06 s).
+// The ego's left edge (Y = -3.5 + 0.95 at rest) reaches the lane line (Y = -1.75) 0.8 m into
+// the move at 1.75 m/s: the ego enters the main lane at t = 1.46 s.
+TEST(MergeAttempts, AnAcceptanceDeliveredAfterTheStartButBeforeTheEntryGrantsIt) {
+  // In time for rho_c (1.3 s) and after the visible start (1.06 s), but before the ego took any
+  // of the main lane's room.
   const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
   const auto j = test::judge(s, with_exchange(merging_from(s, 1.0), 1, 1.3));
   const MergeAttempt& a = only_attempt(*j);
-  EXPECT_EQ(a.basis, RowBasis::kNone);
-  EXPECT_FALSE(a.exchange.has_value());
+  ASSERT_TRUE(a.entry_time_s.has_value());
+  EXPECT_NEAR(*a.entry_time_s, 1.46, 1e-9);
+  EXPECT_EQ(a.basis, RowBasis::kDef2) << a.observation;
+}
+
+TEST(MergeAttempts, AnAcceptanceDeliveredOnlyAfterTheEntryGrantsNothing) {
+  // Requested at 1.0 s, delivered at 1.6 s (within rho_c), but the ego entered at 1.46 s.
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, with_exchange(merging_from(s, 1.0), 1, 1.6, 1.0));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kNone) << a.observation;
+  EXPECT_TRUE(j->row.ego_holds.empty());
 }
 
 TEST(MergeAttempts, AnAcceptanceFromAVehicleOutsideTheGapGrantsNothing) {

@@ -68,17 +68,30 @@ TEST(SmoothnessMonitor, AMergeAbortedBackToTheSideLaneIsAnAttemptOfItsOwn) {
 }
 
 TEST(SmoothnessMonitor, ThreeSignChangesInOneMergeViolate) {
-  // The same three reversals without returning to the side-lane centre (vy = +0.5, -0.3, +0.5,
-  // -0.3: Y -2.75, -3.2, -2.45, -2.9): one observed attempt allows 2; margin -1.
+  // Three reversals too small to be aborts: 0.1 s at vy = -0.3 takes the ego back 0.03 m, under
+  // the 0.05 m reversal hysteresis (merge_abort_reversal_m). One observed attempt allows 2 sign
+  // changes; by t = 3.1 s it has made 3: margin -1 (a fourth at 3.1 s gives -2).
   const Scenario s = base_scenario();
   const Trace t = with_lateral_path(constant_accel_trace(s, 6.0), [](double t) {
-    return t < 1.5 ? 0.5 : t < 3.0 ? -0.3 : t < 4.5 ? 0.5 : -0.3;
+    return t < 1.5 ? 0.5 : t < 1.6 ? -0.3 : t < 3.0 ? 0.5 : t < 3.1 ? -0.3 : 0.5;
   });
   ASSERT_EQ(test::judge(s, t)->phases.count(MergePhaseKind::kStart), 1);
   const MonitorOutput out = test::run(monitor_smoothness_oscillation, s, t);
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
-  EXPECT_NEAR(out.result.min_margin, -1.0, 1e-12);
+  EXPECT_NEAR(out.result.min_margin, -2.0, 1e-12);
+}
+
+TEST(SmoothnessMonitor, TurningBackByMoreThanTheReversalHysteresisIsAnAbort) {
+  // vy = +0.5 for 1.5 s, then -0.3 for 0.5 s: 0.15 m back toward the side lane, an abort; the
+  // next departure is a second attempt.
+  const Scenario s = base_scenario();
+  const Trace t = with_lateral_path(constant_accel_trace(s, 6.0), [](double t) {
+    return t < 1.5 ? 0.5 : t < 2.0 ? -0.3 : 0.5;
+  });
+  const auto j = test::judge(s, t);
+  EXPECT_EQ(j->phases.count(MergePhaseKind::kAbort), 1);
+  EXPECT_EQ(j->phases.count(MergePhaseKind::kStart), 2);
 }
 
 TEST(SmoothnessMonitor, SideslipMarginIsBoundMinusAbsoluteSideslip) {

@@ -140,6 +140,9 @@ Scenario assemble_scenario(const ScenarioSpec& spec) {
   s.params.rss.response_time_s = spec.params.response_time_s;
   s.params.planner.merge_duration_s = spec.params.merge_duration_s;
   s.params.planner.comm_threshold_s = spec.params.comm_threshold_s;
+  // rho_c is the V2V protocol's constant, known to the requester, the responders (the simulated
+  // ones read it from the planner's parameters) and the judge alike.
+  s.params.rules.comm_threshold_s = spec.params.comm_threshold_s;
   s.params.sim.horizon_s = spec.params.horizon_s;
 
   // The side lane must leave room to stop: reaction distance, braking at b_min, the planner's

@@ -54,8 +54,12 @@ MonitorOutput monitor_window_limit(const MonitorContext& ctx, LimitKind kind) {
     const int other = party_of(s, static_cast<std::size_t>(k));
     const Limits& lim = limits_of(s, static_cast<std::size_t>(k));
     const double from_s = a.decision_time_s;
-    const double window = kind == LimitKind::kAccel ? a.def1.rho_s / 2.0 : a.def1.rho_s;
-    for (std::size_t i = a.def1.step; i < steps.size() && steps[i].time_s <= from_s + window + 1e-9; ++i) {
+    // The paper's windows, [T_dec, T_dec + rho/2] and [T_dec, T_dec + rho], stretched to the
+    // observed midpoint and completion when the merge took longer than rho says.
+    double until_s = from_s + (kind == LimitKind::kAccel ? a.def1.rho_s / 2.0 : a.def1.rho_s);
+    if (kind == LimitKind::kAccel && a.midpoint_time_s) until_s = std::max(until_s, *a.midpoint_time_s);
+    if (kind == LimitKind::kBrake && a.completed) until_s = std::max(until_s, *a.end_time_s);
+    for (std::size_t i = a.def1.step; i < steps.size() && steps[i].time_s <= until_s + 1e-9; ++i) {
       const double a = state_of(steps[i], static_cast<std::size_t>(k)).accel_mps2;
       const double limit = kind == LimitKind::kAccel ? lim.accel_max_mps2 : lim.brake_max_mps2;
       const double m = kind == LimitKind::kAccel ? limit + tol - a : limit + tol + a;

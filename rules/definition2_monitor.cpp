@@ -22,7 +22,8 @@ double merge_midpoint_after(const MergePhases& phases, double time_s) {
 }
 
 // Def. 2.1B / 2.2B: the responder of an accepted request changes speed toward v_o* at most at
-// its b_min (2.1) or a_acc (2.2), and has reached v_o* once rho_c (+T) has passed.
+// its b_max (2.1: braking harder than b_min is a legal RSS response, and b_min only bounds what
+// the ego may ask, spec §5) or a_acc (2.2), and has reached v_o* once rho_c (+T) has passed.
 MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
   const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
@@ -48,13 +49,13 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
       const double t = steps[i].time_s;
       const double v = speed_of(state_of(steps[i], k));
       reached = reached || (ahead ? v <= v_star + tol : v >= v_star - tol);
-      // Rate bound: not below v0 - b_min (t - t_a) (2.1B), not above v0 + a_acc (t - t_a) (2.2B).
+      // Rate bound: not below v0 - b_max (t - t_a) (2.1B), not above v0 + a_acc (t - t_a) (2.2B).
       double m = std::numeric_limits<double>::infinity();
       double required = v_star;
       if (!reached) {
-        m = ahead ? v - (v0 - lim.brake_min_mps2 * (t - x.accept_time_s)) + tol
+        m = ahead ? v - (v0 - lim.brake_max_mps2 * (t - x.accept_time_s)) + tol
                   : (v0 + lim.accel_max_mps2 * (t - x.accept_time_s)) + tol - v;
-        required = ahead ? v0 - lim.brake_min_mps2 * (t - x.accept_time_s) : v0 + lim.accel_max_mps2 * (t - x.accept_time_s);
+        required = ahead ? v0 - lim.brake_max_mps2 * (t - x.accept_time_s) : v0 + lim.accel_max_mps2 * (t - x.accept_time_s);
       }
       if (t >= deadline) {
         const double yield = ahead ? v_star + ctx.params.yield_speed_tolerance_mps - v
@@ -70,7 +71,7 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
         os << party_name(partner) << " accepted the Def. 2." << (ahead ? "1" : "2") << " request of t = "
            << x.request_time_s << " s (v_o* = " << v_star << " m/s) but drove at " << v << " m/s at t = " << t
            << " s (" << (t >= deadline && m < 0.0 && (ahead ? v > v_star : v < v_star) ? "did not yield"
-                         : ahead ? "braked harder than b_min" : "accelerated harder than a_acc")
+                         : ahead ? "braked harder than b_max" : "accelerated harder than a_acc")
            << ")";
         acc.set_detail(os.str());
       }

@@ -61,13 +61,26 @@ std::optional<std::size_t> entry_step_of(const ObservedTrace& t, std::size_t fro
   return std::nullopt;
 }
 
+// When the ego's motion toward the main lane that led into the start at `start_step` began: the
+// first step of the unbroken run of steps before it with lateral speed above the hysteresis. An
+// ego placed off its lane centre on the far side moves toward the main lane well before its
+// offset says "start", and its decision cannot be later than that motion.
+double approach_onset_s(const ObservedTrace& t, const RuleParams& p, std::size_t start_step) {
+  std::size_t i = start_step;
+  while (i > 0 && t.steps[i - 1].vehicles[0].vy_mps > p.lat_speed_hysteresis_mps) --i;
+  return t.steps[i].time_s;
+}
+
 // Definition 1 at step i for a gap, with rho_m or the observed duration.
 Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, const GapIndices& gap,
                       std::size_t i) {
   const double time_s = t.steps[i].time_s;
   std::vector<double> rhos = {p.merge_duration_s};
-  if (a.midpoint_time_s && 2.0 * (*a.midpoint_time_s - time_s) > p.merge_duration_s)
-    rhos.push_back(2.0 * (*a.midpoint_time_s - time_s));
+  // The observed duration: to the midpoint; for an attempt still under way when the trace ends,
+  // the shortest duration whose midpoint falls after that end.
+  const std::optional<double> mid_s =
+      a.midpoint_time_s ? a.midpoint_time_s : a.end_time_s ? std::nullopt : std::optional(t.steps.back().time_s);
+  if (mid_s && 2.0 * (*mid_s - time_s) > p.merge_duration_s) rhos.push_back(2.0 * (*mid_s - time_s));
   Def1Reading best;
   bool have = false;
   for (const double rho : rhos) {
@@ -188,7 +201,8 @@ MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p
   out.attempts = spans_of(phases);
   double previous_end_s = t.steps.empty() ? 0.0 : t.steps.front().time_s;
   for (MergeAttempt& a : out.attempts) {
-    judge(t, p, a, std::max(previous_end_s, a.start_time_s - p.merge_decision_window_s));
+    judge(t, p, a, std::max(previous_end_s, std::min(a.start_time_s - p.merge_decision_window_s,
+                                                     approach_onset_s(t, p, a.start_step))));
     describe(t, a);
     previous_end_s = a.end_time_s.value_or(a.start_time_s);
   }

@@ -131,9 +131,11 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
              << limits_of(s, g.rear).accel_max_mps2 << " m/s2, while the situation was dangerous (since t = "
              << e.blame_time_s << " s)";
           why = os.str();
-        } else if (e.lateral_entrance && !ctx.row.ego_held_within(e.blame_time_s - T, e.blame_time_s)) {
+        } else if (e.lateral_entrance && !ctx.row.ego_held_within(e.blame_time_s - T, e.blame_time_s) &&
+                   ego_of(st).y_m > s.road.side_lane_y_m() + ctx.params.merge_start_offset_m) {
           // An ego that held the right of way within the last T (it aborted its merge) is still
-          // within its response time: its lateral motion is then rss_lateral's to judge.
+          // within its response time: its lateral motion is then rss_lateral's to judge. So is an
+          // ego still on the far side of its own lane's centre: it is not cutting in yet.
           e.breach = kEgoId;
           why = "ego entered the lane of " + describe(s, i == 0 ? j : i) +
                 " at an unsafe longitudinal distance without the right of way";

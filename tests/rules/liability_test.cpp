@@ -21,12 +21,14 @@ RightOfWay right_of_way(const Scenario& s, const Trace& t) { return test::judge(
 // Vehicle 1 starts 10.05 m behind the ego at 15 m/s, the ego at 20 m/s (speed limit 22 m/s): the
 // gap ahead of vehicle 1 opens by 5 m/s. Ineq. (1.1) at the best v_e* = 22 m/s: LHS = X_o + 15*2
 // + 2*4^2/8 = X_o + 34, D_lon(19 behind 22) = 4.8 + 9.5 + 0.25 + 20^2/8 - 22^2/16 = 34.3 m,
-// RHS = X + 44 - 34.3: it holds once X - X_o >= 24.3 m, i.e. from t = 2.85 s (first step 2.86 s).
+// RHS = X + 44 - 34.3: it holds once X - X_o >= 24.3 m in the paper's model; the bounded-rate ego
+// (20 -> 22 m/s at 2 m/s2) is 1 m further back at rho/2, and both must hold: X - X_o >= 25.3 m,
+// from t = 3.05 s (first step 3.06 s).
 // (Behind vehicle 1 there is no gap: it is slower than the ego and starts too close for (1.2).)
 // The ego is seen to move toward the main lane from t = 3 s at 1 m/s (start 3.1 s, midpoint
-// 4.75 s, on the main-lane centre from 6.3 s); the gap has stayed feasible since 2.46 s.
+// 4.75 s, on the main-lane centre from 6.3 s); the gap has stayed feasible since 3.06 s.
 //
-//   t = 0      [1]--10 m--[ego]          t = 2.86 s   [1]------24.3 m------[ego]  Def. 1 holds
+//   t = 0      [1]--10 m--[ego]          t = 3.06 s   [1]------25.3 m------[ego]  Def. 1 holds
 TEST(RightOfWay, MainLaneHoldsUntilADef1GapIsEstablished) {
   Scenario s = base_scenario();
   s.road.speed_limit_mps = 22.0;
@@ -36,16 +38,16 @@ TEST(RightOfWay, MainLaneHoldsUntilADef1GapIsEstablished) {
   ASSERT_EQ(row.timeline.size(), 3u);
   EXPECT_EQ(row.timeline[0], std::make_pair(0.0, kMainLane));
   EXPECT_EQ(row.timeline[1].second, kEgoId);
-  EXPECT_NEAR(row.timeline[1].first, 2.86, 1e-9);
+  EXPECT_NEAR(row.timeline[1].first, 3.06, 1e-9);
   EXPECT_EQ(row.timeline[2].second, kNobody);
   EXPECT_NEAR(row.timeline[2].first, 6.3, 0.021);
-  EXPECT_FALSE(row.ego_holds_at(2.8));
-  EXPECT_TRUE(row.ego_holds_at(3.0));
+  EXPECT_FALSE(row.ego_holds_at(3.0));
+  EXPECT_TRUE(row.ego_holds_at(3.1));
   EXPECT_FALSE(row.ego_holds_at(6.5));
   EXPECT_FALSE(row.ego_held_within(6.4, 6.6));
   EXPECT_TRUE(row.ego_held_within(6.0, 6.6));
-  EXPECT_TRUE(row.ego_held_within(0.0, 2.9));
-  EXPECT_FALSE(row.ego_held_within(0.0, 2.8));
+  EXPECT_TRUE(row.ego_held_within(0.0, 3.1));
+  EXPECT_FALSE(row.ego_held_within(0.0, 3.0));
 }
 
 TEST(RightOfWay, TheEgoThatNeverMovesTowardTheMainLaneNeverHoldsIt) {

@@ -145,11 +145,12 @@ TEST(RssLongitudinalMonitor, AnEgoThatAbortedWithinTheResponseTimeHasNotCutIn) {
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, 1);
   EXPECT_NEAR(*out.result.first_violation_time_s, 1.7, 0.021);
-  // Resuming at 1.6 s, more than T after the abort: a cut-in, the ego liable at t_b.
+  // Resuming at 1.6 s, more than T after the abort: a cut-in, the ego liable from the step at
+  // which it is again past its lane centre by the start offset (0.1 s later).
   const MonitorOutput late = test::run(monitor_rss_longitudinal, s, abort_then_resume(s, 1.6));
   ASSERT_FALSE(late.result.holds);
   EXPECT_EQ(late.result.liable_id, kEgoId);
-  EXPECT_NEAR(*late.result.first_violation_time_s, 1.6, 0.021);
+  EXPECT_NEAR(*late.result.first_violation_time_s, 1.7, 0.021);
 }
 
 // Vehicle 1 (30 m/s) passes the ego (20 m/s, Y = -2.0: laterally unsafe at rest) from 3 m behind:

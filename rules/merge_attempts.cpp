@@ -71,6 +71,10 @@ double approach_onset_s(const ObservedTrace& t, const RuleParams& p, std::size_t
   return t.steps[i].time_s;
 }
 
+// The decision window is read every kScanStride steps (0.1 s at 50 Hz): a Definition 1 reading
+// costs two bisections, and a gap's feasibility does not come and go within a tenth of a second.
+constexpr std::size_t kScanStride = 5;
+
 // Definition 1 at step i for a gap, with rho_m or the observed duration.
 Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, const GapIndices& gap,
                       std::size_t i) {
@@ -147,11 +151,19 @@ void describe(const ObservedTrace& t, MergeAttempt& a) {
 // From a feasible reading, back over the window while the same gap stays feasible: the ego holds
 // the right of way from the start of that run (a planner that decided when the gap opened is
 // credited from then, and its lateral approach before the visible start is covered).
+// Strides back over the window (kScanStride steps at a time, the last stride step by step).
 void extend_back(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, std::size_t first) {
-  for (std::size_t i = a.def1.step; i-- > first;) {
+  std::size_t stride = kScanStride;
+  while (a.def1.step > first) {
+    const std::size_t i = a.def1.step - std::min(stride, a.def1.step - first);
     const Def1Reading r = read_def1(t, p, a, a.gap, i);
-    if (!r.interval.feasible()) return;
-    a.def1 = r;
+    if (r.interval.feasible()) {
+      a.def1 = r;
+    } else if (stride > 1) {
+      stride = 1;
+    } else {
+      return;
+    }
   }
 }
 
@@ -169,7 +181,10 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
     return;
   }
   const std::size_t first = step_at_or_after(t, window_from_s);
-  for (std::size_t i = std::max(a.entry_step.value_or(a.start_step), a.start_step) + 1; i-- > first;) {  // latest first
+  // Latest first, every kScanStride steps (the step of the entry itself is always read).
+  const std::size_t last = std::max(a.entry_step.value_or(a.start_step), a.start_step);
+  for (std::size_t i = last + kScanStride; i >= first + kScanStride;) {
+    i -= kScanStride;
     // The gap the ego entered, then the one around it at i (a follower may have raced past it
     // since, changing the gap it entered). Never a gap the ego was neither in nor entered: the
     // paper's model puts the ego at v_e* at once, so "behind the follower at v_e* = 0" would

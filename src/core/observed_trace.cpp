@@ -22,10 +22,9 @@ std::string to_string(ChannelEventKind k) {
 
 std::uint64_t trace_digest(const ObservedTrace& t) {
   std::uint64_t h = 1469598103934665603ULL;
-  const auto mix = [&h](double v) {
-    std::uint64_t b = std::bit_cast<std::uint64_t>(v);
-    for (int i = 0; i < 8; ++i, b >>= 8) h = (h ^ (b & 0xffU)) * 1099511628211ULL;
-  };
+  // FNV-1a over whole 64-bit words: one multiply per number (byte-wise FNV cost a campaign 6-8 %
+  // of its time), still a function of every bit of every value.
+  const auto mix = [&h](double v) { h = (h ^ std::bit_cast<std::uint64_t>(v)) * 1099511628211ULL; };
   for (const ObservedStep& s : t.steps) {
     mix(s.time_s);
     for (const ObservedState& v : s.vehicles) {

@@ -81,7 +81,7 @@ struct ObservedTrace {
 };
 
 std::string to_string(ChannelEventKind k);
-// FNV-1a (64 bit) over the bit patterns of every step's time and observed states: equal traces
+// FNV-1a (64 bit, over whole words) of the bit patterns of every step's time and observed states: equal traces
 // have equal digests (reports print it; determinism checks compare it).
 std::uint64_t trace_digest(const ObservedTrace& t);
 

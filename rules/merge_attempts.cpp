@@ -108,7 +108,7 @@ Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAt
 }
 
 // A Def. 2 exchange with a vehicle of the gap that grants the attempt: accepted, the acceptance
-// delivered within rho_c of the request (closed window) and within [from_s, start]. With
+// delivered within rho_c of the request (closed window) and within [from_s, entry]. With
 // `timely` false, the same for an acceptance delivered after rho_c.
 std::optional<CoopExchange> accepted_exchange(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a,
                                               double from_s, bool timely) {

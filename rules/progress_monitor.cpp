@@ -69,7 +69,7 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
     if (acc.record(i, st.time_s, grace - needless, kEgoId, grace, needless)) {
       std::ostringstream os;
       const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
-      os << "ego halted (or kept braking to a halt) in the side lane for " << needless << " s from t = " << run_start
+      os << "ego halted in the side lane for " << needless << " s from t = " << run_start
          << " s while a Def. 1 gap was feasible (at t = " << st.time_s << " s: gap (follower " << id(feasible->follower_id)
          << ", leader " << id(feasible->leader_id) << "), rho = " << feasible->merge_duration_s
          << " s, v_e* = " << feasible->ve_star_mps << " m/s)";

@@ -1,5 +1,6 @@
 #include "rules/report_html.h"
 
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,6 +11,7 @@
 #include "rules/report_markdown.h"
 #include "rules/monitor.h"
 #include "rules/pair_geometry.h"
+#include "rules/planner_account.h"
 #include "rules/rule_catalog.h"
 #include "core/svg_plot.h"
 
@@ -219,28 +221,16 @@ svg::Plot sideslip_plot(const CheckResult& r) {
   return p;
 }
 
-// The planner's own account (its annotations), shown beside the verdict and never used for it:
-// each decision it reported, and where it claimed a merge the observation did not grant.
-void planner_account(std::ostringstream& h, const CheckResult& r) {
-  const nlohmann::json& a = r.trace.planner_annotations;
-  if (!a.is_object() || !a.contains("decisions") || !a["decisions"].is_array()) return;
+// The planner's own account (rules/planner_account.h), shown beside the verdict, never used for it.
+void planner_account_list(std::ostringstream& h, const CheckResult& r) {
+  const std::vector<PlannerClaim> claims = planner_account(r);
+  if (claims.empty()) return;
   h << "<h2>The planner's own account (not judged)</h2>\n<ul>\n";
-  std::size_t shown = 0;
-  std::string last_mode;
-  for (const nlohmann::json& d : a["decisions"]) {
-    if (!d.is_object() || !d.contains("mode") || !d["mode"].is_string()) continue;
-    const std::string mode = d["mode"].get<std::string>();
-    if (mode == last_mode) continue;  // one line per change of mode
-    last_mode = mode;
-    if (++shown > kMaxListedEntries) break;
-    const double t = d.contains("time_s") && d["time_s"].is_number() ? d["time_s"].get<double>() : 0.0;
-    const bool claims_merge = mode == "def1_merge" || mode == "def2_merge";
-    bool ego_held = false;
-    for (const auto& [from, holder] : r.right_of_way)
-      if (from <= t + 1e-9) ego_held = holder == kEgoId;
-    h << "<li>t = " << format_number(t, 2) << " s: planner reported " << escape(mode);
-    if (d.contains("reason") && d["reason"].is_string()) h << " &mdash; " << escape(d["reason"].get<std::string>());
-    if (claims_merge && !ego_held) h << " <b>(disagrees: observed, the ego did not hold the right of way then)</b>";
+  for (std::size_t k = 0; k < claims.size() && k < kMaxListedEntries; ++k) {
+    const PlannerClaim& c = claims[k];
+    h << "<li>t = " << format_number(c.time_s, 2) << " s: planner reported " << escape(c.mode);
+    if (!c.reason.empty()) h << " &mdash; " << escape(c.reason);
+    if (c.disagrees) h << " <b>(disagrees: observed, the ego did not hold the right of way then)</b>";
     h << "</li>\n";
   }
   h << "</ul>\n";
@@ -292,7 +282,7 @@ std::string report_html(const CheckResult& r) {
   h << "</ul>\n<p>What decided it, observed:</p>\n<ul>\n";
   for (const std::string& o : r.right_of_way_observations) h << "<li>" << escape(o) << "</li>\n";
   h << "</ul>\n";
-  planner_account(h, r);
+  planner_account_list(h, r);
   if (!r.trace.steps.empty()) {
     h << "<h2>Trajectories</h2>\n" << inline_svg(svg::render(top_down_plot(r))) << "\n";
     h << "<h2>Gap against D_lon</h2>\n" << inline_svg(svg::render(gap_plot(r))) << "\n";

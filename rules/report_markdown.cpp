@@ -1,9 +1,11 @@
 #include "rules/report_markdown.h"
 
+
 #include <cmath>
 #include <sstream>
 
 #include "core/fixed_text.h"
+#include "rules/planner_account.h"
 #include "rules/rule_catalog.h"
 
 namespace mg {
@@ -69,6 +71,14 @@ std::string report_markdown(const CheckResult& r) {
       md << "- t = " << format_number(*rule.first_violation_time_s, 2) << " s - violation of " << rule.rule_id << " ("
          << party_name(rule.liable_id) << ")\n";
     }
+  }
+  const std::vector<PlannerClaim> claims = planner_account(r);
+  if (!claims.empty()) md << "\n## The planner's own account (not judged)\n\n";
+  for (const PlannerClaim& c : claims) {
+    md << "- t = " << format_number(c.time_s, 2) << " s: planner reported " << c.mode;
+    if (!c.reason.empty()) md << " - " << c.reason;
+    if (c.disagrees) md << " **(disagrees: observed, the ego did not hold the right of way then)**";
+    md << "\n";
   }
   md << "\nTrace: " << r.trace.steps.size() << " steps, digest " << std::hex << r.trace_digest << std::dec << ".\n";
   return md.str();

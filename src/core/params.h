@@ -56,7 +56,8 @@ struct RuleParams {
   double merge_complete_offset_m = 0.2; // (0, 2]
   double merge_complete_yaw_rad = 0.02; // (0, 0.5]
   // How long before the observed start of a merge its decision may have been taken: the right of
-  // way is read at the latest instant of [start - window, start] at which it held (docs/spec.md).
+  // way is read at the latest instant of [start - window, entry] at which it held, the window
+  // reaching back further to the onset of an unbroken approach (rules/merge_attempts.h).
   double merge_decision_window_s = 4.0; // [0, 20]
   double accel_tolerance_mps2 = 0.05;   // measured accelerations beyond a declared limit by less are within it, [0, 2]
   double speed_tolerance_mps = 0.2;     // speed comparisons, [0, 5]

@@ -48,15 +48,17 @@ std::vector<MergeAttempt> spans_of(const MergePhases& phases) {
   return out;
 }
 
-// The first step of [from, to) at which the ego's leftmost corner is past the lane line.
-std::optional<std::size_t> entry_step_of(const ObservedTrace& t, std::size_t from, std::size_t to) {
+// The first step of [from, to) at which the ego's leftmost corner is past the lane line by more
+// than the tolerance the rules give painted lines (road_edge_tolerance_m).
+std::optional<std::size_t> entry_step_of(const ObservedTrace& t, const RuleParams& p, std::size_t from,
+                                         std::size_t to) {
   const double line_y = -0.5 * t.road.lane_width_m;
   const VehicleSize& size = t.vehicles[0].size;
   for (std::size_t i = from; i < std::min(to, t.steps.size()); ++i) {
     const ObservedState& e = t.steps[i].vehicles[0];
     const double left_y = e.y_m + 0.5 * size.width_m * std::abs(std::cos(e.yaw_rad)) +
                           0.5 * size.length_m * std::abs(std::sin(e.yaw_rad));
-    if (left_y > line_y) return i;
+    if (left_y > line_y + p.road_edge_tolerance_m) return i;  // on the marking is not in the lane
   }
   return std::nullopt;
 }
@@ -80,8 +82,9 @@ Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAt
                       std::size_t i) {
   const double time_s = t.steps[i].time_s;
   std::vector<double> rhos = {p.merge_duration_s};
-  // The observed duration: to the midpoint; for an attempt still under way when the trace ends,
-  // the shortest duration whose midpoint falls after that end.
+  // The observed duration when longer than rho_m (never shorter: rho_m is the rule's, and a
+  // planner that merges faster is still judged by it): to the midpoint; for an attempt still
+  // under way when the trace ends, the shortest duration whose midpoint falls after that end.
   const std::optional<double> mid_s =
       a.midpoint_time_s ? a.midpoint_time_s : a.end_time_s ? std::nullopt : std::optional(t.steps.back().time_s);
   if (mid_s && 2.0 * (*mid_s - time_s) > p.merge_duration_s) rhos.push_back(2.0 * (*mid_s - time_s));
@@ -172,7 +175,7 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
   a.entered_gap = gap_around_ego(t, std::min(mid_or_start, t.steps.size() - 1));
   a.gap = a.entered_gap;
   const std::size_t end_step = a.end_time_s ? step_at_or_after(t, *a.end_time_s) : t.steps.size();
-  a.entry_step = entry_step_of(t, a.start_step, end_step + 1);
+  a.entry_step = entry_step_of(t, p, a.start_step, end_step + 1);
   if (a.entry_step) a.entry_time_s = t.steps[*a.entry_step].time_s;
   if (const auto x = accepted_exchange(t, p, a, window_from_s, true)) {
     a.basis = RowBasis::kDef2;

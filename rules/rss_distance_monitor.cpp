@@ -131,14 +131,17 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
              << limits_of(s, g.rear).accel_max_mps2 << " m/s2, while the situation was dangerous (since t = "
              << e.blame_time_s << " s)";
           why = os.str();
-        } else if (e.lateral_entrance && !ctx.row.ego_held_within(e.blame_time_s - T, e.blame_time_s) &&
-                   ego_of(st).y_m > s.road.side_lane_y_m() + ctx.params.merge_start_offset_m) {
+        } else if (e.lateral_entrance && !ctx.row.ego_held_within(e.blame_time_s - T, e.blame_time_s)) {
           // An ego that held the right of way within the last T (it aborted its merge) is still
-          // within its response time: its lateral motion is then rss_lateral's to judge. So is an
-          // ego still on the far side of its own lane's centre: it is not cutting in yet.
-          e.breach = kEgoId;
-          why = "ego entered the lane of " + describe(s, i == 0 ? j : i) +
-                " at an unsafe longitudinal distance without the right of way";
+          // within its response time: its lateral motion is then rss_lateral's to judge. An ego
+          // still within merge_start_offset_m of its own lane's centre is not cutting in yet,
+          // and the danger its lateral motion made is not the rear vehicle's either:
+          // rss_lateral judges that motion, and the blame waits for the ego to move on.
+          if (ego_of(st).y_m > s.road.side_lane_y_m() + ctx.params.merge_start_offset_m) {
+            e.breach = kEgoId;
+            why = "ego entered the lane of " + describe(s, i == 0 ? j : i) +
+                  " at an unsafe longitudinal distance without the right of way";
+          }
         } else if (st.time_s >= std::max(e.blame_time_s, e.rear_since_s) + T - 1e-9 &&
                    speed_of(rear) > stop_speed[g.rear] &&
                    rear.accel_mps2 > -(limits_of(s, g.rear).brake_min_mps2 - tol)) {

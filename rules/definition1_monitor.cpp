@@ -6,9 +6,7 @@
 
 #include "rules/definition1_gap.h"
 
-
 namespace mg {
-
 namespace {
 
 enum class GapSide { kFollower, kLeader };

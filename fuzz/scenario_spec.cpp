@@ -141,8 +141,12 @@ Scenario assemble_scenario(const ScenarioSpec& spec) {
   s.params.planner.merge_duration_s = spec.params.merge_duration_s;
   s.params.planner.comm_threshold_s = spec.params.comm_threshold_s;
   // rho_c is the V2V protocol's constant, known to the requester, the responders (the simulated
-  // ones read it from the planner's parameters) and the judge alike.
+  // ones read it from the planner's parameters) and the judge alike. rho_m is likewise the
+  // scenario's convention: the judge holds the merge to it (Def. 1 over rho_m, or over the
+  // observed duration when longer), and the planner is configured with the same value; a judge
+  // fixed at 4 s blamed every ego configured for a 3 s merge (docs/spec.md §8).
   s.params.rules.comm_threshold_s = spec.params.comm_threshold_s;
+  s.params.rules.merge_duration_s = spec.params.merge_duration_s;
   s.params.sim.horizon_s = spec.params.horizon_s;
 
   // The side lane must leave room to stop: reaction distance, braking at b_min, the planner's

@@ -64,10 +64,40 @@ Track follower_track(const MainLaneVehicle& f, double rho_s) {
   return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.width_m, f.limits};
 }
 
-Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2) {
-  const bool braking = observed_accel_mps2 < -kLeaderBrakingMps2;
-  const SpeedRamp motion = braking ? SpeedRamp{l.speed_mps, 0.0, 1.0, -observed_accel_mps2}
-                                   : SpeedRamp{l.speed_mps, l.speed_mps, 1.0, 1.0};
+const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v) {
+  const MainLaneVehicle* next = nullptr;
+  for (const MainLaneVehicle& u : lane)
+    if (lane_order_before(v, u) && (next == nullptr || lane_order_before(u, *next))) next = &u;
+  return next;
+}
+
+double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2) {
+  const double bumpers_m = 0.5 * (l.length_m + ahead.length_m) + kLeaderStandoffM;
+  const double gap_m = ahead.x_m - l.x_m - bumpers_m;
+  if (gap_m <= 0.0) return 1e3;
+  const double ahead_braking_mps2 = ahead_accel_mps2 < -kLeaderBrakingMps2 ? -ahead_accel_mps2 : 0.0;
+  const double closing_mps = l.speed_mps - ahead.speed_mps;
+  // While both move: the gap is smallest when the speeds match (relative uniform braking).
+  double need_mps2 = closing_mps > 0.0 ? ahead_braking_mps2 + closing_mps * closing_mps / (2.0 * gap_m) : 0.0;
+  if (ahead_braking_mps2 > 0.0) {  // and to a stop behind where `ahead` stops
+    const double room_m = gap_m + ahead.speed_mps * ahead.speed_mps / (2.0 * ahead_braking_mps2);
+    need_mps2 = std::max(need_mps2, l.speed_mps * l.speed_mps / (2.0 * room_m));
+  }
+  return std::min(1e3, need_mps2);
+}
+
+Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const MainLaneVehicle* ahead,
+                   double ahead_accel_mps2) {
+  const double seen_mps2 = observed_accel_mps2 < -kLeaderBrakingMps2 ? -observed_accel_mps2 : 0.0;
+  const double behind_mps2 = ahead ? braking_behind_mps2(l, *ahead, ahead_accel_mps2) : 0.0;
+  SpeedRamp motion{l.speed_mps, l.speed_mps, 1.0, 1.0};
+  // Braking seen to a stop is behind the braking needed to the speed ahead whenever it is harder.
+  if (behind_mps2 > seen_mps2) {
+    const double to_mps = ahead_accel_mps2 < -kLeaderBrakingMps2 ? 0.0 : ahead->speed_mps;
+    motion = SpeedRamp{l.speed_mps, to_mps, 1.0, behind_mps2};
+  } else if (seen_mps2 > 0.0) {
+    motion = SpeedRamp{l.speed_mps, 0.0, 1.0, seen_mps2};
+  }
   return Track{l.x_m, motion, l.length_m, l.width_m, l.limits};
 }
 
@@ -86,8 +116,11 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
   for (const MainLaneVehicle& v : lane) {
     if (gap.follower && !lane_order_before(*gap.follower, v))
       tracks.followers.push_back(follower_track(v, follower_window_s));
-    if (gap.leader && !lane_order_before(v, *gap.leader))
-      tracks.leaders.push_back(leader_track(v, observed_accel_mps2(v.id)));
+    if (gap.leader && !lane_order_before(v, *gap.leader)) {
+      const MainLaneVehicle* ahead = next_in_lane(lane, v);
+      tracks.leaders.push_back(
+          leader_track(v, observed_accel_mps2(v.id), ahead, ahead ? observed_accel_mps2(ahead->id) : 0.0));
+    }
   }
   return tracks;
 }
@@ -100,16 +133,16 @@ namespace {
 // beyond D_lat to the target lane's centre for a vehicle as wide as the ego; a wider one needs
 // half the width difference more (eq. 2 grows with the width sum), one in another lane lane_y_m
 // less. Returns the largest such extra over the vehicles the ego is not D_lon clear of (-inf
-// when it is clear of all): the instant is blocked when the lateral room is below it.
-double blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, double pc_m, const GapTracks& tracks,
-                       double buffer_m) {
+// when it is clear of all), for the target lane's and the other lanes' vehicles apart: the
+// instant is blocked when the lateral room is below it.
+Blocking blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, double pc_m, const GapTracks& tracks,
+                         double buffer_m) {
   const double t_lag = s.params.rss.response_time_s;
   const Limits& el = s.ego.limits;
   const double le = s.ego.size.length_m;
-  double below = -std::numeric_limits<double>::infinity();
-  // A wider vehicle needs half the width difference more, one in another lane lane_y_m less.
-  const auto block = [&](const Track& o) {
-    below = std::max(below, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m);
+  Blocking below;
+  const auto block = [&](const Track& o, double& extra_m) {
+    extra_m = std::max(extra_m, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m);
   };
   // Not D_lon behind o: the ego as the rear vehicle (RCPP eq. 1).
   const auto too_close_behind = [&](const Track& o) {
@@ -121,14 +154,14 @@ double blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, 
     for (const Track& f : tracks.followers) {
       const double d = rss_longitudinal_m({f.v_at(t_s), v_mps, f.length_m, le, t_lag, f.limits.accel_max_mps2,
                                            f.limits.brake_min_mps2, el.brake_max_mps2});
-      if (x_m - d - buffer_m < f.x_at(t_s)) block(f);
+      if (x_m - d - buffer_m < f.x_at(t_s)) block(f, below.lane_m);
     }
   }
   for (const Track& l : tracks.leaders)
-    if (too_close_behind(l)) block(l);
+    if (too_close_behind(l)) block(l, below.lane_m);
   // Another lane's vehicle constrains the merge only while it is ahead of the ego.
   for (const Track& o : tracks.beside)
-    if (o.x_at(t_s) > x_m && too_close_behind(o)) block(o);
+    if (o.x_at(t_s) > x_m && too_close_behind(o)) block(o, below.beside_m);
   return below;
 }
 
@@ -167,16 +200,27 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
     const double sgm = (y_path - sig.offset_m) / sig.width_m;
     // An ego nearer the lane than the path's start is not assumed to have reached the path yet.
     const double y = std::max(y_path, ego_y_m);
-    const double d_lat = ego_lateral_rss_m(s, v * sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm));
+    const double slope = sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);  // dY/dX on the path
+    const double d_lat = ego_lateral_rss_m(s, v * slope);
+    // The ego's half extent across the road on its heading along the path: the box's corner, not
+    // its side, comes nearest the lane (a halted ego, yawed 0.07 rad, had its corner 7 cm over
+    // the lane line while the vehicle it was to merge behind passed; a campaign finding).
+    const double cos_h = 1.0 / std::sqrt(1.0 + slope * slope);
+    const double yaw_extra_m = 0.5 * (s.ego.size.width_m * (cos_h - 1.0) + s.ego.size.length_m * slope * cos_h);
     // Laterally safe (lane centre Y = 0), with the growing tracking margin.
     const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
-    const double lateral_room_m = -y - (d_lat + margin_m);
-    if (lateral_room_m >= widest_extra) return false;
+    const double lateral_room_m = -y - yaw_extra_m - (d_lat + margin_m);
+    // A corner over the lane line (with kLaneLineMarginM) is in the lane, whatever D_lat says:
+    // the rules judge entry by it (docs/spec.md §8).
+    const bool over_line = -y - yaw_extra_m - 0.5 * s.ego.size.width_m < 0.5 * s.road.lane_width_m + kLaneLineMarginM;
+    if (!over_line && lateral_room_m >= widest_extra) return false;
     const bool memoised = memo && k <= kOccupancySamples;
-    double below = memoised ? memo->blocked_below_m[static_cast<std::size_t>(k)] : std::nan("");
-    if (std::isnan(below)) below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
+    Blocking below = memoised ? memo->blocked_below_m[static_cast<std::size_t>(k)] : Blocking{std::nan(""), 0.0};
+    if (std::isnan(below.lane_m)) below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
     if (memoised) memo->blocked_below_m[static_cast<std::size_t>(k)] = below;
-    return lateral_room_m < below;
+    const bool lane_blocked = below.lane_m > -std::numeric_limits<double>::infinity() &&
+                              (over_line || lateral_room_m < below.lane_m);
+    return lane_blocked || lateral_room_m < below.beside_m;
   };
   const int hint = memo && memo->last_blocked_k >= k_first && memo->last_blocked_k <= k_last ? memo->last_blocked_k : -1;
   if (hint >= 0 && blocked_at(hint)) return false;

@@ -68,8 +68,22 @@ Track follower_track(const MainLaneVehicle& f, double rho_s);
 // kLeaderBrakingMps2: then it is predicted to keep braking at that rate until it stops, since a
 // compliant leader may brake for a slower vehicle ahead of it (docs/planner.md); a rate beyond its
 // declared b_max is taken as seen, not capped.
+// With `ahead`, the vehicle in front of the leader in its lane: a leader cannot drive through it,
+// so it is predicted to slow to that vehicle's speed (`ahead` at constant speed), uniformly, by
+// kLeaderStandoffM behind it, or to stop kLeaderStandoffM behind where `ahead` stops when that
+// one is seen braking (at ahead_accel_mps2), whenever that needs more than the braking seen
+// (however little: no noise threshold applies). A leader that brakes later and harder for the
+// same vehicle is ahead of this prediction all the way, so a merge planned behind it is not
+// aborted when its braking sets in (docs/planner.md "Leaders behind slow vehicles").
 inline constexpr double kLeaderBrakingMps2 = 0.5;
-Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2);
+inline constexpr double kLeaderStandoffM = 2.0;
+Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const MainLaneVehicle* ahead = nullptr,
+                   double ahead_accel_mps2 = 0.0);
+// The uniform braking leader_track predicts for `l` behind `ahead`; 0 when `l` is not faster
+// than a non-braking `ahead`. Capped at 1e3 m/s2 (no room left).
+double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2 = 0.0);
+// The vehicle next ahead of `v` in `lane` (any order), or nullptr.
+const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v);
 
 // The vehicles a merge into a gap is checked against: the gap's follower and every target-lane
 // vehicle behind it (followers, follower_track over follower_window_s), its leader and every
@@ -109,6 +123,9 @@ Track beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_ac
 inline constexpr int kOccupancySamples = 40;
 inline constexpr double kOccupancyLateralMarginM = 0.75;
 inline constexpr double kOccupancyFullMarginFraction = 0.1;  // full margin from 10 % of W on
+// A corner of the ego this near the lane line counts as over it (the rules' marking tolerance,
+// 0.05 m, and as much again for tracking).
+inline constexpr double kLaneLineMarginM = 0.1;
 // buffer_m is added to every D_lon: a new merge is planned with kOccupancyPlanningBufferM, so
 // that its re-check every cycle (with none) does not fail at the first small deviation of the
 // ego or the traffic from the prediction and abort a merge that has only just begun.
@@ -129,11 +146,17 @@ struct OccupancyInstants {
 //   candidates of one v_e* share it (NaN: not computed yet; forget_ramp() for another profile);
 // - the instant that blocked the last failed check, visited first by the next one: neighbouring
 //   candidates mostly fail at the same instant.
+// The extra lateral room an instant needs for the target lane's vehicles and for the other
+// lanes' (-inf: none of them constrains it).
+struct Blocking {
+  double lane_m = -std::numeric_limits<double>::infinity();
+  double beside_m = -std::numeric_limits<double>::infinity();
+};
 struct OccupancyMemo {
-  std::array<double, kOccupancySamples + 1> blocked_below_m;
+  std::array<Blocking, kOccupancySamples + 1> blocked_below_m;
   int last_blocked_k = -1;
   OccupancyMemo() { forget_ramp(); }
-  void forget_ramp() { blocked_below_m.fill(std::numeric_limits<double>::quiet_NaN()); }
+  void forget_ramp() { blocked_below_m.fill(Blocking{std::numeric_limits<double>::quiet_NaN(), 0.0}); }
 };
 bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
                      const OccupancyInstants& when, const GapTracks& tracks, double buffer_m,

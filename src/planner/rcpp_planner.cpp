@@ -28,6 +28,10 @@ constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committ
 // at once, every cycle, against a leader that keeps braking would weave (docs/planner.md).
 constexpr double kMergeRetryAfterAbortS = 1.0;
 constexpr double kLongerMergeEveryS = 0.5;
+// Braking seen within this long counts as braking now: a leader braking in bursts (a bounded
+// random driver, or one keeping its distance bang-bang) drew a new merge in each lull and an
+// abort in the next burst, and the ego wove (docs/planner.md "Leaders behind slow vehicles").
+constexpr double kBrakingMemoryS = 2.0;
 
 std::string gap_name(const Gap& g) {
   const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
@@ -60,6 +64,12 @@ double observed_accel_mps2(const WorldSnapshot& w, int id) {
   for (const ObservedVehicle& o : w.others)
     if (o.id == id) return o.state.accel_mps2;
   return 0.0;
+}
+
+// A target-lane leader as leader_track predicts it, behind the vehicle ahead of it in `lane`.
+Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& l) {
+  const MainLaneVehicle* ahead = next_in_lane(lane, l);
+  return leader_track(l, observed_accel_mps2(w, l.id), ahead, ahead ? observed_accel_mps2(w, ahead->id) : 0.0);
 }
 
 // The vehicles of the other main lanes, for the occupancy check (GapTracks::beside).
@@ -159,12 +169,15 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     // Sigmoid upper bound (RCPP §II-C): P_c <= X_o - D_lon at the leader's predicted position.
     double v_hi = iv.hi_mps;
     if (gap.leader) {
+      // The leader as the commit re-check predicts it (leader_track): a bound from the constant
+      // speed of Def. 1.2 alone let a merge be decided that the next cycle aborted.
       const MainLaneVehicle& l = *gap.leader;
+      const Track lt = predicted_leader(w, lane, l);
       const auto margin = [&](double v) {
-        const double d = rss_longitudinal_m({ctx.ramp_to(v).speed_at_mps(half_s), l.speed_mps, ctx.ego_length_m,
+        const double d = rss_longitudinal_m({ctx.ramp_to(v).speed_at_mps(half_s), lt.v_at(half_s), ctx.ego_length_m,
                                              l.length_m, ctx.response_time_s, ctx.ego_limits.accel_max_mps2,
                                              ctx.ego_limits.brake_min_mps2, l.limits.brake_max_mps2});
-        return (l.x_m + l.speed_mps * half_s - d) - pc_of(v);
+        return (lt.x_at(half_s) - d) - pc_of(v);
       };
       const auto bound = highest_satisfying(margin, iv.lo_mps, iv.hi_mps);
       if (!bound) { ++n_cross; continue; }
@@ -315,7 +328,7 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   if (k == CoopCase::kEgoAhead) {
     tracks.followers.push_back(responder);
     if (const auto l = neighbour(lane, i, +1))
-      tracks.leaders.push_back(leader_track(*l, observed_accel_mps2(w, l->id)));
+      tracks.leaders.push_back(predicted_leader(w, lane, *l));
   } else {
     tracks.leaders.push_back(responder);
     if (const auto f = neighbour(lane, i, -1)) tracks.followers.push_back(follower_track(*f, 2.0 * t_c));
@@ -467,7 +480,20 @@ std::vector<PathPoint> RcppPlanner::side_lane_path(const WorldSnapshot& w) {
   return sample_return_path(*return_, from_x, to_x, kPathStepM);
 }
 
-PlanOutput RcppPlanner::plan(const WorldSnapshot& w) {
+WorldSnapshot RcppPlanner::with_braking_memory(const WorldSnapshot& w) {
+  WorldSnapshot out = w;
+  for (ObservedVehicle& o : out.others) {
+    const double accel = std::min(0.0, o.state.accel_mps2);
+    const auto it = seen_braking_.find(o.id);
+    if (it == seen_braking_.end() || accel <= it->second.accel_mps2 || w.time_s - it->second.time_s > kBrakingMemoryS)
+      seen_braking_[o.id] = SeenBraking{accel, w.time_s};
+    o.state.accel_mps2 = std::min(o.state.accel_mps2, seen_braking_[o.id].accel_mps2);
+  }
+  return out;
+}
+
+PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
+  const WorldSnapshot w = with_braking_memory(observed);
   const Scenario& s = *w.scenario;
   const double lane_w = s.road.lane_width_m;
   // Already in the main lane (a start there); not an ego on its way back after an abort.
@@ -508,6 +534,7 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
   const double t = *t_reach;
   const double v_at = ramp.speed_at_mps(t);
   const bool def2 = d.mode == DecisionMode::kDef2Merge;
+  const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
   for (const ObservedVehicle& ov : w.others) {
     const MainLaneVehicle o = to_lane_vehicle(ov);
     const bool follower = o.id == d.gap->follower_id, leader = o.id == d.gap->leader_id;
@@ -535,7 +562,7 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
       v_mps = o.speed_mps + o.limits.accel_max_mps2 * t;
       x_m = o.x_m + o.speed_mps * t + 0.5 * o.limits.accel_max_mps2 * t * t;
     } else {
-      const Track ahead = leader_track(o, observed_accel_mps2(w, o.id));
+      const Track ahead = predicted_leader(w, lane, o);
       x_m = ahead.x_at(t);
       v_mps = ahead.v_at(t);
     }
@@ -583,7 +610,7 @@ bool RcppPlanner::committed_occupancy_clear(const WorldSnapshot& w) const {
   if (const auto next = leader_ahead_of(lane, w.ego.x_m);
       next && (!gap.leader || lane_order_before(*next, *gap.leader)) &&
       (!gap.follower || lane_order_before(*gap.follower, *next)))
-    tracks.leaders.push_back(leader_track(*next, observed_accel_mps2(w, next->id)));
+    tracks.leaders.push_back(predicted_leader(w, lane, *next));
   const double elapsed_s = w.time_s - d.time_s;
   const OccupancyInstants when{OccupancyInstants::over(d.merge_duration_s).step_s, elapsed_s, horizon_s};
   return occupancy_clear(s, w.ego.x_m, w.ego.y_m, merge_->sigmoid, ramp, when, tracks, 0.0);

@@ -86,6 +86,9 @@ class RcppPlanner : public Planner {
   bool committed_occupancy_clear(const WorldSnapshot& w) const;
   double merge_target_speed_mps(const WorldSnapshot& w) const;  // v_e*, capped behind a braking leader
   void apply_override(const WorldSnapshot& w, PlanOutput& out) const;
+  // `w` with each other vehicle's acceleration replaced by the harshest braking seen from it in
+  // the last kBrakingMemoryS (rcpp_planner.cpp), updating seen_braking_.
+  WorldSnapshot with_braking_memory(const WorldSnapshot& w);
 
   bool cooperative_;
   bool merged_ = false;
@@ -95,6 +98,11 @@ class RcppPlanner : public Planner {
   std::map<int, double> retry_after_s_;  // partner id -> earliest time of a new request
   double no_merge_before_s_ = -1.0;       // after an abort: earliest time of a new merge
   double next_longer_merge_s_ = -1.0;     // next time the longer merge durations are searched
+  struct SeenBraking {
+    double accel_mps2 = 0.0;  // <= 0
+    double time_s = 0.0;
+  };
+  std::map<int, SeenBraking> seen_braking_;  // vehicle id -> harshest recent braking
 };
 
 }  // namespace mg

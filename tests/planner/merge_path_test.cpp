@@ -39,7 +39,8 @@ TEST(OccupancyClear, AMergeBehindALeaderIsCheckedAgainstTheVehiclesAheadOfIt) {
   const GapTracks tracks = gap_tracks(lane, gap, 6.0, no_accel);
   ASSERT_EQ(tracks.leaders.size(), 2u);
   EXPECT_TRUE(tracks.followers.empty());
-  const GapTracks leader_only{{}, {tracks.leaders[0]}, {}};
+  // Vehicle 1 at constant speed (as if vehicle 2 were not there) leaves the ego room.
+  const GapTracks leader_only{{}, {leader_track(lane[0], 0.0)}, {}};
   EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(6.0), leader_only, 0.0));
   EXPECT_FALSE(occupancy_clear(s, 0.0, -3.5, path, ego, OccupancyInstants::over(6.0), tracks, 0.0));
 }
@@ -101,6 +102,38 @@ TEST(OccupancyClear, AMergeKeepsDLatFromAVehicleAheadInTheNextLane) {
 // the hint that visits the last blocking instant first) saves work only: over a run of checks
 // like the planner's (several speed profiles, several kappa each, one memo throughout) every
 // answer equals the plain check's.
+// A leader cannot drive through the vehicle ahead of it. Leader at X = 0, 25 m/s; a vehicle
+// stopped at X = 200 (both 4.8 m long): the leader is predicted to brake uniformly,
+// 25^2 / (2 (200 - 4.8 - 2)) = 1.62 m/s2, and to stop 2 m (kLeaderStandoffM) behind it.
+//
+//   leader 25 m/s ->  . . . . . . . . . . . . . . [stops at 193.2] 2 m [stopped 200]
+TEST(LeaderTrack, ALeaderBehindAStoppedVehicleIsPredictedToStopBehindIt) {
+  const MainLaneVehicle leader = lane_vehicle(1, 0.0, 25.0), stopped = lane_vehicle(2, 200.0, 0.0);
+  EXPECT_NEAR(braking_behind_mps2(leader, stopped), 625.0 / (2.0 * 193.2), 1e-9);
+  const Track t = leader_track(leader, 0.0, &stopped);
+  EXPECT_NEAR(t.x_at(60.0), 193.2, 1e-6);
+  EXPECT_DOUBLE_EQ(t.v_at(60.0), 0.0);
+  // Alone, or seen braking harder than that, it is predicted as before.
+  EXPECT_DOUBLE_EQ(leader_track(leader, 0.0).x_at(10.0), 250.0);
+  EXPECT_NEAR(leader_track(leader, -5.0, &stopped).x_at(60.0), 62.5, 1e-6);
+}
+
+// Whatever the two vehicles' places, speeds and braking (the one ahead at least two car lengths
+// ahead, at constant speed or braking to a stop at the rate seen), the leader's predicted track
+// never comes closer to it than the standoff, bumper to bumper.
+RC_GTEST_PROP(LeaderTrack, APredictedLeaderNeverPassesTheVehicleAheadOfIt, ()) {
+  const MainLaneVehicle leader = lane_vehicle(1, 0.0, *rc::gen::inRange(0, 400) / 10.0);
+  const MainLaneVehicle ahead = lane_vehicle(2, *rc::gen::inRange(100, 3000) / 10.0, *rc::gen::inRange(0, 400) / 10.0);
+  const double observed_accel_mps2 = -*rc::gen::inRange(0, 100) / 10.0;
+  const double ahead_accel_mps2 = -*rc::gen::inRange(0, 100) / 10.0;
+  const Track t = leader_track(leader, observed_accel_mps2, &ahead, ahead_accel_mps2);
+  const Track a = leader_track(ahead, ahead_accel_mps2);  // as seen: constant, or braking to a stop
+  for (double time_s = 0.0; time_s <= 60.0; time_s += 0.05) {
+    const double room_m = a.x_at(time_s) - t.x_at(time_s) - ahead.length_m;
+    RC_ASSERT(room_m >= kLeaderStandoffM - 1e-6);
+  }
+}
+
 RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswer, ()) {
   const Scenario s = road_only();
   std::vector<MainLaneVehicle> lane;

@@ -22,12 +22,22 @@ double real_position_x_m(const ObservedTrace& t, const ObservedState& ego, doubl
          ve_star * tau;
 }
 
+// The ego's speed after tau under the bounded-rate model.
+double real_speed_mps(const ObservedTrace& t, const ObservedState& ego, double ve_star, double tau) {
+  const Limits& lim = t.vehicles[0].limits;
+  const double v = std::max(speed_of(ego), 0.0);
+  const double rate = ve_star >= v ? lim.accel_max_mps2 : lim.brake_min_mps2;
+  return ve_star >= v ? std::min(ve_star, v + rate * tau) : std::max(ve_star, v - rate * tau);
+}
+
 // RCPP ineq. (1): X_o + v_o rho/2 + a_o rho^2/8 <= X + v_e* rho/2 - D_lon, the follower as the
-// rear vehicle at its speed after accelerating for rho/2, the ego in front at v_e*.
-double ineq1_m(const ObservedTrace& t, double ego_x_m, const ObservedState& fo, int k, double ve, double rho) {
+// rear vehicle at its speed after accelerating for rho/2, the ego in front at v_ego (v_e* in the
+// paper's model, the speed it has really reached in the bounded-rate one).
+double ineq1_m(const ObservedTrace& t, double ego_x_m, const ObservedState& fo, int k, double ve, double rho,
+               double v_ego) {
   const Limits& lim = t.vehicles[k].limits;
   const double v_o = std::max(speed_of(fo), 0.0);
-  const double d_lon = rss_longitudinal_m({v_o + lim.accel_max_mps2 * rho / 2.0, std::max(ve, 0.0),
+  const double d_lon = rss_longitudinal_m({v_o + lim.accel_max_mps2 * rho / 2.0, std::max(v_ego, 0.0),
                                            t.vehicles[k].size.length_m, t.vehicles[0].size.length_m,
                                            t.params.rss.response_time_s, lim.accel_max_mps2, lim.brake_min_mps2,
                                            t.vehicles[0].limits.brake_max_mps2});
@@ -35,11 +45,13 @@ double ineq1_m(const ObservedTrace& t, double ego_x_m, const ObservedState& fo, 
   return ego_x_m + ve * rho / 2.0 - d_lon - lhs;
 }
 
-// RCPP ineq. (2) over tau: X + v_e* tau <= X_o + v_o tau - D_lon, the ego as the rear vehicle.
-double ineq2_m(const ObservedTrace& t, double ego_x_m, const ObservedState& lo, int k, double ve, double tau) {
+// RCPP ineq. (2) over tau: X + v_e* tau <= X_o + v_o tau - D_lon, the ego as the rear vehicle at
+// v_ego (as in ineq1_m).
+double ineq2_m(const ObservedTrace& t, double ego_x_m, const ObservedState& lo, int k, double ve, double tau,
+               double v_ego) {
   const double v_o = std::max(speed_of(lo), 0.0);
   const Limits& ego = t.vehicles[0].limits;
-  const double d_lon = rss_longitudinal_m({std::max(ve, 0.0), v_o, t.vehicles[0].size.length_m,
+  const double d_lon = rss_longitudinal_m({std::max(v_ego, 0.0), v_o, t.vehicles[0].size.length_m,
                                            t.vehicles[k].size.length_m, t.params.rss.response_time_s,
                                            ego.accel_max_mps2, ego.brake_min_mps2,
                                            t.vehicles[k].limits.brake_max_mps2});
@@ -59,8 +71,9 @@ double def1_1_margin_m(const ObservedTrace& t, std::size_t step, int follower, d
   if (follower < 1) return kInf;
   const ObservedState& ego = t.steps[step].vehicles[0];
   const ObservedState& fo = t.steps[step].vehicles[static_cast<std::size_t>(follower)];
-  return std::min(ineq1_m(t, ego.x_m, fo, follower, ve, rho),
-                  ineq1_m(t, real_position_x_m(t, ego, ve, 0.5 * rho), fo, follower, ve, rho));
+  return std::min(ineq1_m(t, ego.x_m, fo, follower, ve, rho, ve),
+                  ineq1_m(t, real_position_x_m(t, ego, ve, 0.5 * rho), fo, follower, ve, rho,
+                          real_speed_mps(t, ego, ve, 0.5 * rho)));
 }
 
 double def1_2_margin_m(const ObservedTrace& t, std::size_t step, int leader, double ve, double rho) {
@@ -68,8 +81,9 @@ double def1_2_margin_m(const ObservedTrace& t, std::size_t step, int leader, dou
   const ObservedState& ego = t.steps[step].vehicles[0];
   const ObservedState& lo = t.steps[step].vehicles[static_cast<std::size_t>(leader)];
   const auto at = [&](double f) {
-    return std::min(ineq2_m(t, ego.x_m, lo, leader, ve, f * rho),
-                    ineq2_m(t, real_position_x_m(t, ego, ve, f * rho), lo, leader, ve, f * rho));
+    return std::min(ineq2_m(t, ego.x_m, lo, leader, ve, f * rho, ve),
+                    ineq2_m(t, real_position_x_m(t, ego, ve, f * rho), lo, leader, ve, f * rho,
+                            real_speed_mps(t, ego, ve, f * rho)));
   };
   return std::min(at(1.0), at(0.5));
 }

@@ -151,10 +151,12 @@ void describe(const ObservedTrace& t, MergeAttempt& a) {
   a.observation = os.str();
 }
 
-// From a feasible reading, back over the window while the same gap stays feasible: the ego holds
-// the right of way from the start of that run (a planner that decided when the gap opened is
-// credited from then, and its lateral approach before the visible start is covered).
-// Strides back over the window (kScanStride steps at a time, the last stride step by step).
+// From a feasible reading, back while the same gap stays feasible, as far as the end of the
+// previous attempt (not only to the window's start): the ego holds the right of way from the
+// start of that run (a planner that decided when the gap opened is credited from then, and its
+// lateral approach before the visible start is covered; a slow merge, 12.6 s, decided 4.4 s
+// before its visible start was otherwise judged by Def. 1.3 for the time between).
+// Strides back (kScanStride steps at a time, the last stride step by step).
 void extend_back(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, std::size_t first) {
   std::size_t stride = kScanStride;
   while (a.def1.step > first) {
@@ -170,7 +172,7 @@ void extend_back(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, s
   }
 }
 
-void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double window_from_s) {
+void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double window_from_s, double credit_from_s) {
   const std::size_t mid_or_start = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s) : a.start_step;
   a.entered_gap = gap_around_ego(t, std::min(mid_or_start, t.steps.size() - 1));
   a.gap = a.entered_gap;
@@ -203,7 +205,7 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
       }
       if (r.interval.feasible()) {
         a.basis = RowBasis::kDef1;
-        extend_back(t, p, a, first);
+        extend_back(t, p, a, step_at_or_after(t, credit_from_s));
         a.decision_time_s = a.def1.time_s;
         return;
       }
@@ -219,8 +221,10 @@ MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p
   out.attempts = spans_of(phases);
   double previous_end_s = t.steps.empty() ? 0.0 : t.steps.front().time_s;
   for (MergeAttempt& a : out.attempts) {
-    judge(t, p, a, std::max(previous_end_s, std::min(a.start_time_s - p.merge_decision_window_s,
-                                                     approach_onset_s(t, p, a.start_step))));
+    judge(t, p, a,
+          std::max(previous_end_s,
+                   std::min(a.start_time_s - p.merge_decision_window_s, approach_onset_s(t, p, a.start_step))),
+          previous_end_s);
     describe(t, a);
     previous_end_s = a.end_time_s.value_or(a.start_time_s);
   }

@@ -44,6 +44,21 @@ TEST(Def1Gap, MarginsAtTheEgosOwnSpeed) {
   EXPECT_EQ(def1_2_margin_m(t, 0, -1, 20.0, 4.0), std::numeric_limits<double>::infinity());
 }
 
+// The ego at rest at X = 0, a follower at rest 10 m behind, rho = 4 s, v_e* = 9.1 m/s. The paper's
+// model puts the ego at 9.1 m/s from T_dec (18.2 m on by rho/2, D_lon 5.0 m: margin 19.2 m). In
+// the bounded-rate model it has reached 4 m/s and 4 m by rho/2 (a_accel^max 2 m/s2), and it is
+// at 4 m/s, not 9.1, that it must be D_lon ahead of the follower (4 m/s after accelerating):
+// D_lon = 4 * 0.5 + 0.25 + 5^2/8 - 4^2/16 + 4.8 = 9.175 m, margin 4 - 9.175 + 6 = 0.825 m.
+// (Taking v_e* for the braking distance there gave 5.0 m, and the progress rule demanded a merge
+// from rest that the bounded-rate model does not allow; a campaign finding.)
+TEST(Def1Gap, TheBoundedRateModelJudgesTheEgoAtTheSpeedItHasReached) {
+  Scenario s = base_scenario();
+  s.ego.speed_mps = 0.0;
+  s.vehicles = {vehicle(1, -10.0, 0.0)};
+  const ObservedTrace t = test::observed(s, constant_accel_trace(s, 0.0));
+  EXPECT_NEAR(def1_1_margin_m(t, 0, 1, 9.1, 4.0), 0.825, 1e-9);
+}
+
 TEST(Def1Gap, TheIntervalHoldsBothInequalitiesAndNothingOutsideItDoes) {
   const ObservedTrace t = gap_trace(-80.0, 60.0);
   const Def1Interval in = def1_interval(t, 0, {1, 2}, 4.0);

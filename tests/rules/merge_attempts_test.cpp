@@ -61,15 +61,16 @@ TEST(MergeAttempts, AStartWhereBothGapInequalitiesHoldHasTheRightOfWayByDefiniti
   EXPECT_TRUE(j->row.ego_holds_at(1.5));
 }
 
-TEST(MergeAttempts, TheRightOfWayIsCreditedNoEarlierThanTheDecisionWindow) {
-  // The same gap, the merge from t = 6 s (start 6.06 s): the window is [2.06, 6.06] s, and the gap
-  // feasible all along is credited from its first step.
+TEST(MergeAttempts, AGapFeasibleAllAlongIsCreditedFromBeforeTheDecisionWindow) {
+  // The same gap, the merge from t = 6 s (start 6.06 s): the window is [2.06, 6.06] s and the
+  // reading is taken in it, but the gap was feasible since t = 0 (no attempt before): a slow merge
+  // decided long before its visible start holds the right of way from its decision on.
   const Scenario s = gap_scenario(-80.0, 200.0);
   const auto j = test::judge(s, merging_from(s, 6.0, 8.0));
   const MergeAttempt& a = only_attempt(*j);
   EXPECT_EQ(a.basis, RowBasis::kDef1);
-  EXPECT_NEAR(a.decision_time_s, 6.06 - s.params.rules.merge_decision_window_s, 1e-9);
-  EXPECT_FALSE(j->row.ego_holds_at(2.0));
+  EXPECT_NEAR(a.decision_time_s, 0.0, 1e-9);
+  EXPECT_TRUE(j->row.ego_holds_at(0.5));
   EXPECT_TRUE(j->row.ego_holds_at(2.1));
 }
 

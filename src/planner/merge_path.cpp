@@ -16,8 +16,8 @@ double side_lane_exit_fraction(double ego_width_m, double lane_width_m) {
   return std::clamp(0.5 + ego_width_m / (2.0 * lane_width_m), 0.5 + 1e-3, 1.0 - kSigmoidEndFraction);
 }
 
-double side_exit_limit_x_m(const Scenario& s) {
-  return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - kSideExitMarginM;
+double side_exit_limit_x_m(const Scenario& s, double speed_mps) {
+  return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - std::max(kSideExitMarginM, kSideExitLagS * speed_mps);
 }
 
 double path_curvature_cap_per_m(const Scenario& s) {
@@ -39,7 +39,7 @@ KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, dou
   const PlannerParams& p = s.params.planner;
   const double before_m = pc_m - start_x_m;
   const double after_m = complete_by_x_m - pc_m;
-  const double exit_room_m = side_exit_limit_x_m(s) - pc_m;
+  const double exit_room_m = side_exit_limit_x_m(s, std::max(ramp.v0_mps, ramp.v_target_mps)) - pc_m;
   if (before_m <= 0.0 || after_m <= 0.0 || exit_room_m <= 0.0) return std::nullopt;
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
@@ -59,8 +59,8 @@ KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, dou
   return std::make_pair(lo, *hi);
 }
 
-Track follower_track(const MainLaneVehicle& f, double rho_s) {
-  const double a = f.limits.accel_max_mps2;
+Track follower_track(const MainLaneVehicle& f, double rho_s, double observed_accel_mps2) {
+  const double a = std::max(f.limits.accel_max_mps2, observed_accel_mps2);
   return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.width_m, f.limits};
 }
 
@@ -115,7 +115,7 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
   tracks.leaders.reserve(lane.size());
   for (const MainLaneVehicle& v : lane) {
     if (gap.follower && !lane_order_before(*gap.follower, v))
-      tracks.followers.push_back(follower_track(v, follower_window_s));
+      tracks.followers.push_back(follower_track(v, follower_window_s, observed_accel_mps2(v.id)));
     if (gap.leader && !lane_order_before(v, *gap.leader)) {
       const MainLaneVehicle* ahead = next_in_lane(lane, v);
       tracks.leaders.push_back(

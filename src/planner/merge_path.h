@@ -25,9 +25,12 @@ double half_span_times_kappa();
 double side_lane_exit_fraction(double ego_width_m, double lane_width_m);
 // The x the ego's centre may reach at most while its sigmoid still has `exit` left to cover:
 // the side lane's end minus half the ego length (spec §2: never pass the end in the side lane)
-// minus kSideExitMarginM for path-tracking lag (at 35 m/s, 0.1 s of lag is 3.5 m).
+// minus a margin for path-tracking lag: kSideExitMarginM, or kSideExitLagS of travel at
+// speed_mps when longer (an ego at 33 m/s crossed the lane line 10 m after its P_c and left
+// the road 2 mm past the side lane's end; a campaign finding).
 inline constexpr double kSideExitMarginM = 5.0;
-double side_exit_limit_x_m(const Scenario& s);
+inline constexpr double kSideExitLagS = 0.4;
+double side_exit_limit_x_m(const Scenario& s, double speed_mps = 0.0);
 
 // Trackability of a path at any speed: its curvature c stays within half the ego's steering
 // ability (tan(steer_max)/(2 wheelbase)) and keeps the kinematic sideslip atan(l_r c) below
@@ -62,8 +65,10 @@ struct Track {
   double v_at(double t_s) const { return motion.speed_at_mps(t_s); }
 };
 
-// The follower accelerates at its a_accel^max until rho/2 and then holds its speed (Def. 1.1).
-Track follower_track(const MainLaneVehicle& f, double rho_s);
+// The follower accelerates at its a_accel^max until rho/2 and then holds its speed (Def. 1.1);
+// one seen accelerating harder than that, at the rate seen (a follower racing beyond its declared
+// limit took the gap an ego planned to overtake it into; a campaign finding).
+Track follower_track(const MainLaneVehicle& f, double rho_s, double observed_accel_mps2 = 0.0);
 // The leader holds its speed (Def. 1.2) unless it is seen braking harder than
 // kLeaderBrakingMps2: then it is predicted to keep braking at that rate until it stops, since a
 // compliant leader may brake for a slower vehicle ahead of it (docs/planner.md); a rate beyond its

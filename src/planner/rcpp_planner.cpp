@@ -28,6 +28,10 @@ constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committ
 // at once, every cycle, against a leader that keeps braking would weave (docs/planner.md).
 constexpr double kMergeRetryAfterAbortS = 1.0;
 constexpr double kLongerMergeEveryS = 0.5;
+// An abort this near the side lane's centre (toward the main lane) holds the lateral position
+// instead of returning to the centre: well inside the 0.3 m the generator leaves between D_lat
+// and the lanes' centres at rest (fuzz/scenario_spec.cpp), and below the rules' merge start.
+constexpr double kHoldAfterAbortOffsetM = 0.1;
 // Braking seen within this long counts as braking now: a leader braking in bursts (a bounded
 // random driver, or one keeping its distance bang-bang) drew a new merge in each lull and an
 // abort in the next burst, and the ego wove (docs/planner.md "Leaders behind slow vehicles").
@@ -331,7 +335,8 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
       tracks.leaders.push_back(predicted_leader(w, lane, *l));
   } else {
     tracks.leaders.push_back(responder);
-    if (const auto f = neighbour(lane, i, -1)) tracks.followers.push_back(follower_track(*f, 2.0 * t_c));
+    if (const auto f = neighbour(lane, i, -1))
+      tracks.followers.push_back(follower_track(*f, 2.0 * t_c, observed_accel_mps2(w, f->id)));
   }
   const auto partner_x = [&](const ObservedVehicle& v, double t) {
     return v.id == o.id ? o.x_m + responder_ramp.distance_at_m(t) : constant_speed_x(v, t);
@@ -455,28 +460,45 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
 constexpr double kReturnPathMinOffsetM = 0.05;
 constexpr double kReturnTangentMinSpeedMps = 1.0;
 constexpr double kReturnLaneLineMarginM = 0.25;
+ReturnLimits return_limits(const WorldSnapshot& w) {
+  const Scenario& s = *w.scenario;
+  const double v = ego_speed_mps(w);
+  ReturnLimits limits;
+  limits.cap_curvature_per_m =
+      std::min(path_curvature_cap_per_m(s),
+               kPathSideslipMaxRad / std::abs(steady_sideslip_per_curvature_m(s.ego.dynamics, v)));
+  limits.comfort_curvature_per_m =
+      v >= kReturnTangentMinSpeedMps ? s.params.planner.lat_accel_comfort_mps2 / (v * v) : limits.cap_curvature_per_m;
+  limits.y_max_m = -0.5 * s.road.lane_width_m - kReturnLaneLineMarginM;
+  return limits;
+}
+
+// The ego's direction of travel as a slope dY/dX (its heading when nearly at rest).
+double travel_slope(const WorldSnapshot& w) {
+  const double v = ego_speed_mps(w);
+  return v >= kReturnTangentMinSpeedMps ? ego_lat_speed_mps(w) / v : std::tan(w.ego.yaw_rad);
+}
+
 std::vector<PathPoint> RcppPlanner::side_lane_path(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
   const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + tracked_path_ahead_m(w);
+  if (hold_pending_) {  // the first cycle after a shallow abort: stop the lateral motion, no swing back
+    hold_pending_ = false;
+    if (travel_slope(w) > 0.0) {
+      return_ = plan_lateral_hold(w.ego.x_m, w.ego.y_m, travel_slope(w), return_limits(w));
+      hold_y_m_ = return_->back.y_at_m(return_->end_x_m());
+    }
+  }
   if (return_ && w.ego.x_m < return_->end_x_m()) return sample_return_path(*return_, from_x, to_x, kPathStepM);
   return_.reset();
+  if (hold_y_m_) return sample_straight(*hold_y_m_, from_x, to_x, kPathStepM);
   const double to_centre_m = s.road.side_lane_y_m() - w.ego.y_m;
   if (std::abs(to_centre_m) < kReturnPathMinOffsetM) return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
   // An ego farther from the main lane than the side lane's centre holds its offset: moving toward
   // the main lane only to centre itself can make it laterally unsafe with a vehicle there (with a
   // long response time, D_lat grows with that lateral speed).
   if (to_centre_m > 0.0) return sample_straight(w.ego.y_m, from_x, to_x, kPathStepM);
-  const double v = ego_speed_mps(w);
-  const bool moving = v >= kReturnTangentMinSpeedMps;
-  ReturnLimits limits;
-  limits.cap_curvature_per_m =
-      std::min(path_curvature_cap_per_m(s),
-               kPathSideslipMaxRad / std::abs(steady_sideslip_per_curvature_m(s.ego.dynamics, v)));
-  limits.comfort_curvature_per_m =
-      moving ? s.params.planner.lat_accel_comfort_mps2 / (v * v) : limits.cap_curvature_per_m;
-  limits.y_max_m = -0.5 * s.road.lane_width_m - kReturnLaneLineMarginM;
-  return_ = plan_return_path(w.ego.x_m, w.ego.y_m, moving ? ego_lat_speed_mps(w) / v : std::tan(w.ego.yaw_rad),
-                             s.road.side_lane_y_m(), limits);
+  return_ = plan_return_path(w.ego.x_m, w.ego.y_m, travel_slope(w), s.road.side_lane_y_m(), return_limits(w));
   return sample_return_path(*return_, from_x, to_x, kPathStepM);
 }
 
@@ -487,7 +509,8 @@ WorldSnapshot RcppPlanner::with_braking_memory(const WorldSnapshot& w) {
     const auto it = seen_braking_.find(o.id);
     if (it == seen_braking_.end() || accel <= it->second.accel_mps2 || w.time_s - it->second.time_s > kBrakingMemoryS)
       seen_braking_[o.id] = SeenBraking{accel, w.time_s};
-    o.state.accel_mps2 = std::min(o.state.accel_mps2, seen_braking_[o.id].accel_mps2);
+    const double remembered_mps2 = seen_braking_[o.id].accel_mps2;
+    if (remembered_mps2 < 0.0) o.state.accel_mps2 = std::min(o.state.accel_mps2, remembered_mps2);
   }
   return out;
 }
@@ -512,6 +535,10 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
       note = "merge aborted (P_c bounds crossed or lane occupied at the predicted positions); ";
       merge_.reset();
       no_merge_before_s_ = w.time_s + kMergeRetryAfterAbortS;
+      // Barely begun: hold the lateral position rather than swing back to the centre and out
+      // again at the next merge (each swing reverses the lateral speed; a random leader's bursts
+      // drew a merge, an abort and a swing back every few seconds: smoothness_oscillation).
+      hold_pending_ = w.ego.y_m - s.road.side_lane_y_m() <= kHoldAfterAbortOffsetM;
     }
   }
   PlanOutput out = merged_ ? keep_main_lane(w) : merge_ ? follow_merge(w) : decide_in_side_lane(w);
@@ -559,8 +586,9 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
       x_m = o.x_m + accepted.distance_at_m(t);
       v_mps = accepted.speed_at_mps(t);
     } else if (follower) {
-      v_mps = o.speed_mps + o.limits.accel_max_mps2 * t;
-      x_m = o.x_m + o.speed_mps * t + 0.5 * o.limits.accel_max_mps2 * t * t;
+      const double a = std::max(o.limits.accel_max_mps2, observed_accel_mps2(w, o.id));  // follower_track
+      v_mps = o.speed_mps + a * t;
+      x_m = o.x_m + o.speed_mps * t + 0.5 * a * t * t;
     } else {
       const Track ahead = predicted_leader(w, lane, o);
       x_m = ahead.x_at(t);
@@ -680,6 +708,8 @@ PlanOutput RcppPlanner::keep_main_lane(const WorldSnapshot& w) {
 PlanOutput RcppPlanner::start_merge(const WorldSnapshot& w, const Sigmoid& sig, double speed_mps, Decision d) {
   merge_ = Merge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m)};
   return_.reset();
+  hold_pending_ = false;
+  hold_y_m_.reset();
   return follow_merge(w);
 }
 

@@ -94,7 +94,9 @@ class RcppPlanner : public Planner {
   bool merged_ = false;
   std::optional<Merge> merge_;
   std::optional<Pending> pending_;
-  std::optional<ReturnPath> return_;  // back to the side lane's centre, kept until its end
+  std::optional<ReturnPath> return_;  // back to the side lane's centre (or a hold), kept until its end
+  bool hold_pending_ = false;          // a shallow abort: the next side-lane path holds (plan_lateral_hold)
+  std::optional<double> hold_y_m_;     // after that hold: the Y kept until the next merge
   std::map<int, double> retry_after_s_;  // partner id -> earliest time of a new request
   double no_merge_before_s_ = -1.0;       // after an abort: earliest time of a new merge
   double next_longer_merge_s_ = -1.0;     // next time the longer merge durations are searched

@@ -51,25 +51,14 @@ double ReturnPath::y_at_m(double x_m) const {
   return back.y_at_m(x_m);
 }
 
-ReturnPath plan_return_path(double x0_m, double y0_m, double slope0, double y_end_m, const ReturnLimits& limits) {
-  assert(y_end_m < y0_m && std::isfinite(slope0));
-  assert(limits.cap_curvature_per_m > 0.0 && limits.comfort_curvature_per_m > 0.0);
-  const double bound_per_m = std::min(limits.comfort_curvature_per_m, limits.cap_curvature_per_m);
-  ReturnPath p{x0_m, y0_m, slope0, 0.0, 0.0, {}};
-  double start_x_m = x0_m, start_y_m = y0_m, start_slope = slope0, start_curvature_per_m = 0.0;
-  if (slope0 > 0.0) {
-    // A stop at the bound rises slope0^2 / (2 c); sharpen it to peak at y_max if that is higher.
-    const double room_m = limits.y_max_m - y0_m;
-    const double needed_per_m = room_m > 0.0 ? slope0 * slope0 / (2.0 * room_m) : limits.cap_curvature_per_m;
-    p.stop_curvature_per_m = std::max(bound_per_m, std::min(needed_per_m, limits.cap_curvature_per_m));
-    p.stop_length_m = slope0 / p.stop_curvature_per_m;
-    start_x_m += p.stop_length_m;
-    start_y_m += 0.5 * slope0 * p.stop_length_m;
-    start_slope = 0.0;
-    start_curvature_per_m = -std::min(p.stop_curvature_per_m, bound_per_m);
-  }
+namespace {
+
+// The shortest quintic from (x, y, slope 0 or s, curvature c) to level at y_end whose |y''| stays
+// within bound_per_m (the header's "shortest within a bound").
+Quintic shortest_to_level(double x_m, double y_m, double slope, double curvature_per_m, double y_end_m,
+                          double bound_per_m) {
   const auto quintic_of = [&](double length_m) {
-    return quintic_to_level(start_x_m, start_y_m, start_slope, start_curvature_per_m, y_end_m, length_m);
+    return quintic_to_level(x_m, y_m, slope, curvature_per_m, y_end_m, length_m);
   };
   double too_short_m = 0.0, long_enough_m = kReturnMinLengthM;
   const auto fits = [&](double length_m) { return peak_curvature_per_m(quintic_of(length_m)) <= bound_per_m; };
@@ -81,7 +70,55 @@ ReturnPath plan_return_path(double x0_m, double y0_m, double slope0, double y_en
     const double mid_m = 0.5 * (too_short_m + long_enough_m);
     (fits(mid_m) ? long_enough_m : too_short_m) = mid_m;
   }
-  p.back = quintic_of(long_enough_m);
+  return quintic_of(long_enough_m);
+}
+
+// Step 1 of the header: the stop of the lateral motion toward the main lane, when there is one.
+// Returns the path so far and sets where the next part starts.
+ReturnPath lateral_stop(double x0_m, double y0_m, double slope0, const ReturnLimits& limits, double& start_x_m,
+                        double& start_y_m, double& start_slope, double& start_curvature_per_m) {
+  const double bound_per_m = std::min(limits.comfort_curvature_per_m, limits.cap_curvature_per_m);
+  ReturnPath p{x0_m, y0_m, slope0, 0.0, 0.0, {}};
+  start_x_m = x0_m, start_y_m = y0_m, start_slope = slope0, start_curvature_per_m = 0.0;
+  if (slope0 > 0.0) {
+    // A stop at the bound rises slope0^2 / (2 c); sharpen it to peak at y_max if that is higher.
+    const double room_m = limits.y_max_m - y0_m;
+    const double needed_per_m = room_m > 0.0 ? slope0 * slope0 / (2.0 * room_m) : limits.cap_curvature_per_m;
+    p.stop_curvature_per_m = std::max(bound_per_m, std::min(needed_per_m, limits.cap_curvature_per_m));
+    p.stop_length_m = slope0 / p.stop_curvature_per_m;
+    start_x_m += p.stop_length_m;
+    start_y_m += 0.5 * slope0 * p.stop_length_m;
+    start_slope = 0.0;
+    start_curvature_per_m = -std::min(p.stop_curvature_per_m, bound_per_m);
+  }
+  return p;
+}
+
+}  // namespace
+
+ReturnPath plan_return_path(double x0_m, double y0_m, double slope0, double y_end_m, const ReturnLimits& limits) {
+  assert(y_end_m < y0_m && std::isfinite(slope0));
+  assert(limits.cap_curvature_per_m > 0.0 && limits.comfort_curvature_per_m > 0.0);
+  double x_m = 0.0, y_m = 0.0, slope = 0.0, curvature_per_m = 0.0;
+  ReturnPath p = lateral_stop(x0_m, y0_m, slope0, limits, x_m, y_m, slope, curvature_per_m);
+  p.back = shortest_to_level(x_m, y_m, slope, curvature_per_m, y_end_m,
+                             std::min(limits.comfort_curvature_per_m, limits.cap_curvature_per_m));
+  return p;
+}
+
+ReturnPath plan_lateral_hold(double x0_m, double y0_m, double slope0, const ReturnLimits& limits) {
+  assert(slope0 > 0.0 && limits.cap_curvature_per_m > 0.0 && limits.comfort_curvature_per_m > 0.0);
+  // The quintic from slope0 (curvature 0) to level that rises half of slope0 * length: its slope,
+  // slope0 (1 - u)^2 (1 + 2u) at u = d / length, never changes sign, and its |y''| peaks at
+  // 1.5 slope0 / length (mid-way). So length = 1.5 slope0 / c and the rise 0.75 slope0^2 / c for
+  // the curvature bound c, sharpened (up to the cap) where the rise would reach y_max.
+  const double bound_per_m = std::min(limits.comfort_curvature_per_m, limits.cap_curvature_per_m);
+  const double room_m = limits.y_max_m - y0_m;
+  const double needed_per_m = room_m > 0.0 ? 0.75 * slope0 * slope0 / room_m : limits.cap_curvature_per_m;
+  const double c_per_m = std::max(bound_per_m, std::min(needed_per_m, limits.cap_curvature_per_m));
+  const double length_m = 1.5 * slope0 / c_per_m;
+  ReturnPath p{x0_m, y0_m, slope0, 0.0, 0.0, {}};
+  p.back = quintic_to_level(x0_m, y0_m, slope0, 0.0, y0_m + 0.5 * slope0 * length_m, length_m);
   return p;
 }
 

@@ -105,6 +105,35 @@ RC_GTEST_PROP(ReturnPath, StopsTheMotionTowardTheLaneBelowTheLimitWhenTheCapAllo
   RC_ASSERT(highest <= peak + 1e-9);
 }
 
+//             y_max ..............................
+//   hold level   ___________________________
+//  ego -> y0  _-'
+// A hold (after a shallow abort) starts along the ego, never moves back (the lateral speed keeps
+// its sign: no reversal for the smoothness rule to count), ends level, keeps |y''| within the
+// comfort bound unless it had to sharpen to stay below y_max, and stays below y_max when the cap
+// allows it.
+RC_GTEST_PROP(ReturnPath, AHoldStopsTheMotionTowardTheLaneWithoutMovingBack, ()) {
+  ReturnCase c = gen_return_case();
+  c.slope0 = *rc::gen::inRange(1, 150) / 1000.0;
+  const ReturnPath p = plan_lateral_hold(0.0, c.y0, c.slope0, c.limits);
+  RC_ASSERT(std::abs(p.y_at_m(0.0) - c.y0) < 1e-12);
+  RC_ASSERT(std::abs((p.y_at_m(1e-5) - c.y0) / 1e-5 - c.slope0) < 1e-4);
+  const double level = p.y_at_m(p.end_x_m());
+  RC_ASSERT(std::abs(p.y_at_m(p.end_x_m() + 50.0) - level) < 1e-12);
+  double previous = c.y0;
+  for (int i = 1; i <= 1000; ++i) {
+    const double y = p.y_at_m(p.end_x_m() * i / 1000.0);
+    RC_ASSERT(y >= previous - 1e-12);
+    previous = y;
+  }
+  const double bound = std::min(c.limits.comfort_curvature_per_m, c.limits.cap_curvature_per_m);
+  RC_ASSERT(peak_curvature_per_m(p.back) <= std::max(bound, c.limits.cap_curvature_per_m) * (1 + 1e-9));
+  const double comfortable_rise_m = 0.75 * c.slope0 * c.slope0 / bound;
+  if (c.y0 + comfortable_rise_m <= c.limits.y_max_m) RC_ASSERT(peak_curvature_per_m(p.back) <= bound * (1 + 1e-9));
+  const double sharpest_rise_m = 0.75 * c.slope0 * c.slope0 / c.limits.cap_curvature_per_m;
+  if (c.y0 + sharpest_rise_m <= c.limits.y_max_m) RC_ASSERT(level <= c.limits.y_max_m + 1e-9);
+}
+
 TEST(ReturnPath, LevelStartIsTheQuinticAtTheComfortBound) {
   // From rest 1 m above the centre at 25 m/s with 1.5 m/s2: max |y''| of the rest-to-rest
   // quintic is 10 sqrt(3)/3 |dy| / L^2, so L = sqrt(5.7735 / (1.5 / 625)) = 49.0 m.

@@ -48,6 +48,13 @@ Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
                      s.params.rss.response_time_s, rho_s, s.road.speed_limit_mps};
 }
 
+// The merge duration RCPP plans with: its own rho_m, but never below the rules' (the traffic
+// code's rho_m, public like the speed limit): a merge planned for a shorter rho than the judge's
+// is a merge into a gap the judge finds too short (spec §8; docs/planner.md).
+double planned_rho_m_s(const Scenario& s) {
+  return std::max(s.params.planner.merge_duration_s, s.params.rules.merge_duration_s);
+}
+
 CoopContext coop_context(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
   // v_o* with slack: solved exactly, ineq. (3) left the responder 0.29 m inside the ego's safe
@@ -57,7 +64,7 @@ CoopContext coop_context(const WorldSnapshot& w) {
                      s.ego.size.length_m,
                      s.ego.limits,
                      s.params.rss.response_time_s,
-                     s.params.planner.merge_duration_s,
+                     planned_rho_m_s(s),
                      s.params.planner.comm_threshold_s,
                      s.road.speed_limit_mps,
                      s.ego.v2v.latency_s,
@@ -413,8 +420,8 @@ double standstill_merge_length_m(const Scenario& s) {
 
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why) {
   const Scenario& s = *w.scenario;
-  const double rho_base_s = merge_duration_base_s(s.params.planner.merge_duration_s, s.road.lane_width_m,
-                                                  s.params.planner.lat_accel_comfort_mps2);
+  const double rho_base_s =
+      merge_duration_base_s(planned_rho_m_s(s), s.road.lane_width_m, s.params.planner.lat_accel_comfort_mps2);
   for (const double factor : kMergeDurationFactors) {
     if ((factor == 1.0) != (durations == MergeDurations::kRhoM)) continue;
     std::string this_why;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "rules/collision_monitor.h"
+#include "rules/declared_limits_monitor.h"
 #include "rules/definition1_monitor.h"
 #include "rules/definition2_monitor.h"
 #include "rules/liability.h"
@@ -47,6 +48,7 @@ const std::vector<MonitorEntry>& rule_monitors() {
       {"smoothness_oscillation", monitor_smoothness_oscillation},
       {"sideslip", monitor_sideslip},
       {"progress", monitor_progress},
+      {"declared_limits", monitor_declared_limits},
   };
   return monitors;
 }

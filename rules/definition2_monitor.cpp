@@ -9,11 +9,6 @@ namespace mg {
 
 namespace {
 
-// Trace times are sums of k steps and t_r + rho_c is computed another way: the two differ by
-// rounding (~1e-15 s) when they are the same instant. Closed windows of Definition 2 include such
-// ties.
-constexpr double kTieS = 1e-9;
-
 // The ego's first merge midpoint after time_s: from then on the ego is in the lane and the
 // RSS rules, not Definition 2, govern the pair.
 double merge_midpoint_after(const MergePhases& phases, double time_s) {
@@ -45,7 +40,7 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
     const double end = std::min(merge_midpoint_after(ctx.phases, x.accept_time_s),
                                 x.request_time_s + rho_c + ctx.params.merge_duration_s);
     bool reached = false;
-    for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end; ++i) {
+    for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end + kTieS; ++i) {
       const double t = steps[i].time_s;
       const double v = speed_of(state_of(steps[i], k));
       reached = reached || (ahead ? v <= v_star + tol : v >= v_star - tol);
@@ -57,7 +52,7 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
                   : (v0 + lim.accel_max_mps2 * (t - x.accept_time_s)) + tol - v;
         required = ahead ? v0 - lim.brake_max_mps2 * (t - x.accept_time_s) : v0 + lim.accel_max_mps2 * (t - x.accept_time_s);
       }
-      if (t >= deadline) {
+      if (t >= deadline - kTieS) {
         const double yield = ahead ? v_star + ctx.params.yield_speed_tolerance_mps - v
                                    : v - (v_star - ctx.params.yield_speed_tolerance_mps);
         if (yield < m) {
@@ -70,7 +65,7 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
         std::ostringstream os;
         os << party_name(partner) << " accepted the Def. 2." << (ahead ? "1" : "2") << " request of t = "
            << x.request_time_s << " s (v_o* = " << v_star << " m/s) but drove at " << v << " m/s at t = " << t
-           << " s (" << (t >= deadline && m < 0.0 && (ahead ? v > v_star : v < v_star) ? "did not yield"
+           << " s (" << (t >= deadline - kTieS && m < 0.0 && (ahead ? v > v_star : v < v_star) ? "did not yield"
                          : ahead ? "braked harder than b_max" : "accelerated harder than a_acc")
            << ")";
         acc.set_detail(os.str());

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "rules/check.h"
+#include "rules/monitor.h"
 
 namespace mg {
 
@@ -18,10 +19,6 @@ std::string to_string(RowBasis b) {
 }
 
 namespace {
-
-// Trace times are sums of steps, deadlines are computed another way: the same instant may differ
-// by rounding. Closed windows include such ties.
-constexpr double kTieS = 1e-9;
 
 std::size_t step_at_or_after(const ObservedTrace& t, double time_s) {
   const auto it = std::lower_bound(t.steps.begin(), t.steps.end(), time_s - kTieS,
@@ -151,6 +148,17 @@ void describe(const ObservedTrace& t, MergeAttempt& a) {
   a.observation = os.str();
 }
 
+// `around` and, after it, the lane gaps just behind and just ahead of it at `step`.
+std::vector<GapIndices> with_neighbours(const ObservedTrace& t, std::size_t step, const GapIndices& around) {
+  const std::vector<GapIndices> lane = lane_gaps(t, step);
+  std::vector<GapIndices> out = {around};
+  const auto it = std::find(lane.begin(), lane.end(), around);
+  if (it == lane.end()) return out;
+  if (it != lane.begin()) out.push_back(*(it - 1));
+  if (it + 1 != lane.end()) out.push_back(*(it + 1));
+  return out;
+}
+
 // From a feasible reading, back while the same gap stays feasible, as far as the end of the
 // previous attempt (not only to the window's start): the ego holds the right of way from the
 // start of that run (a planner that decided when the gap opened is credited from then, and its
@@ -191,11 +199,19 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
   for (std::size_t i = last + kScanStride; i >= first + kScanStride;) {
     i -= kScanStride;
     // The gap the ego entered, then the one around it at i (a follower may have raced past it
-    // since, changing the gap it entered). Never a gap the ego was neither in nor entered: the
-    // paper's model puts the ego at v_e* at once, so "behind the follower at v_e* = 0" would
-    // otherwise grant a cut-in ahead of that follower.
+    // since, changing the gap it entered). Never a gap the ego was neither in nor entered, except
+    // for an attempt whose body has not entered the main lane yet: the gap it will enter is not
+    // known, and it may be the one behind the vehicle just behind the ego, which it lets pass, or
+    // ahead of the vehicle just ahead, which it overtakes (a planner that decided either was
+    // otherwise never credited when its visible start came while that vehicle was alongside).
+    // Each inequality must hold under the bounded-rate model too, so "behind a vehicle alongside
+    // at v_e* = 0 at once" is not granted (docs/spec.md §8).
     std::vector<GapIndices> gaps = {a.entered_gap};
-    if (const GapIndices around = gap_around_ego(t, i); !(around == a.entered_gap)) gaps.push_back(around);
+    const GapIndices around = gap_around_ego(t, i);
+    const std::vector<GapIndices> candidates =
+        a.entry_step ? std::vector<GapIndices>{around} : with_neighbours(t, i, around);
+    for (const GapIndices& g : candidates)
+      if (std::find(gaps.begin(), gaps.end(), g) == gaps.end()) gaps.push_back(g);
     for (const GapIndices& gap : gaps) {
       const Def1Reading r = read_def1(t, p, a, gap, i);
       if (!a.def1_read || r.interval.feasible() || r.min_margin_m() > a.def1.min_margin_m()) {

@@ -98,6 +98,11 @@ bool ego_rear_in_rss_danger(const MonitorContext& ctx, std::size_t step);
 
 inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
 
+// Trace times are sums of steps and deadlines are computed another way: the same instant may
+// differ by rounding (~1e-15 s). Closed windows and deadlines include such ties (spec §8, review
+// point 16).
+inline constexpr double kTieS = 1e-9;
+
 }  // namespace mg
 
 namespace mg {

@@ -117,7 +117,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
       const ObservedState& rear = state_of(st, g.rear);
       std::string why;
       if (e.breach == kNobody) {
-        if (last_overbrake[g.front] >= e.blame_time_s - T) {
+        if (last_overbrake[g.front] >= e.blame_time_s - T - kTieS) {
           e.breach = party_of(s, g.front);
           why = describe(s, g.front) + " braked harder than its declared b_max " +
                 std::to_string(limits_of(s, g.front).brake_max_mps2) + " m/s2 while " +
@@ -131,7 +131,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
              << limits_of(s, g.rear).accel_max_mps2 << " m/s2, while the situation was dangerous (since t = "
              << e.blame_time_s << " s)";
           why = os.str();
-        } else if (e.lateral_entrance && !ctx.row.ego_held_within(e.blame_time_s - T, e.blame_time_s)) {
+        } else if (e.lateral_entrance && !ctx.row.ego_held_within(e.blame_time_s - T - kTieS, e.blame_time_s + kTieS)) {
           // An ego that held the right of way within the last T (it aborted its merge) is still
           // within its response time: its lateral motion is then rss_lateral's to judge. An ego
           // still within merge_start_offset_m of its own lane's centre is not cutting in yet,

@@ -828,8 +828,13 @@ PlanOutput RcppPlanner::decide_in_side_lane(const WorldSnapshot& w) {
     out.decision.time_s = w.time_s;
     return out;
   }
-  out.target_speed_mps = std::min(v_e, halt_cap);
-  out.accel_limit_mps2 = brake_limit;
+  // Def. 1.3 asks for a halt before the side lane's end, not at once: an ego slower than the
+  // standstill-merge speed rolls on toward the halt point at that speed (within the halt cap).
+  // One at rest far from the end stayed there, while the gap ahead of a stopped follower, open
+  // to anyone under way, was not to an ego that had to merge within rho of standing still
+  // (progress; a campaign finding).
+  out.target_speed_mps = std::min(std::max(v_e, kStandstillMergeSpeedMps), halt_cap);
+  out.accel_limit_mps2 = std::max(brake_limit, accel_limit_toward(s, v_e, out.target_speed_mps));
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kDef1Halt;
   out.decision.reason = note + "Def. 1.3: no feasible gap (" + why + "); braking to halt by x = " +

@@ -61,6 +61,33 @@ TEST(MergeAttempts, AStartWhereBothGapInequalitiesHoldHasTheRightOfWayByDefiniti
   EXPECT_TRUE(j->row.ego_holds_at(1.5));
 }
 
+// The ego at 20 m/s eases toward the lane from t = 1 s (0.3 m/s, still in the side lane when the
+// 3 s trace ends); vehicle 1, 20 m behind at 30 m/s, is about to pass it:
+//
+//   t = 1.3 s   main lane     [1] 19 m --> 30 m/s
+//               side lane                  [ego] 26 m --> 20 m/s, easing left
+//
+// Around the ego at its start is the gap ahead of vehicle 1, which fails ineq. (1.1). The ego has
+// not entered the lane, so the gap it will enter is not known: the gap just behind vehicle 1, by
+// ineq. (1.2) for v_e* of about 10 m/s under both position models, grants it the right of way
+// (it lets vehicle 1 pass and merges behind it).
+TEST(MergeAttempts, AnAttemptNotYetInTheLaneIsCreditedForTheGapBehindTheVehicleAboutToPassIt) {
+  Scenario s = base_scenario();
+  s.vehicles = {vehicle(1, -20.0, 30.0)};
+  const auto j = test::judge(s, test::with_lateral_move(constant_accel_trace(s, 3.0), 1.0, 0.3));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_FALSE(a.entry_step.has_value());
+  EXPECT_EQ(a.entered_gap, (GapIndices{1, -1}));
+  EXPECT_EQ(a.basis, RowBasis::kDef1);
+  EXPECT_EQ(a.gap, (GapIndices{-1, 1}));
+  EXPECT_GE(a.def1.margin_12_m, 0.0);
+  // Once it has entered the lane, only the gap it entered (and the one around it) counts.
+  const auto entered = test::judge(s, test::with_lateral_move(constant_accel_trace(s, 3.0), 0.0, 1.75));
+  const MergeAttempt& b = only_attempt(*entered);
+  EXPECT_TRUE(b.entry_step.has_value());
+  EXPECT_NE(b.gap, (GapIndices{-1, 1}));
+}
+
 TEST(MergeAttempts, AGapFeasibleAllAlongIsCreditedFromBeforeTheDecisionWindow) {
   // The same gap, the merge from t = 6 s (start 6.06 s): the window is [2.06, 6.06] s and the
   // reading is taken in it, but the gap was feasible since t = 0 (no attempt before): a slow merge

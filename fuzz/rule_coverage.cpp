@@ -11,7 +11,8 @@ const char* const kNoV2vRequests =
     "the planner never sends a V2V request, and Definition 2's rules judge the ego's requests and what follows them";
 std::map<std::string, std::string> definition2_rules() {
   std::map<std::string, std::string> out;
-  for (const char* id : {"def2_1a_request", "def2_1b_responder", "def2_2a_ego_brake", "def2_2b_responder", "def2_3_fallback"})
+  for (const char* id : {"def2_1a_request", "def2_1b_responder", "def2_2a_ego_brake", "def2_2b_responder", "def2_3_fallback",
+                         "def2_request_sound", "def2_positions"})
     out[id] = kNoV2vRequests;
   return out;
 }

@@ -8,6 +8,7 @@
 #include "rules/collision_monitor.h"
 #include "rules/declared_limits_monitor.h"
 #include "rules/definition1_monitor.h"
+#include "rules/definition2_inequalities.h"
 #include "rules/definition2_monitor.h"
 #include "rules/liability.h"
 #include "rules/merge_phases.h"
@@ -41,6 +42,8 @@ const std::vector<MonitorEntry>& rule_monitors() {
       {"def2_2a_ego_brake", monitor_def2_2a_ego_brake},
       {"def2_2b_responder", monitor_def2_2b_responder},
       {"def2_3_fallback", monitor_def2_3_fallback},
+      {"def2_request_sound", monitor_def2_request_sound},
+      {"def2_positions", monitor_def2_positions},
       {"sigmoid_pc_bounds", monitor_sigmoid_pc_bounds},
       {"collision", monitor_collision},
       {"on_road", monitor_on_road},

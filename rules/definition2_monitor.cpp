@@ -7,14 +7,12 @@
 
 namespace mg {
 
-namespace {
-
-// The ego's first merge midpoint after time_s: from then on the ego is in the lane and the
-// RSS rules, not Definition 2, govern the pair.
 double merge_midpoint_after(const MergePhases& phases, double time_s) {
   const std::optional<MergePhaseEvent> e = phases.first(MergePhaseKind::kMidpoint, time_s);
   return e ? e->time_s : std::numeric_limits<double>::infinity();
 }
+
+namespace {
 
 // Def. 2.1B / 2.2B: the responder of an accepted request changes speed toward v_o* at most at
 // its b_max (2.1: braking harder than b_min is a legal RSS response, and b_min only bounds what
@@ -104,12 +102,6 @@ MonitorOutput monitor_def2_1a_request(const MonitorContext& ctx) {
 MonitorOutput monitor_def2_1b_responder(const MonitorContext& ctx) { return monitor_responder(ctx, CoopCase::kEgoAhead); }
 MonitorOutput monitor_def2_2b_responder(const MonitorContext& ctx) { return monitor_responder(ctx, CoopCase::kEgoBehind); }
 
-namespace {
-
-// When the ego's Def. 2.2A window [t_r, t_r + rho_c] ends early: at a refusal delivered to the
-// ego (Def. 2.3 then sends it back to Definition 1), or at the first step at which the ego is the
-// rear vehicle of an RSS-dangerous pair (the RSS proper response, braking at least b_min and up
-// to b_max, then governs its speed; rss_longitudinal judges it).
 double def2_2a_window_end_s(const MonitorContext& ctx, const CoopExchange& x) {
   const double rho_c = ctx.params.comm_threshold_s;
   double end = x.request_time_s + rho_c;
@@ -127,8 +119,6 @@ double def2_2a_window_end_s(const MonitorContext& ctx, const CoopExchange& x) {
   }
   return end;
 }
-
-}  // namespace
 
 // Def. 2.2A: after its request the ego brakes at most b_min during rho_c (ineq. (4) counts on it),
 // unless the partner refused or an RSS danger with the ego behind came first.

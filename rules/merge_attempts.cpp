@@ -125,6 +125,27 @@ std::optional<CoopExchange> accepted_exchange(const ObservedTrace& t, const Rule
   return found;
 }
 
+// Definition 2 grants the right of way toward the partner; the gap's other vehicle stays
+// Definition 1's (spec §8, review point 15). At the request: for 2.1 (ego ahead of o) the vehicle
+// ahead of o must satisfy ineq. (1.2) over rho_c + rho_m with the ego at its speed; for 2.2 the
+// vehicle behind o must satisfy ineq. (1.1) over 2 rho_c + rho_m with the ego at its speed after
+// braking at b_min for rho_c.
+bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x) {
+  const std::size_t i = std::min(step_at_or_after(t, x.request_time_s), t.steps.size() - 1);
+  const int k = t.index_of(x.request->to_id);
+  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
+  const double v_e = std::max(0.0, t.steps[i].vehicles[0].vx_mps);
+  const double rho_c = p.comm_threshold_s, rho_m = p.merge_duration_s;
+  for (const GapIndices& g : lane_gaps(t, i)) {
+    if (ahead && g.follower == k) return def1_2_margin_m(t, i, g.leader, v_e, rho_c + rho_m) >= 0.0;
+    if (!ahead && g.leader == k) {
+      const double v_after = std::max(0.0, v_e - t.vehicles[0].limits.brake_min_mps2 * rho_c);
+      return def1_1_margin_m(t, i, g.follower, v_after, 2.0 * rho_c + rho_m) >= 0.0;
+    }
+  }
+  return true;
+}
+
 std::string gap_text(const ObservedTrace& t, const GapIndices& g) {
   const auto side = [&](int k) { return k < 1 ? std::string("open") : party_name(t.vehicles[static_cast<std::size_t>(k)].id); };
   return "(follower " + side(g.follower) + ", leader " + side(g.leader) + ")";
@@ -187,7 +208,7 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
   const std::size_t end_step = a.end_time_s ? step_at_or_after(t, *a.end_time_s) : t.steps.size();
   a.entry_step = entry_step_of(t, p, a.start_step, end_step + 1);
   if (a.entry_step) a.entry_time_s = t.steps[*a.entry_step].time_s;
-  if (const auto x = accepted_exchange(t, p, a, window_from_s, true)) {
+  if (const auto x = accepted_exchange(t, p, a, window_from_s, true); x && other_gap_vehicle_clear(t, p, *x)) {
     a.basis = RowBasis::kDef2;
     a.exchange = x;
     a.decision_time_s = x->accept_delivered_time_s;

@@ -144,6 +144,19 @@ TEST(MergeAttempts, AnAcceptanceDeliveredWithinRhoCBeforeTheStartGrantsDefinitio
   EXPECT_TRUE(j->row.ego_holds_at(0.95));
 }
 
+// Definition 2 grants the right of way toward the partner only; the gap's other vehicle is
+// Definition 1's. The same exchange with vehicle 1, and vehicle 2 ahead of the ego: 100 m ahead
+// it satisfies ineq. (1.2) over rho_c + rho_m = 5 s with the ego at 20 m/s; 20 m ahead (D_lon
+// behind it at 20 m/s is 45 m) it does not, and the acceptance grants nothing.
+TEST(MergeAttempts, AnAcceptanceGrantsTheRightOfWayOnlyWhenTheGapsOtherVehicleAllowsIt) {
+  const Scenario far = gap_scenario(-45.0, 100.0, 22.0), near = gap_scenario(-45.0, 20.0, 22.0);
+  const auto ok = test::judge(far, with_exchange(merging_from(far, 1.0), 1, 0.9));
+  EXPECT_EQ(only_attempt(*ok).basis, RowBasis::kDef2);
+  const auto refused = test::judge(near, with_exchange(merging_from(near, 1.0), 1, 0.9));
+  EXPECT_NE(only_attempt(*refused).basis, RowBasis::kDef2);
+  EXPECT_FALSE(refused->row.ego_holds_at(0.95));
+}
+
 TEST(MergeAttempts, AnAcceptanceDeliveredAfterRhoCGrantsNothingAndIsKeptForDef23) {
   // Requested at 0.1 s, delivered at 1.2 s (1.1 s later); the merge from 1.2 s (start 1.26 s,
   // midpoint 2.2 s). (The window starts at 0: rho = max(4, 2 (2.2 - T)) stays below the 4.98 s at

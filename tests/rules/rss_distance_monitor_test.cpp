@@ -239,6 +239,28 @@ TEST(RssLateralMonitor, AnEgoCentringItselfInTheLaneOfAVehicleBehindIsJudgedLong
   for (const double m : out.margin) EXPECT_TRUE(std::isnan(m));  // not applicable at any step
 }
 
+// The right of way is per pair. The ego merges into an empty rightmost lane (it holds the right
+// of way by Definition 1) at 1 m/s laterally with a weak lateral brake (0.1 m/s2), beside vehicle
+// 1 in the next lane over (Y = 3.5): D_lat exceeds their 7 m from the start, and the ego keeps
+// moving toward it. Its right of way into lane 0 does not waive its lateral duty toward lane 1.
+TEST(RssLateralMonitor, TheRightOfWayIntoTheLaneWaivesNoDutyTowardTheNextLane) {
+  Scenario s = base_scenario();
+  s.road.main_lanes = 2;
+  s.ego.limits.lat_brake_min_mps2 = 0.1;
+  s.vehicles = {vehicle(1, 0.0, 20.0)};
+  s.vehicles[0].lane = 1;
+  Trace t = constant_accel_trace(s, 3.0);
+  for (auto& st : t.steps) {
+    st.ego.y_m = s.ego.y_m + 1.0 * st.time_s;
+    st.ego.vy_mps = 1.0;
+  }
+  const auto j = test::judge(s, t);
+  EXPECT_TRUE(j->row.ego_holds_at(1.0));
+  const MonitorOutput out = monitor_rss_lateral(j->context());
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+}
+
 TEST(RssLateralMonitor, LateralBrakingAfterResponseTimeHolds) {
   const Scenario s = side_by_side();
   const MonitorOutput out = test::run(monitor_rss_lateral, s, lateral_trace(s, true));

@@ -1,0 +1,141 @@
+#include "rules/definition2_inequalities.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/rss.h"
+#include "rules/coop_exchange.h"
+#include "rules/definition2_monitor.h"
+
+namespace mg {
+
+double ramp_distance_m(double v0_mps, double v_star_mps, double ramp_s, double tau_s) {
+  if (ramp_s <= 0.0) return v_star_mps * tau_s;
+  const double t = std::min(tau_s, ramp_s);
+  const double v_t = v0_mps + (v_star_mps - v0_mps) * t / ramp_s;
+  return 0.5 * (v0_mps + v_t) * t + v_star_mps * std::max(0.0, tau_s - ramp_s);
+}
+
+namespace {
+
+struct RequestView {
+  const V2vMessage& m;
+  int k = 0;                  // the responder's index
+  const ObservedState& ego;   // at the send
+  const ObservedState& resp;  // at the send
+};
+
+double d_lon_m(const ObservedTrace& s, std::size_t rear, double v_rear, std::size_t front, double v_front) {
+  const Limits& r = limits_of(s, rear);
+  return rss_longitudinal_m({std::max(0.0, v_rear), std::max(0.0, v_front), size_of(s, rear).length_m,
+                             size_of(s, front).length_m, s.params.rss.response_time_s, r.accel_max_mps2,
+                             r.brake_min_mps2, limits_of(s, front).brake_max_mps2});
+}
+
+// RCPP ineq. (3), eq. (1) for D*_lon, and the reach of v_o* at b_min,o within rho_c (expressed as
+// the distance the deeper slowdown would need over rho_c: half the speed shortfall times rho_c).
+double soundness_2_1_m(const MonitorContext& ctx, const RequestView& r, std::string& what) {
+  const ObservedTrace& s = ctx.trace;
+  const double rho_c = ctx.params.comm_threshold_s, rho_m = ctx.params.merge_duration_s;
+  const double v_o = std::max(0.0, speed_of(r.resp)), v_star = r.m.target_speed_mps;
+  const double lhs = r.resp.x_m + 0.5 * (v_o + v_star) * rho_c + v_star * 0.5 * rho_m;
+  const double m3 = (r.m.pc_m - r.m.d_lon_star_m) - lhs;
+  const double m_d = r.m.d_lon_star_m - d_lon_m(s, static_cast<std::size_t>(r.k), v_star, 0, speed_of(r.ego));
+  const double m_reach = 0.5 * rho_c * (v_star - (v_o - limits_of(s, r.k).brake_min_mps2 * rho_c));
+  const double m = std::min({m3, m_d, m_reach});
+  what = m == m3 ? "ineq. (3) fails" : m == m_d ? "D*_lon is below eq. (1) at v_o*" : "v_o* is beyond b_min,o within rho_c";
+  return m;
+}
+
+// RCPP ineq. (4) with the ego braking at b_min for rho_c, and the reach of v_o* at a_acc,o within
+// rho_c and under the speed limit (as for 2.1, in metres).
+double soundness_2_2_m(const MonitorContext& ctx, const RequestView& r, std::string& what) {
+  const ObservedTrace& s = ctx.trace;
+  const double rho_c = ctx.params.comm_threshold_s;
+  const double v_e = std::max(0.0, speed_of(r.ego)), b_min = limits_of(s, 0).brake_min_mps2;
+  const double v_o = std::max(0.0, speed_of(r.resp)), v_star = r.m.target_speed_mps;
+  const double v_e_after = std::max(0.0, v_e - b_min * rho_c);
+  const double ego_travel = speed_change_distance_m(v_e, v_e_after, 1.0, b_min, rho_c);
+  const double rhs = r.resp.x_m + 0.5 * (v_star + v_o) * rho_c -
+                     d_lon_m(s, 0, v_e_after, static_cast<std::size_t>(r.k), v_star);
+  const double m4 = rhs - (r.ego.x_m + ego_travel);
+  // The domain of spec §5: [v_o, max(v_o, min(v_o + a_acc,o rho_c, speed limit))] (asking a
+  // responder already above the limit to hold its speed is sound).
+  const double v_reach =
+      std::max(v_o, std::min(v_o + limits_of(s, r.k).accel_max_mps2 * rho_c, s.road.speed_limit_mps));
+  const double m_reach = 0.5 * rho_c * (v_reach - v_star);
+  what = m4 <= m_reach ? "ineq. (4) fails" : "v_o* is beyond a_acc,o within rho_c or the speed limit";
+  return std::min(m4, m_reach);
+}
+
+// The responder after it accepted (at t_a, x_a, v_a): the profile it accepted reaches v_o* by
+// the responder rules' deadline t_r + rho_c + T and holds it; 2.1: it is no farther along than
+// that profile (ineq. (3) counts on it being behind P_c - D*_lon), 2.2: no less far (ineq. (4)
+// counts on it being ahead). Within yield_speed_tolerance_mps of travel per second.
+void responder_positions(const MonitorContext& ctx, const CoopExchange& x, MarginAccumulator& acc) {
+  const ObservedTrace& s = ctx.trace;
+  const int partner = x.request->to_id;
+  const int k = index_of_party(s, partner);
+  if (k < 1) return;
+  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
+  const double v_star = ahead ? x.request->target_speed_mps : std::min(x.request->target_speed_mps, s.road.speed_limit_mps);
+  const std::size_t first = step_at(s, x.accept_time_s);
+  const ObservedState& at_accept = state_of(s.steps[first], static_cast<std::size_t>(k));
+  const double deadline = x.request_time_s + ctx.params.comm_threshold_s + s.params.rss.response_time_s;
+  const double end = std::min(merge_midpoint_after(ctx.phases, x.accept_time_s),
+                              x.request_time_s + ctx.params.comm_threshold_s + ctx.params.merge_duration_s);
+  for (std::size_t i = first; i < s.steps.size() && s.steps[i].time_s <= end + kTieS; ++i) {
+    const double tau = s.steps[i].time_s - x.accept_time_s;
+    const double bound = at_accept.x_m + ramp_distance_m(std::max(0.0, speed_of(at_accept)), v_star,
+                                                         deadline - x.accept_time_s, tau);
+    const double tol = ctx.params.yield_speed_tolerance_mps * tau;
+    const double pos = state_of(s.steps[i], static_cast<std::size_t>(k)).x_m;
+    if (acc.record(i, s.steps[i].time_s, ahead ? bound + tol - pos : pos - (bound - tol), partner, bound, pos)) {
+      std::ostringstream os;
+      os << party_name(partner) << " accepted the Def. 2." << (ahead ? "1" : "2") << " request of t = "
+         << x.request_time_s << " s (v_o* = " << v_star << " m/s) but was at x = " << pos << " m at t = "
+         << s.steps[i].time_s << " s, " << (ahead ? "ahead of" : "behind") << " its accepted profile (x = " << bound
+         << " m): ineq. (" << (ahead ? "3" : "4") << ") counted on it";
+      acc.set_detail(os.str());
+    }
+  }
+}
+
+}  // namespace
+
+MonitorOutput monitor_def2_positions(const MonitorContext& ctx) {
+  MarginAccumulator acc("def2_positions", ctx.trace.steps.size());
+  if (ctx.trace.steps.empty()) return acc.finish();
+  for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
+    if (x.accept_time_s >= 0.0) responder_positions(ctx, x, acc);
+  }
+  return acc.finish();
+}
+
+MonitorOutput monitor_def2_request_sound(const MonitorContext& ctx) {
+  const ObservedTrace& s = ctx.trace;
+  MarginAccumulator acc("def2_request_sound", s.steps.size());
+  if (s.steps.empty()) return acc.finish();
+  for (const CoopExchange& x : coop_exchanges(s)) {
+    const V2vMessage& m = *x.request;
+    const int k = index_of_party(s, m.to_id);
+    if (k < 1 || !std::isfinite(m.pc_m + m.d_lon_star_m + m.target_speed_mps)) continue;  // def2_1a's
+    const std::size_t i = step_at(s, x.request_time_s);
+    const RequestView r{m, k, ego_of(s.steps[i]), state_of(s.steps[i], static_cast<std::size_t>(k))};
+    std::string what;
+    const bool ahead = m.coop_case == CoopCase::kEgoAhead;
+    const double margin = ahead ? soundness_2_1_m(ctx, r, what) : soundness_2_2_m(ctx, r, what);
+    if (acc.record(i, x.request_time_s, margin, kEgoId, 0.0, margin)) {
+      std::ostringstream os;
+      os << "the Def. 2." << (ahead ? "1" : "2") << " request to " << party_name(m.to_id) << " at t = "
+         << x.request_time_s << " s (v_o* = " << m.target_speed_mps << " m/s) was unsound when sent: " << what
+         << " by " << -margin << " m";
+      acc.set_detail(os.str());
+    }
+  }
+  return acc.finish();
+}
+
+}  // namespace mg

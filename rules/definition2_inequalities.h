@@ -1,0 +1,26 @@
+// Inequalities (3) and (4) of RCPP Definition 2 (spec §5, review points 9-12), judged from the
+// channel and the observed states:
+//  - def2_request_sound: every request the ego sent was sound when it sent it: for 2.1 (ego
+//    ahead) ineq. (3) holds with the request's P_c, D*_lon and v_o* and the states at the send,
+//    D*_lon covers eq. (1) with the responder at v_o*, and v_o* is reachable at b_min,o within
+//    rho_c; for 2.2 (ego behind) ineq. (4) holds and v_o* is reachable at a_acc,o (and legal).
+//    Liable: the ego.
+//  - def2_positions: after an acceptance, the positions the inequalities count on: the responder
+//    no farther (2.1) / no less far (2.2) than its accepted profile takes it. Liable: the
+//    responder. (The ego's side of ineq. (4), braking at b_min for rho_c, is not a position rule:
+//    an ego may drop its request for a Definition 1 merge, and its place toward the responder is
+//    judged at the midpoint by sigmoid_pc_bounds and throughout by the RSS rules; spec §8.)
+#pragma once
+
+#include "rules/monitor.h"
+
+namespace mg {
+
+MonitorOutput monitor_def2_request_sound(const MonitorContext& ctx);
+MonitorOutput monitor_def2_positions(const MonitorContext& ctx);
+
+// Distance covered in tau_s by a vehicle at v0 that changes speed linearly to v_star by ramp_s
+// (ramp_s <= 0: at v_star at once) and then holds v_star.
+double ramp_distance_m(double v0_mps, double v_star_mps, double ramp_s, double tau_s);
+
+}  // namespace mg

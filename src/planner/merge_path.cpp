@@ -103,7 +103,11 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const M
 
 Track beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2) {
   assert(lane_y_m > 0.0);
-  Track t = leader_track(v, observed_accel_mps2);
+  // Predicted braking at its b_max from now: nothing in the merge depends on a vehicle of another
+  // lane, and one that brakes legally while the ego is laterally close to it (a weak lateral
+  // brake makes D_lat reach across a lane) forces the ego's RSS braking in mid-merge, into its
+  // own gap's safe distance (a campaign finding, docs/planner.md).
+  Track t = leader_track(v, std::min(observed_accel_mps2, -v.limits.brake_max_mps2));
   t.lane_y_m = lane_y_m;
   return t;
 }

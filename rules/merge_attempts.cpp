@@ -93,6 +93,7 @@ Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAt
     const std::size_t at = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s)
                                              : std::min(step_at_or_after(t, time_s + 0.5 * rho), t.steps.size() - 1);
     const double v_mid = t.steps[std::min(at, t.steps.size() - 1)].vehicles[0].vx_mps;
+    r.observed_mps = v_mid;
     r.ve_star_mps = r.interval.feasible() ? std::clamp(v_mid, r.interval.ve_lo_mps, r.interval.ve_hi_mps)
                                           : def1_best_speed_mps(t, i, gap, rho);
     r.margin_11_m = def1_1_margin_m(t, i, gap.follower, r.ve_star_mps, rho);
@@ -235,6 +236,13 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
       if (std::find(gaps.begin(), gaps.end(), g) == gaps.end()) gaps.push_back(g);
     for (const GapIndices& gap : gaps) {
       const Def1Reading r = read_def1(t, p, a, gap, i);
+      // A neighbouring gap is a hypothesis about where the ego is going: it counts only when
+      // feasible at a v_e* the ego's observed speed fits (a stop "behind the vehicle alongside"
+      // over a duration stretched to the trace's end fits any gap; an ego still at 20 m/s was
+      // not doing that).
+      const bool neighbour = !(gap == a.entered_gap) && !(gap == around);
+      if (neighbour && (!r.interval.feasible() || std::abs(r.ve_star_mps - r.observed_mps) > p.speed_tolerance_mps))
+        continue;
       if (!a.def1_read || r.interval.feasible() || r.min_margin_m() > a.def1.min_margin_m()) {
         a.def1 = r;
         a.def1_read = true;

@@ -44,6 +44,7 @@ struct Def1Reading {
   double rho_s = 0.0;
   Def1Interval interval;
   double ve_star_mps = 0.0;   // the v_e* the margins are stated at
+  double observed_mps = 0.0;  // the ego's observed speed it was chosen nearest to
   double margin_11_m = std::numeric_limits<double>::infinity();
   double margin_12_m = std::numeric_limits<double>::infinity();
   double min_margin_m() const { return margin_11_m < margin_12_m ? margin_11_m : margin_12_m; }

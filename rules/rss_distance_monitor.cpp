@@ -217,11 +217,12 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
         continue;
       }
       if (!e.active) e = Episode{true, st.time_s, false, kNobody, 0.0, false};
-      // The right of way is the ego's way into the rightmost main lane (Y = 0): it waives the
-      // lateral duty toward that lane's vehicles only, never toward another lane's (spec §8,
-      // review point 15: per pair).
-      const bool target_lane = std::abs(state_of(st, j).y_m) < 0.5 * s.road.lane_width_m;
-      const bool obliged = !(target_lane && ctx.row.ego_holds_at(e.blame_time_s));
+      // The right of way is the right to merge into the rightmost main lane (centre Y = 0): it
+      // waives the ego's lateral duty for the motion of that merge, leftward up to the lane's
+      // centre, toward whichever vehicle; not a motion beyond it, nor toward a vehicle on the
+      // ego's right (spec §8, review point 15: the waiver follows the manoeuvre, not the clock).
+      const bool merge_motion = g.right == 0 && ego_of(st).y_m < 0.0;
+      const bool obliged = !(merge_motion && ctx.row.ego_holds_at(e.blame_time_s));
       const double toward = g.right == 0 ? ego_of(st).vy_mps : -ego_of(st).vy_mps;
       std::string why;
       if (obliged && e.breach == kNobody && st.time_s >= e.blame_time_s + T - 1e-9) {

@@ -239,26 +239,33 @@ TEST(RssLateralMonitor, AnEgoCentringItselfInTheLaneOfAVehicleBehindIsJudgedLong
   for (const double m : out.margin) EXPECT_TRUE(std::isnan(m));  // not applicable at any step
 }
 
-// The right of way is per pair. The ego merges into an empty rightmost lane (it holds the right
-// of way by Definition 1) at 1 m/s laterally with a weak lateral brake (0.1 m/s2), beside vehicle
-// 1 in the next lane over (Y = 3.5): D_lat exceeds their 7 m from the start, and the ego keeps
-// moving toward it. Its right of way into lane 0 does not waive its lateral duty toward lane 1.
-TEST(RssLateralMonitor, TheRightOfWayIntoTheLaneWaivesNoDutyTowardTheNextLane) {
+// The right of way waives the lateral duty for the merge's own motion only. The ego merges into
+// an empty rightmost lane (it holds the right of way by Definition 1) at 1 m/s laterally with a
+// weak lateral brake (0.1 m/s2), beside vehicle 1 in the next lane over (Y = 3.5): D_lat exceeds
+// their distance from the start. Up to the lane's centre (Y = 0, t = 3.5 s) that is the merge;
+// the ego that keeps moving left beyond it owes vehicle 1 its lateral response.
+TEST(RssLateralMonitor, TheRightOfWayWaivesTheLateralDutyOnlyUpToTheTargetLanesCentre) {
   Scenario s = base_scenario();
   s.road.main_lanes = 2;
   s.ego.limits.lat_brake_min_mps2 = 0.1;
   s.vehicles = {vehicle(1, 0.0, 20.0)};
   s.vehicles[0].lane = 1;
-  Trace t = constant_accel_trace(s, 3.0);
-  for (auto& st : t.steps) {
-    st.ego.y_m = s.ego.y_m + 1.0 * st.time_s;
-    st.ego.vy_mps = 1.0;
-  }
-  const auto j = test::judge(s, t);
-  EXPECT_TRUE(j->row.ego_holds_at(1.0));
-  const MonitorOutput out = monitor_rss_lateral(j->context());
+  const auto moving_left_for = [&](double duration_s) {
+    Trace t = constant_accel_trace(s, duration_s);
+    for (auto& st : t.steps) {
+      st.ego.y_m = s.ego.y_m + 1.0 * st.time_s;
+      st.ego.vy_mps = 1.0;
+    }
+    return t;
+  };
+  const auto merge = test::judge(s, moving_left_for(3.4));
+  EXPECT_TRUE(merge->row.ego_holds_at(1.0));
+  EXPECT_TRUE(monitor_rss_lateral(merge->context()).result.holds);
+  const auto beyond = test::judge(s, moving_left_for(5.0));
+  const MonitorOutput out = monitor_rss_lateral(beyond->context());
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_GE(*out.result.first_violation_time_s, 3.5 - 1e-9);
 }
 
 TEST(RssLateralMonitor, LateralBrakingAfterResponseTimeHolds) {

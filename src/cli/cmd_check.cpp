@@ -32,7 +32,9 @@ int run_check(const std::vector<std::string>& args) {
   const Scenario scenario = load_scenario(path);
   prepare_check_output(output);
   if (!trace_path.empty()) check_output_file("--save-trace", trace_path);
-  const CheckResult result = check_scenario(scenario, planner_name);
+  const bool written = !trace_path.empty() || !output.report_dir.empty();
+  const CheckResult result =
+      check_scenario(scenario, planner_name, written ? PlannerAccount::kDecisions : PlannerAccount::kNameOnly);
   if (!trace_path.empty()) write_observed_trace(result.trace, trace_path);
   return emit_check_result(result, output);
 }

@@ -108,7 +108,7 @@ std::map<std::string, std::string> write_liability_reports(const std::string& di
   for (const std::string& path : r.new_cases) {
     const fuzz::CorpusCase c = fuzz::load_case(path);
     const std::string rel = "cases/" + c.signature.file_stem();
-    write_check_reports(dir + "/" + rel, check_scenario(c.scenario, c.signature.planner));
+    write_check_reports(dir + "/" + rel, check_scenario(c.scenario, c.signature.planner, PlannerAccount::kDecisions));
     links[path] = rel + "/report.html";
   }
   return links;

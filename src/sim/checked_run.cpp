@@ -8,14 +8,14 @@
 
 namespace mg {
 
-CheckResult check_trace(const Scenario& scenario, const Trace& trace) {
-  return check_observed(observed_trace_of(scenario, trace));
+CheckResult check_trace(const Scenario& scenario, const Trace& trace, PlannerAccount account) {
+  return check_observed(observed_trace_of(scenario, trace, account));
 }
 
-CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name) {
+CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name, PlannerAccount account) {
   std::unique_ptr<Planner> planner = make_planner(planner_name);
   if (!planner) throw std::invalid_argument("unknown planner '" + planner_name + "'");
-  return check_trace(scenario, simulate(scenario, *planner));
+  return check_trace(scenario, simulate(scenario, *planner), account);
 }
 
 }  // namespace mg

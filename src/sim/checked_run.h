@@ -8,14 +8,19 @@
 #include "core/scenario.h"
 #include "planner/planner.h"
 #include "rules/check.h"
+#include "sim/observed_run.h"
 #include "sim/trace.h"
 
 namespace mg {
 
-// Judges an existing run of `scenario`.
-CheckResult check_trace(const Scenario& scenario, const Trace& trace);
+// Judges an existing run of `scenario`. The result's trace carries the planner's name only unless
+// `account` asks for its decision records too (sim/observed_run.h): ask for them when a report or
+// the trace is written.
+CheckResult check_trace(const Scenario& scenario, const Trace& trace,
+                        PlannerAccount account = PlannerAccount::kNameOnly);
 // Simulates with a new planner of the registry and judges the run. An unknown planner name raises
 // std::invalid_argument.
-CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name);
+CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name,
+                           PlannerAccount account = PlannerAccount::kNameOnly);
 
 }  // namespace mg

@@ -23,7 +23,8 @@ std::vector<VehicleDeclaration> declarations_of(const Scenario& s) {
   return out;
 }
 
-nlohmann::json annotations_of(const Trace& t) {
+nlohmann::json annotations_of(const Trace& t, PlannerAccount account) {
+  if (account == PlannerAccount::kNameOnly) return {{"planner", t.planner}};
   nlohmann::json decisions = nlohmann::json::array();
   for (const Decision& d : t.decisions) decisions.push_back(decision_to_json(d));
   return {{"planner", t.planner}, {"decisions", std::move(decisions)}};
@@ -35,7 +36,7 @@ ObservedState observed_state_of(const VehicleState& v) {
   return {v.x_m, v.y_m, v.yaw_rad, v.road_vx_mps(), v.road_vy_mps(), v.accel_mps2};
 }
 
-ObservedTrace observed_trace_of(const Scenario& scenario, const Trace& trace) {
+ObservedTrace observed_trace_of(const Scenario& scenario, const Trace& trace, PlannerAccount account) {
   ObservedTrace o;
   o.name = scenario.name;
   o.source = "mergeguard simulate (planner " + trace.planner + ")";
@@ -55,7 +56,7 @@ ObservedTrace observed_trace_of(const Scenario& scenario, const Trace& trace) {
     const std::optional<ChannelEventKind> kind = channel_kind_of(e.kind);
     if (kind && e.message) o.channel.push_back({e.time_s, *kind, *e.message});
   }
-  o.planner_annotations = annotations_of(trace);
+  o.planner_annotations = annotations_of(trace, account);
   return o;
 }
 

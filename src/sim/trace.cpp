@@ -92,7 +92,7 @@ nlohmann::json trace_to_json(const Trace& t) {
     events.push_back(std::move(j));
   }
   return {{"planner", t.planner},
-          {"digest", digest_hex(t.digest)},
+          {"digest", digest_hex(compute_digest(t))},
           {"steps", std::move(steps)},
           {"decisions", std::move(decisions)},
           {"events", std::move(events)}};

@@ -1,5 +1,6 @@
 // What a simulation produced: every step's state of every vehicle, every planner decision and
-// V2V event, with a digest (spec §7). The rule monitors judge only this and the scenario.
+// V2V event; compute_digest digests it (spec §7). The rule monitors judge only this and the
+// scenario.
 #pragma once
 
 #include <cstdint>
@@ -49,13 +50,13 @@ struct Trace {
   std::vector<TraceStep> steps;
   std::vector<Decision> decisions;      // every planner cycle's decision record
   std::vector<TraceEvent> events;
-  std::uint64_t digest = 0;             // FNV-1a over the bit patterns of all step states
 };
 
 std::string to_string(EventKind k);
 nlohmann::json trace_to_json(const Trace& t);
 // FNV-1a (64 bit) over the bit patterns of every step's time, states, mode and override flag;
-// the value simulate() stores in Trace::digest.
+// trace_to_json writes it. Computed on demand: a checked run is digested as its observable trace
+// (core/observed_trace.h trace_digest), and a second pass over every run cost campaigns 2 %.
 std::uint64_t compute_digest(const Trace& t);
 // The digest as 16 lowercase hex digits (JSON numbers cannot hold 64 bits exactly everywhere).
 std::string digest_hex(std::uint64_t digest);

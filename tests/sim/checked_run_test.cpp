@@ -117,7 +117,7 @@ RC_GTEST_PROP(CheckedRun, TheVerdictIgnoresWhatThePlannerSaysAboutItself, ()) {
   config.max_vehicles = 4;
   const Scenario scenario = *fuzz::gen_scenario(config);
   const std::string planner = *rc::gen::element<std::string>("rcpp", "rcpp-coop", "tripfield");
-  const CheckResult honest = check_scenario(scenario, planner);
+  const CheckResult honest = check_scenario(scenario, planner, PlannerAccount::kDecisions);
   const ObservedTrace& trace = honest.trace;
   RC_ASSERT(!trace.planner_annotations.is_null());
   RC_TAG(planner, honest.holds ? "holds" : "violated");
@@ -141,7 +141,7 @@ TEST(CheckedRun, TheAnnotationsHoldThePlannersDecisions) {
   v.id = 1;
   v.x_m = 60.0;
   s.vehicles.push_back(v);
-  const CheckResult r = check_scenario(s, "rcpp");
+  const CheckResult r = check_scenario(s, "rcpp", PlannerAccount::kDecisions);
   const json& a = r.trace.planner_annotations;
   ASSERT_TRUE(a.is_object());
   EXPECT_EQ(a.at("planner"), "rcpp");

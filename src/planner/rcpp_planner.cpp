@@ -453,6 +453,8 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
   return best;
 }
 
+namespace {
+
 // The side lane's centre; from nearer the main lane (after an aborted merge, or a start
 // off-centre) a path back to it (planner/return_path.h) that starts where and in the direction the
 // ego is going and is kept until the ego reaches its end. As short as the
@@ -467,6 +469,8 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
 constexpr double kReturnPathMinOffsetM = 0.05;
 constexpr double kReturnTangentMinSpeedMps = 1.0;
 constexpr double kReturnLaneLineMarginM = 0.25;
+
+// What a return or a hold may do at the ego's speed (planner/return_path.h, ReturnLimits).
 ReturnLimits return_limits(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;
   const double v = ego_speed_mps(w);
@@ -485,6 +489,8 @@ double travel_slope(const WorldSnapshot& w) {
   const double v = ego_speed_mps(w);
   return v >= kReturnTangentMinSpeedMps ? ego_lat_speed_mps(w) / v : std::tan(w.ego.yaw_rad);
 }
+
+}  // namespace
 
 std::vector<PathPoint> RcppPlanner::side_lane_path(const WorldSnapshot& w) {
   const Scenario& s = *w.scenario;

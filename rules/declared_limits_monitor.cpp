@@ -1,6 +1,7 @@
 #include "rules/declared_limits_monitor.h"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 namespace mg {
@@ -10,6 +11,7 @@ MonitorOutput monitor_declared_limits(const MonitorContext& ctx) {
   const auto& steps = t.steps;
   MarginAccumulator acc("declared_limits", steps.size());
   const double tol = ctx.params.accel_tolerance_mps2;
+  if (t.vehicles.empty()) return acc.finish();
   for (std::size_t i = 0; i < steps.size(); ++i) {
     // The earliest breach is the one that counts; at one step the vehicle furthest beyond its
     // limit (the smallest margin) is named.
@@ -24,7 +26,6 @@ MonitorOutput monitor_declared_limits(const MonitorContext& ctx) {
         who = k;
       }
     }
-    if (t.vehicles.empty()) break;
     const Limits& lim = limits_of(t, who);
     const double a = state_of(steps[i], who).accel_mps2;
     const bool braking = a < 0.0;

@@ -216,10 +216,11 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
     return;
   }
   const std::size_t first = step_at_or_after(t, window_from_s);
-  // Latest first, every kScanStride steps (the step of the entry itself is always read).
+  // Latest first, every kScanStride steps; the step of the entry and the window's first step are
+  // always read (a gap feasible only at the first instant the ego saw it is still a gap).
   const std::size_t last = std::max(a.entry_step.value_or(a.start_step), a.start_step);
-  for (std::size_t i = last + kScanStride; i >= first + kScanStride;) {
-    i -= kScanStride;
+  for (std::size_t i = last + kScanStride; first <= last && i > first;) {
+    i = i >= first + kScanStride ? i - kScanStride : first;
     // The gap the ego entered, then the one around it at i (a follower may have raced past it
     // since, changing the gap it entered). Never a gap the ego was neither in nor entered, except
     // for an attempt whose body has not entered the main lane yet: the gap it will enter is not

@@ -101,14 +101,15 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const M
   return Track{l.x_m, motion, l.length_m, l.width_m, l.limits};
 }
 
-Track beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2) {
+BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2) {
   assert(lane_y_m > 0.0);
-  // Predicted braking at its b_max from now: nothing in the merge depends on a vehicle of another
-  // lane, and one that brakes legally while the ego is laterally close to it (a weak lateral
-  // brake makes D_lat reach across a lane) forces the ego's RSS braking in mid-merge, into its
-  // own gap's safe distance (a campaign finding, docs/planner.md).
-  Track t = leader_track(v, std::min(observed_accel_mps2, -v.limits.brake_max_mps2));
-  t.lane_y_m = lane_y_m;
+  // Braking at its b_max from now: nothing in the merge depends on a vehicle of another lane, and
+  // one that brakes legally while the ego is laterally close to it (a weak lateral brake makes
+  // D_lat reach across a lane) forces the ego's RSS braking in mid-merge, into its own gap's safe
+  // distance (a campaign finding, docs/planner.md).
+  BesideTrack t{leader_track(v, std::min(observed_accel_mps2, -v.limits.brake_max_mps2)),
+                leader_track(v, observed_accel_mps2)};
+  t.braking.lane_y_m = t.nominal.lane_y_m = lane_y_m;
   return t;
 }
 
@@ -163,17 +164,22 @@ Blocking blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps
   }
   for (const Track& l : tracks.leaders)
     if (too_close_behind(l)) block(l, below.lane_m);
-  // Another lane's vehicle constrains the merge only while it is ahead of the ego.
-  for (const Track& o : tracks.beside)
-    if (o.x_at(t_s) > x_m && too_close_behind(o)) block(o, below.beside_m);
+  // Another lane's vehicle constrains the merge only while it may be ahead of the ego: judged by
+  // its braking position alone, a vehicle the ego would pass once stopped but not if it kept
+  // braking a little later (the check a cycle on) drew a merge, an abort and a retry every
+  // two seconds (smoothness_oscillation; docs/planner.md).
+  for (const BesideTrack& o : tracks.beside)
+    if (o.nominal.x_at(t_s) > x_m && too_close_behind(o.braking)) block(o.braking, below.beside_m);
   return below;
 }
 
 // The largest extra lateral distance any of the tracks needs (see blocked_below_m).
 double widest_extra_m(const Scenario& s, const GapTracks& tracks) {
   double extra = -std::numeric_limits<double>::infinity();
-  for (const auto* list : {&tracks.followers, &tracks.leaders, &tracks.beside})
-    for (const Track& o : *list) extra = std::max(extra, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m);
+  const auto widen = [&](const Track& o) { extra = std::max(extra, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m); };
+  for (const auto* list : {&tracks.followers, &tracks.leaders})
+    for (const Track& o : *list) widen(o);
+  for (const BesideTrack& o : tracks.beside) widen(o.braking);
   return extra;
 }
 

@@ -101,15 +101,23 @@ const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, co
 // make D_lat reach across a lane: a vehicle there that the ego is not D_lon behind is then an
 // RSS-dangerous situation with the ego as the rear vehicle, whose proper response (braking)
 // leaves the planned merge (a campaign finding, docs/planner.md). Predicted like leaders.
+// A vehicle of another main lane may brake at any rate up to its b_max: at an instant it can be
+// anywhere between its hardest-braking position and its nominal one (leader_track). The ego must
+// be D_lon behind the braking position unless it is ahead of the nominal one: in between, some
+// legal braking puts the vehicle just ahead of it (docs/planner.md "Vehicles of the next lane").
+struct BesideTrack {
+  Track braking;
+  Track nominal;
+};
 struct GapTracks {
   std::vector<Track> followers;
   std::vector<Track> leaders;
-  std::vector<Track> beside;
+  std::vector<BesideTrack> beside;
 };
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
                      const std::function<double(int)>& observed_accel_mps2);
 // A vehicle of another main lane, centred at lane_y_m > 0, for GapTracks::beside.
-Track beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2);
+BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2);
 
 // Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
 // rho, docs/planner.md): at every one of kOccupancySamples instants of [0, rho] at which the

@@ -84,9 +84,9 @@ Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle
 }
 
 // The vehicles of the other main lanes, for the occupancy check (GapTracks::beside).
-std::vector<Track> beside_tracks(const WorldSnapshot& w) {
+std::vector<BesideTrack> beside_tracks(const WorldSnapshot& w) {
   const double lane_w = w.scenario->road.lane_width_m;
-  std::vector<Track> tracks;
+  std::vector<BesideTrack> tracks;
   for (const ObservedVehicle& o : w.others) {
     const double lane_y_m = std::round(o.state.y_m / lane_w) * lane_w;
     if (lane_y_m < 0.5 * lane_w) continue;  // the target lane
@@ -170,7 +170,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
   int n_def1 = 0, n_cross = 0, n_sigmoid = 0;
   const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
   const auto accel_of = [&](int id) { return observed_accel_mps2(w, id); };
-  const std::vector<Track> beside = beside_tracks(w);
+  const std::vector<BesideTrack> beside = beside_tracks(w);
   std::optional<FieldTimeline> field_at_rho;  // built when the first candidate needs it
   for (const LaneGap& gap : enumerate_gaps(lane)) {
     const Gap gid{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1};
@@ -338,13 +338,15 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   tracks.beside = beside_tracks(w);
   if (k == CoopCase::kEgoAhead) {
     tracks.followers.push_back(responder);
-    if (const auto l = neighbour(lane, i, +1))
-      tracks.leaders.push_back(predicted_leader(w, lane, *l));
   } else {
     tracks.leaders.push_back(responder);
     if (const auto f = neighbour(lane, i, -1))
       tracks.followers.push_back(follower_track(*f, 2.0 * t_c, observed_accel_mps2(w, f->id)));
   }
+  // Every vehicle ahead of the responder, as in Definition 1 (gap_tracks): a responder asked to
+  // speed up cannot drive through a vehicle stopped ahead of it, and the ego merging behind it
+  // merged onto that vehicle (rcpp-coop sigmoid_pc_bounds; docs/planner.md).
+  for (std::size_t j = i + 1; j < lane.size(); ++j) tracks.leaders.push_back(predicted_leader(w, lane, lane[j]));
   const auto partner_x = [&](const ObservedVehicle& v, double t) {
     return v.id == o.id ? o.x_m + responder_ramp.distance_at_m(t) : constant_speed_x(v, t);
   };

@@ -98,6 +98,44 @@ TEST(OccupancyClear, AMergeKeepsDLatFromAVehicleAheadInTheNextLane) {
   EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0));
 }
 
+// A vehicle of the next lane may be anywhere between its hardest braking and its nominal
+// motion, so a check a cycle later, when it has kept its speed, is no harder than the first: its
+// hardest braking from then on stops it farther ahead, at a higher speed. With a weak lateral
+// brake and a long response time (D_lat reaches across a lane), a merge clear of the next lane at
+// its decision stays clear at every later re-check while the ego follows its plan and the other
+// lane's vehicles keep their speed. (The braking position alone decided "ahead": a vehicle the
+// ego passed once stopped, but not when it kept braking a little later, aborted each merge a
+// second after its decision; smoothness_oscillation.)
+RC_GTEST_PROP(OccupancyClear, AMergeClearOfTheNextLaneStaysClearWhileItsVehiclesKeepTheirSpeed, ()) {
+  Scenario s = road_only();
+  s.params.rss.response_time_s = *rc::gen::inRange(5, 15) / 10.0;
+  s.ego.limits.lat_brake_min_mps2 = *rc::gen::inRange(3, 10) / 10.0;
+  const double v0 = *rc::gen::inRange(0, 300) / 10.0;
+  const SpeedRamp ego{v0, *rc::gen::inRange(0, 300) / 10.0, 2.0, 4.0};
+  const double rho_s = *rc::gen::inRange(20, 100) / 10.0;
+  const Sigmoid path{3.5, *rc::gen::inRange(5, 30) / 100.0, ego.distance_at_m(0.5 * rho_s), -3.5};
+  std::vector<MainLaneVehicle> beside;
+  for (int i = 0, n = *rc::gen::inRange(1, 3); i < n; ++i)
+    beside.push_back(lane_vehicle(10 + i, *rc::gen::inRange(-300, 1500) / 10.0, *rc::gen::inRange(0, 350) / 10.0));
+  const auto tracks_at = [&](double dt_s) {
+    GapTracks tracks;
+    for (MainLaneVehicle v : beside) {
+      v.x_m += v.speed_mps * dt_s;
+      tracks.beside.push_back(beside_track(v, 3.5, 0.0));
+    }
+    return tracks;
+  };
+  const OccupancyInstants decision = OccupancyInstants::over(rho_s);
+  RC_PRE(occupancy_clear(s, 0.0, -3.5, path, ego, decision, tracks_at(0.0), 0.0));
+  for (int cycle = 1; cycle * 0.1 < rho_s; ++cycle) {
+    const double dt_s = cycle * 0.1;
+    const double x_m = ego.distance_at_m(dt_s);
+    const SpeedRamp rest{ego.speed_at_mps(dt_s), ego.v_target_mps, 2.0, 4.0};
+    const OccupancyInstants recheck{decision.step_s, dt_s, rho_s - dt_s};
+    RC_ASSERT(occupancy_clear(s, x_m, path.y_at_m(x_m), path, rest, recheck, tracks_at(dt_s), 0.0));
+  }
+}
+
 // The memo (per-instant D_lon blocking shared by the kappa candidates of one speed profile, and
 // the hint that visits the last blocking instant first) saves work only: over a run of checks
 // like the planner's (several speed profiles, several kappa each, one memo throughout) every

@@ -220,6 +220,48 @@ TEST(PlannerHarness, SilentResponderFallsBackToDefinition1) {
   EXPECT_TRUE(fell_back);
 }
 
+// Vehicle 1 alongside the ego; vehicle 2 stopped 83 m ahead of it. Definition 2.2 would ask
+// vehicle 1 to speed up and merge behind it, onto the stopped vehicle: no request is sound, and
+// the ego (weak brakes, 3.3 m/s2) must not plan one (a campaign finding: it asked, vehicle 1
+// could not comply, and the ego merged at 16 m/s 29 m behind vehicle 2).
+//
+//   main lane   [1] 21.2 m/s ----------------- 83 m ---------------- [2] stopped
+//   side lane   [ego] 21.7 m/s  -----------------------------------------------> end at 320 m
+TEST(PlannerHarness, NoCooperativeRequestAsksTheResponderToDriveOntoAVehicleAheadOfIt) {
+  Scenario s;
+  s.road.speed_limit_mps = 25.3;
+  s.road.side_lane_end_x_m = 320.0;
+  s.params.rss.response_time_s = 0.2;
+  s.params.planner.comm_threshold_s = 1.8;
+  s.ego.size.length_m = 4.0;
+  s.ego.size.width_m = 2.1;
+  s.ego.v2v.latency_s = 0.19;
+  s.ego.x_m = 146.7;
+  s.ego.y_m = -s.road.lane_width_m;
+  s.ego.speed_mps = 21.7;
+  s.ego.limits.brake_min_mps2 = s.ego.limits.brake_max_mps2 = 3.3;
+  s.ego.v2v.capable = true;
+  MainVehicle v1, v2;
+  v1.id = 1;
+  v1.x_m = 144.9;
+  v1.speed_mps = 21.2;
+  v1.v2v.capable = true;
+  v1.v2v.latency_s = 0.32;
+  v1.size.length_m = 4.1;
+  v1.size.width_m = 1.75;
+  v1.limits = Limits{3.4, 5.0, 6.3, 0.5, 0.7};
+  v1.behaviour.type = BehaviourType::kCooperative;
+  v2.id = 2;
+  v2.x_m = 228.2;
+  v2.speed_mps = 0.0;
+  s.vehicles = {v1, v2};
+  WorldSnapshot w = initial_snapshot(s);
+  w.others[0].state.accel_mps2 = -1.8;
+  w.ego.accel_mps2 = -1.3;
+  const Decision d = make_planner("rcpp-coop")->plan(w).decision;
+  EXPECT_FALSE(d.mode == DecisionMode::kDef2Request && d.coop_partner_id == 1 && d.vo_star_mps > 21.2) << d.reason;
+}
+
 // ---- planner-level properties on random scenarios ----
 Scenario gen_scenario() {
   Scenario s;

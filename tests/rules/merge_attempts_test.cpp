@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rules/definition1_gap.h"
 #include "trace_builder.h"
 
 namespace mg {
@@ -99,6 +100,33 @@ TEST(MergeAttempts, AGapFeasibleAllAlongIsCreditedFromBeforeTheDecisionWindow) {
   EXPECT_NEAR(a.decision_time_s, 0.0, 1e-9);
   EXPECT_TRUE(j->row.ego_holds_at(0.5));
   EXPECT_TRUE(j->row.ego_holds_at(2.1));
+}
+
+// Vehicle 1 behind the ego accelerates at its a_accel^max (2 m/s2), so ineq. (1.1) toward it
+// shrinks every step; it is placed where (1.1) holds by 1 cm at t = 0 for the fastest v_e*, the
+// speed limit. By the next step it fails (the follower is 0.04 m/s faster: 8 cm more over
+// rho/2 alone). The gap was feasible only at the window's first instant: a planner that decided
+// then merged with the right of way (a campaign finding: the window read every kScanStride
+// steps from the entry missed that instant).
+//
+//   t = 0      main lane   [1]---(1.1) holds by 0.01 m---+
+//              side lane                                  [ego] -> starts at 1.08 s
+TEST(MergeAttempts, AGapFeasibleOnlyAtTheWindowsFirstInstantGrantsTheRightOfWay) {
+  Scenario s = gap_scenario(-80.0);
+  const auto trace_of = [](const Scenario& sc) {
+    return test::with_lateral_move(constant_accel_trace(sc, 4.0, {0.0, 2.0}), 1.02, 1.75);
+  };
+  const double v_max = s.road.speed_limit_mps;
+  const double margin0_m = def1_1_margin_m(test::observed(s, trace_of(s)), 0, 1, v_max, 4.0);
+  s.vehicles[0].x_m += margin0_m - 0.01;  // (1.1) falls one for one as the follower moves up
+  const ObservedTrace o = test::observed(s, trace_of(s));
+  ASSERT_NEAR(def1_1_margin_m(o, 0, 1, v_max, 4.0), 0.01, 1e-9);
+  ASSERT_FALSE(def1_interval(o, 1, GapIndices{1, -1}, 4.0).feasible());
+  const auto j = test::judge(s, trace_of(s));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kDef1) << a.observation;
+  EXPECT_EQ(a.decision_time_s, 0.0);
+  EXPECT_GE(a.def1.margin_11_m, 0.0);
 }
 
 // Vehicle 1 45 m behind the ego at its speed, speed limit 22 m/s: ahead of vehicle 1, ineq. (1.1)

@@ -667,13 +667,19 @@ double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
   // ego must still reach P_c at D_lon behind it (RCPP §II-C, spec §6). And once the merge can
   // no longer be aborted (kAbortLateralFraction): a leader that has braked to a stop is not
   // braking any more, and the ego must not speed up toward it on the way in.
-  // Before P_c the gap's follower is not that vehicle even while it is still ahead: the ego is
-  // passing it (a Def. 2.1 partner 2.5 m ahead, braking to yield, was taken for a braking leader,
-  // and the cap behind it aborted the cooperative merge it had just accepted).
+  // Before P_c neither the gap's follower nor a vehicle behind it is that vehicle even while it is
+  // still ahead: the ego is passing them (a Def. 2.1 partner 2.5 m ahead, braking to yield, was
+  // taken for a braking leader, and the cap behind it aborted the cooperative merge it had just
+  // accepted; so was a vehicle braking behind a stopped follower the ego meant to overtake).
   const bool before_pc = w.ego.x_m < merge_->sigmoid.pc_m;
   const std::optional<Gap>& gap = merge_->decision.gap;
-  for (const MainLaneVehicle& leader : target_lane_vehicles(w)) {  // by X
-    if (leader.x_m <= w.ego.x_m || (before_pc && gap && leader.id == gap->follower_id)) continue;
+  const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
+  const auto follower = std::find_if(lane.begin(), lane.end(), [&](const MainLaneVehicle& v) {
+    return gap && v.id == gap->follower_id;
+  });
+  for (const MainLaneVehicle& leader : lane) {  // by X
+    const bool passing = before_pc && follower != lane.end() && !lane_order_before(*follower, leader);
+    if (leader.x_m <= w.ego.x_m || passing) continue;
     const bool braking = observed_accel_mps2(w, leader.id) < -kLeaderBrakingMps2;
     if (!before_pc || braking || merge_->committed(w.ego.y_m)) target = std::min(target, rss_follow_speed_mps(w, leader));
     break;

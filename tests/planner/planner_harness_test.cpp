@@ -262,6 +262,48 @@ TEST(PlannerHarness, NoCooperativeRequestAsksTheResponderToDriveOntoAVehicleAhea
   EXPECT_FALSE(d.mode == DecisionMode::kDef2Request && d.coop_partner_id == 1 && d.vo_star_mps > 21.2) << d.reason;
 }
 
+// The ego overtakes vehicles 2 (braking) and 3 (stopped) in the side lane and merges ahead of
+// vehicle 3. Vehicle 2, braking ahead of the ego but behind the gap's follower, is being passed:
+// it must not cap the ego's speed as a braking leader would (a campaign finding: the cap slowed
+// the ego, its P_c bounds crossed, and the merge was aborted a cycle after its decision).
+//
+//   main lane   [1] 13.8 m/s     [2] 9.2 m/s, braking 4 m/s2    [3] stopped      P_c 259 m
+//   side lane          [ego] 19.7 m/s ------------------------------------------>  (end 300 m)
+TEST(PlannerHarness, AMergeAheadOfAStoppedFollowerIsNotSlowedByTheVehiclesItPasses) {
+  Scenario s;
+  s.road.speed_limit_mps = 33.3;
+  s.road.side_lane_end_x_m = 300.0;
+  s.params.rss.response_time_s = 0.1;
+  s.ego.x_m = 171.17;
+  s.ego.y_m = -s.road.lane_width_m;
+  s.ego.speed_mps = 19.74;
+  const auto vehicle = [](int id, double x_m, double speed_mps) {
+    MainVehicle v;
+    v.id = id;
+    v.x_m = x_m;
+    v.speed_mps = speed_mps;
+    return v;
+  };
+  s.vehicles = {vehicle(1, 161.33, 13.85), vehicle(2, 190.37, 9.16), vehicle(3, 207.05, 0.0)};
+  WorldSnapshot w = initial_snapshot(s);
+  w.others[0].state.accel_mps2 = -3.27;
+  w.others[1].state.accel_mps2 = -4.0;
+  auto planner = make_planner("rcpp");
+  const Decision first = planner->plan(w).decision;
+  ASSERT_EQ(first.mode, DecisionMode::kDef1Merge) << first.reason;
+  ASSERT_EQ(first.gap, (Gap{3, -1})) << first.reason;
+  // A cycle on, everything as predicted: the ego at v_e*, vehicle 2 still braking.
+  const double dt = s.params.sim.planner_cycle_s;
+  w.time_s = dt;
+  w.ego.x_m += w.ego.vx_mps * dt;
+  w.others[0].state.x_m += w.others[0].state.vx_mps * dt;
+  w.others[1].state.x_m += (w.others[1].state.vx_mps - 2.0 * dt) * dt;
+  w.others[1].state.vx_mps -= 4.0 * dt;
+  const PlanOutput next = planner->plan(w);
+  EXPECT_EQ(next.decision.mode, DecisionMode::kDef1Merge) << next.decision.reason;
+  EXPECT_GE(next.target_speed_mps, first.ve_star_mps - 1e-9) << next.decision.reason;
+}
+
 // ---- planner-level properties on random scenarios ----
 Scenario gen_scenario() {
   Scenario s;

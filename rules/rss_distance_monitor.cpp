@@ -22,6 +22,8 @@ struct Episode {
   bool response_speed_set = false;
   std::size_t rear = 0;       // longitudinal: the pair's rear vehicle (trace index) ...
   double rear_since_s = 0.0;  // ... and since when: side by side, the order can flip mid-episode
+  // Lateral: when the ego's duty began, t_b or the end of its waived merge motion (NaN: waived).
+  double duty_since_s = std::numeric_limits<double>::quiet_NaN();
 };
 
 std::size_t pair_count(std::size_t n) { return n * (n - 1) / 2; }
@@ -223,21 +225,26 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
       // ego's right (spec §8, review point 15: the waiver follows the manoeuvre, not the clock).
       const bool merge_motion = g.right == 0 && ego_of(st).y_m < 0.0;
       const bool obliged = !(merge_motion && ctx.row.ego_holds_at(e.blame_time_s));
+      // A duty that starts mid-episode (the merge motion ends at the lane's centre) gets its
+      // response time from then, as one that starts with the danger does: the ego cannot have
+      // answered, during a waiver, a duty it did not have yet.
+      if (obliged && std::isnan(e.duty_since_s)) e.duty_since_s = st.time_s;
       const double toward = g.right == 0 ? ego_of(st).vy_mps : -ego_of(st).vy_mps;
       std::string why;
-      if (obliged && e.breach == kNobody && st.time_s >= e.blame_time_s + T - 1e-9) {
+      if (obliged && e.breach == kNobody && st.time_s >= e.duty_since_s + T - 1e-9) {
         if (!e.response_speed_set) {
           e.response_speed_mps = toward;
           e.response_speed_set = true;
         }
         const double allowed =
-            std::max(0.0, e.response_speed_mps - limits_of(s, 0).lat_brake_min_mps2 * (st.time_s - e.blame_time_s - T));
+            std::max(0.0, e.response_speed_mps - limits_of(s, 0).lat_brake_min_mps2 * (st.time_s - e.duty_since_s - T));
         if (toward > allowed + tol) {
           e.breach = kEgoId;
           std::ostringstream os;
           os << "ego kept moving toward " << describe(s, j) << " at " << toward
              << " m/s laterally (allowed " << allowed << " m/s) without the right of way, "
              << T << " s after the lateral danger began at t = " << e.blame_time_s << " s";
+          if (e.duty_since_s > e.blame_time_s) os << " (its duty since t = " << e.duty_since_s << " s, the end of its merge motion)";
           why = os.str();
         }
       }

@@ -243,7 +243,9 @@ TEST(RssLateralMonitor, AnEgoCentringItselfInTheLaneOfAVehicleBehindIsJudgedLong
 // an empty rightmost lane (it holds the right of way by Definition 1) at 1 m/s laterally with a
 // weak lateral brake (0.1 m/s2), beside vehicle 1 in the next lane over (Y = 3.5): D_lat exceeds
 // their distance from the start. Up to the lane's centre (Y = 0, t = 3.5 s) that is the merge;
-// the ego that keeps moving left beyond it owes vehicle 1 its lateral response.
+// the ego that keeps moving left beyond it owes vehicle 1 its lateral response: from 3.5 s, with
+// T = 0.5 s to start braking (judged here with a speed tolerance of 0.05 m/s, so that not braking
+// shows at 4.5 s, before the ego's centre reaches vehicle 1's lane at 5.25 s).
 TEST(RssLateralMonitor, TheRightOfWayWaivesTheLateralDutyOnlyUpToTheTargetLanesCentre) {
   Scenario s = base_scenario();
   s.road.main_lanes = 2;
@@ -261,11 +263,34 @@ TEST(RssLateralMonitor, TheRightOfWayWaivesTheLateralDutyOnlyUpToTheTargetLanesC
   const auto merge = test::judge(s, moving_left_for(3.4));
   EXPECT_TRUE(merge->row.ego_holds_at(1.0));
   EXPECT_TRUE(monitor_rss_lateral(merge->context()).result.holds);
+  s.params.rules.speed_tolerance_mps = 0.05;
   const auto beyond = test::judge(s, moving_left_for(5.0));
   const MonitorOutput out = monitor_rss_lateral(beyond->context());
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, kEgoId);
-  EXPECT_GE(*out.result.first_violation_time_s, 3.5 - 1e-9);
+  EXPECT_GE(*out.result.first_violation_time_s, 4.5 - 1e-9);
+}
+
+// The same merge, the ego crossing the lane's centre at 3.5 s at 1 m/s: its lateral duty toward
+// vehicle 1 begins there, so it has the response time T = 0.5 s from then, and braking laterally
+// at its b_lat_min (0.1 m/s2) from 4 s on answers it, although the lateral danger began at t = 0
+// (a campaign finding: counted from t = 0, the ego was "1 s late" the moment its merge ended).
+TEST(RssLateralMonitor, ADutyThatBeginsAtTheLanesCentreHasItsResponseTimeFromThere) {
+  Scenario s = base_scenario();
+  s.road.main_lanes = 2;
+  s.ego.limits.lat_brake_min_mps2 = 0.1;
+  s.vehicles = {vehicle(1, 0.0, 20.0)};
+  s.vehicles[0].lane = 1;
+  Trace t = constant_accel_trace(s, 6.0);
+  for (auto& st : t.steps) {
+    const double braking_s = std::max(0.0, st.time_s - 4.0);
+    st.ego.vy_mps = 1.0 - 0.1 * braking_s;
+    st.ego.y_m = s.ego.y_m + std::min(st.time_s, 4.0) + braking_s - 0.05 * braking_s * braking_s;
+  }
+  const auto j = test::judge(s, t);
+  ASSERT_TRUE(j->row.ego_holds_at(1.0));
+  const MonitorOutput out = monitor_rss_lateral(j->context());
+  EXPECT_TRUE(out.result.holds) << out.result.detail;
 }
 
 TEST(RssLateralMonitor, LateralBrakingAfterResponseTimeHolds) {

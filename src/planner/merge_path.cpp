@@ -86,6 +86,15 @@ double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahea
   return std::min(1e3, need_mps2);
 }
 
+double chained_accel_mps2(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v,
+                          const std::function<double(int)>& observed_accel_mps2) {
+  const double seen_mps2 = observed_accel_mps2(v.id);
+  const MainLaneVehicle* ahead = next_in_lane(lane, v);
+  if (ahead == nullptr) return seen_mps2;
+  const double behind_mps2 = braking_behind_mps2(v, *ahead, chained_accel_mps2(lane, *ahead, observed_accel_mps2));
+  return std::min(seen_mps2, -behind_mps2);
+}
+
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const MainLaneVehicle* ahead,
                    double ahead_accel_mps2) {
   const double seen_mps2 = observed_accel_mps2 < -kLeaderBrakingMps2 ? -observed_accel_mps2 : 0.0;
@@ -124,7 +133,7 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
     if (gap.leader && !lane_order_before(v, *gap.leader)) {
       const MainLaneVehicle* ahead = next_in_lane(lane, v);
       tracks.leaders.push_back(
-          leader_track(v, observed_accel_mps2(v.id), ahead, ahead ? observed_accel_mps2(ahead->id) : 0.0));
+          leader_track(v, observed_accel_mps2(v.id), ahead, ahead ? chained_accel_mps2(lane, *ahead, observed_accel_mps2) : 0.0));
     }
   }
   return tracks;

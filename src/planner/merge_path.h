@@ -89,6 +89,14 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const M
 double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2 = 0.0);
 // The vehicle next ahead of `v` in `lane` (any order), or nullptr.
 const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v);
+// The acceleration to predict `v` with as the vehicle ahead of a leader (leader_track's
+// ahead_accel_mps2): its observed one, or, when that is harder, minus the braking it needs behind
+// the vehicle ahead of it as that one is predicted, and so on to the front of the lane. A vehicle
+// seen braking is predicted to stop, so one that must brake for a vehicle stopped further ahead
+// is too: a leader predicted behind a fast vehicle alone, which then braked for a stopped one
+// ahead of it, aborted the merge planned behind the leader (docs/planner.md).
+double chained_accel_mps2(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v,
+                          const std::function<double(int)>& observed_accel_mps2);
 
 // The vehicles a merge into a gap is checked against: the gap's follower and every target-lane
 // vehicle behind it (followers, follower_track over follower_window_s), its leader and every

@@ -80,7 +80,8 @@ double observed_accel_mps2(const WorldSnapshot& w, int id) {
 // A target-lane leader as leader_track predicts it, behind the vehicle ahead of it in `lane`.
 Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& l) {
   const MainLaneVehicle* ahead = next_in_lane(lane, l);
-  return leader_track(l, observed_accel_mps2(w, l.id), ahead, ahead ? observed_accel_mps2(w, ahead->id) : 0.0);
+  const auto accel_of = [&](int id) { return observed_accel_mps2(w, id); };
+  return leader_track(l, observed_accel_mps2(w, l.id), ahead, ahead ? chained_accel_mps2(lane, *ahead, accel_of) : 0.0);
 }
 
 // The vehicles of the other main lanes, for the occupancy check (GapTracks::beside).

@@ -98,6 +98,29 @@ TEST(OccupancyClear, AMergeKeepsDLatFromAVehicleAheadInTheNextLane) {
   EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0));
 }
 
+// A leader behind a fast vehicle that must stop for a stopped one further ahead (a campaign
+// finding, 1: 29 m/s, 2: 36.6 m/s, 3 stopped 198 m ahead of 2):
+//
+//   [1] 29 m/s -- 29.3 m -- [2] 36.6 m/s ---------------- 197.75 m ---------------- [3] stopped
+//
+// Vehicle 2 needs 36.6^2 / (2 (197.75 - 4.8 - 2)) = 3.51 m/s2 to stop 2 m behind vehicle 3, so it
+// is predicted braking, and vehicle 1 is predicted to stop behind it, never past vehicle 3: with
+// vehicle 2 at constant speed, vehicle 1 was predicted at 29 m/s until vehicle 2 was seen braking,
+// and the merge planned behind vehicle 1 was aborted then.
+TEST(LeaderTrack, ALeaderIsPredictedBehindEveryVehicleAheadOfIt) {
+  const std::vector<MainLaneVehicle> lane = {lane_vehicle(1, -20.0, 29.0), lane_vehicle(2, 9.3, 36.6),
+                                             lane_vehicle(3, 207.05, 0.0)};
+  EXPECT_NEAR(chained_accel_mps2(lane, lane[1], no_accel), -36.6 * 36.6 / (2.0 * (197.75 - 4.8 - 2.0)), 1e-9);
+  EXPECT_DOUBLE_EQ(chained_accel_mps2(lane, lane[2], no_accel), 0.0);
+  const Track t = leader_track(lane[0], 0.0, &lane[1], chained_accel_mps2(lane, lane[1], no_accel));
+  EXPECT_DOUBLE_EQ(t.v_at(60.0), 0.0);
+  EXPECT_LE(t.x_at(60.0), 207.05 - 2.0 * (4.8 + 2.0) + 1e-9);
+  // The tracks of a merge behind vehicle 1 (gap_tracks) predict it the same way.
+  const GapTracks tracks = gap_tracks(lane, LaneGap{std::nullopt, lane[0]}, 4.0, no_accel);
+  ASSERT_EQ(tracks.leaders.size(), 3u);
+  EXPECT_DOUBLE_EQ(tracks.leaders[0].x_at(60.0), t.x_at(60.0));
+}
+
 // A vehicle of the next lane may be anywhere between its hardest braking and its nominal
 // motion, so a check a cycle later, when it has kept its speed, is no harder than the first: its
 // hardest braking from then on stops it farther ahead, at a higher speed. With a weak lateral

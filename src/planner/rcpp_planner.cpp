@@ -84,6 +84,23 @@ Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle
   return leader_track(l, observed_accel_mps2(w, l.id), ahead, ahead ? chained_accel_mps2(lane, *ahead, accel_of) : 0.0);
 }
 
+// The P_c bound toward a vehicle `o` the ego merges behind (RCPP §II-C, spec §6), the ego reaching
+// P_c at v_at while `o` is predicted at (x_o, v_o): x_o less D_lon, minus P_c; >= 0 while it holds.
+double leader_bound_margin_m(const Scenario& s, const MainLaneVehicle& o, double x_o_m, double v_o_mps, double v_at_mps,
+                             double pc_m) {
+  const double dl = rss_longitudinal_m({v_at_mps, v_o_mps, s.ego.size.length_m, o.length_m,
+                                        s.params.rss.response_time_s, s.ego.limits.accel_max_mps2,
+                                        s.ego.limits.brake_min_mps2, o.limits.brake_max_mps2});
+  return x_o_m - dl - pc_m;
+}
+
+// When the ego on `ramp` reaches X = x_m from where it is now (nullopt: never).
+std::optional<double> time_to_reach_s(const WorldSnapshot& w, const SpeedRamp& ramp, double x_m) {
+  const double to_m = x_m - w.ego.x_m;
+  if (to_m <= 0.0) return 0.0;
+  return lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_m; }, 0.0, 600.0, 1e-4);
+}
+
 // The vehicles of the other main lanes, for the occupancy check (GapTracks::beside).
 std::vector<BesideTrack> beside_tracks(const WorldSnapshot& w) {
   const double lane_w = w.scenario->road.lane_width_m;
@@ -570,9 +587,8 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
   // The speed the ego will really aim for: v_e*, or less behind a braking leader (follow_merge).
   const SpeedRamp ramp{ego_speed_mps(w), merge_target_speed_mps(w), s.ego.limits.accel_max_mps2,
                        s.ego.limits.brake_min_mps2};
-  const double to_pc_m = merge_->sigmoid.pc_m - w.ego.x_m;
-  if (to_pc_m <= 0.0) return false;
-  const auto t_reach = lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_pc_m; }, 0.0, 600.0, 1e-4);
+  if (merge_->sigmoid.pc_m <= w.ego.x_m) return false;
+  const auto t_reach = time_to_reach_s(w, ramp, merge_->sigmoid.pc_m);
   if (!t_reach) return true;  // the ego would never reach P_c
   const double t = *t_reach;
   const double v_at = ramp.speed_at_mps(t);
@@ -615,11 +631,8 @@ bool RcppPlanner::committed_bounds_crossed(const WorldSnapshot& w) const {
                                             o.limits.accel_max_mps2, o.limits.brake_min_mps2,
                                             s.ego.limits.brake_max_mps2});
       if (x_m + dl > merge_->sigmoid.pc_m) return true;
-    } else {
-      const double dl = rss_longitudinal_m({v_at, v_mps, s.ego.size.length_m, o.length_m,
-                                            s.params.rss.response_time_s, s.ego.limits.accel_max_mps2,
-                                            s.ego.limits.brake_min_mps2, o.limits.brake_max_mps2});
-      if (merge_->sigmoid.pc_m > x_m - dl) return true;
+    } else if (leader_bound_margin_m(s, o, x_m, v_mps, v_at, merge_->sigmoid.pc_m) < 0.0) {
+      return true;
     }
   }
   return false;
@@ -663,9 +676,11 @@ bool RcppPlanner::committed_occupancy_clear(const WorldSnapshot& w) const {
 double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
   double target = merge_->target_speed_mps;
   // Past P_c the ego is in the main lane: it also keeps its RSS distance to the vehicle ahead.
-  // Before P_c it does so too once that vehicle brakes: Def. 1.2 predicted it at constant speed,
-  // and a compliant leader may brake (e.g. for a slow vehicle ahead of it) up to its b_max; the
-  // ego must still reach P_c at D_lon behind it (RCPP §II-C, spec §6). And once the merge can
+  // Before P_c, once that vehicle brakes, it slows enough to reach P_c at D_lon behind it as
+  // predicted (pc_bound_speed_mps): Def. 1.2 predicted it at constant speed, and a compliant
+  // leader may brake (e.g. for a slow vehicle ahead of it) up to its b_max (RCPP §II-C, spec §6).
+  // (D_lon behind it at once was asked of an ego still alongside a long leader it meant to drop
+  // behind: speed 0, P_c never reached, an abort a cycle after each decision.) And once the merge can
   // no longer be aborted (kAbortLateralFraction): a leader that has braked to a stop is not
   // braking any more, and the ego must not speed up toward it on the way in.
   // Before P_c neither the gap's follower nor a vehicle behind it is that vehicle even while it is
@@ -682,10 +697,36 @@ double RcppPlanner::merge_target_speed_mps(const WorldSnapshot& w) const {
     const bool passing = before_pc && follower != lane.end() && !lane_order_before(*follower, leader);
     if (leader.x_m <= w.ego.x_m || passing) continue;
     const bool braking = observed_accel_mps2(w, leader.id) < -kLeaderBrakingMps2;
-    if (!before_pc || braking || merge_->committed(w.ego.y_m)) target = std::min(target, rss_follow_speed_mps(w, leader));
+    if (!before_pc || merge_->committed(w.ego.y_m)) {
+      target = std::min(target, rss_follow_speed_mps(w, leader));
+    } else if (braking) {
+      target = std::min(target, pc_bound_speed_mps(w, lane, leader, target));
+    }
     break;
   }
   return target;
+}
+
+double RcppPlanner::pc_bound_speed_mps(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
+                                       const MainLaneVehicle& leader, double target_mps) const {
+  const Scenario& s = *w.scenario;
+  const double pc_m = merge_->sigmoid.pc_m;
+  const Track ahead = predicted_leader(w, lane, leader);
+  const auto holds = [&](double v) {
+    const SpeedRamp ramp{ego_speed_mps(w), v, s.ego.limits.accel_max_mps2, s.ego.limits.brake_min_mps2};
+    const auto t = time_to_reach_s(w, ramp, pc_m);
+    return t && leader_bound_margin_m(s, leader, ahead.x_at(*t), ahead.v_at(*t), ramp.speed_at_mps(*t), pc_m) >= 0.0;
+  };
+  if (holds(target_mps)) return target_mps;
+  // The bound's margin falls as the speed rises (later at P_c: the leader farther on, D_lon
+  // shorter), so the fastest speed that holds is found by bisection.
+  double lo = kStandstillMergeSpeedMps, hi = target_mps;
+  if (hi <= lo || !holds(lo)) return rss_follow_speed_mps(w, leader);  // none: the re-check aborts
+  while (hi - lo > 1e-3) {
+    const double mid = 0.5 * (lo + hi);
+    (holds(mid) ? lo : hi) = mid;
+  }
+  return lo;
 }
 
 PlanOutput RcppPlanner::follow_merge(const WorldSnapshot& w) {

@@ -85,6 +85,8 @@ class RcppPlanner : public Planner {
   // The occupancy check of the rest of the merge with the gap vehicles as observed now.
   bool committed_occupancy_clear(const WorldSnapshot& w) const;
   double merge_target_speed_mps(const WorldSnapshot& w) const;  // v_e*, capped behind a braking leader
+  double pc_bound_speed_mps(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
+                            const MainLaneVehicle& leader, double target_mps) const;
   void apply_override(const WorldSnapshot& w, PlanOutput& out) const;
   // `w` with each other vehicle's acceleration replaced by the harshest braking seen from it in
   // the last kBrakingMemoryS (rcpp_planner.cpp), updating seen_braking_.

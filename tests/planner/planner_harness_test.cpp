@@ -304,6 +304,61 @@ TEST(PlannerHarness, AMergeAheadOfAStoppedFollowerIsNotSlowedByTheVehiclesItPass
   EXPECT_GE(next.target_speed_mps, first.ve_star_mps - 1e-9) << next.decision.reason;
 }
 
+// The ego merges behind vehicle 1, a 16 m truck still alongside it, braking at 1.4 m/s2 for
+// vehicle 2, nearly stopped 195 m ahead. A cycle after the decision the ego is still alongside:
+// "D_lon behind it now" would mean speed 0 and P_c never reached. The ego slows instead just
+// enough to reach P_c D_lon behind where vehicle 1 is predicted then (a campaign finding: the
+// merge was aborted a cycle after each of seven decisions, smoothness_oscillation).
+//
+//   main lane      [====== 1 ======] 24.1 m/s, -1.4 m/s2 ...... 195 m ...... [2] 1.5 m/s
+//   side lane   [ego] 26.6 m/s
+TEST(PlannerHarness, AMergeBehindABrakingLeaderStillAlongsideSlowsToReachPcBehindIt) {
+  Scenario s;
+  s.road.speed_limit_mps = 33.3;
+  s.road.side_lane_end_x_m = 300.0;
+  s.params.rss.response_time_s = 0.3;
+  s.params.planner.merge_duration_s = s.params.rules.merge_duration_s = 4.5;
+  s.ego.x_m = 49.292;
+  s.ego.y_m = -3.424;
+  s.ego.speed_mps = 26.593;
+  s.ego.limits = Limits{2.0, 5.9, 9.9, 0.2, 0.8};
+  MainVehicle truck, slow;
+  truck.id = 1;
+  truck.x_m = 54.966;
+  truck.speed_mps = 24.115;
+  truck.size.length_m = 16.0;
+  truck.size.width_m = 2.5;
+  truck.limits = Limits{2.0, 2.6, 4.2, 0.5, 0.9};
+  slow.id = 2;
+  slow.x_m = 250.546;
+  slow.speed_mps = 1.494;
+  s.vehicles = {truck, slow};
+  WorldSnapshot w = initial_snapshot(s);
+  w.ego.vy_mps = -0.384;
+  w.others[0].state.accel_mps2 = -1.438;
+  w.others[1].state.accel_mps2 = -0.504;
+  auto planner = make_planner("rcpp");
+  const Decision first = planner->plan(w).decision;
+  ASSERT_EQ(first.mode, DecisionMode::kDef1Merge) << first.reason;
+  ASSERT_EQ(first.gap, (Gap{-1, 1})) << first.reason;
+  // A cycle on (the states the simulator gave): the truck still ahead of the ego's centre by 5.4 m.
+  w.time_s = 0.1;
+  w.ego.x_m = 51.922;
+  w.ego.y_m = -3.457;
+  w.ego.vx_mps = 26.004;
+  w.ego.vy_mps = -0.277;
+  w.others[0].state.x_m = 57.371;
+  w.others[0].state.vx_mps = 23.973;
+  w.others[0].state.accel_mps2 = -1.412;
+  w.others[1].state.x_m = 250.693;
+  w.others[1].state.vx_mps = 1.446;
+  w.others[1].state.accel_mps2 = -0.455;
+  const PlanOutput next = planner->plan(w);
+  EXPECT_EQ(next.decision.mode, DecisionMode::kDef1Merge) << next.decision.reason;
+  EXPECT_GT(next.target_speed_mps, 5.0) << next.decision.reason;
+  EXPECT_LE(next.target_speed_mps, first.ve_star_mps) << next.decision.reason;
+}
+
 // ---- planner-level properties on random scenarios ----
 Scenario gen_scenario() {
   Scenario s;

@@ -200,6 +200,17 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
     const double t = std::max(0.0, k * when.step_s - when.elapsed_s);
     const double x = ego_x_m + ego.distance_at_m(t);
     const double v = ego.speed_at_mps(t);
+    const bool memoised = memo && k <= kOccupancySamples;
+    Blocking below = memoised ? memo->blocked_below_m[static_cast<std::size_t>(k)] : Blocking{std::nan(""), 0.0};
+    if (memoised && std::isnan(below.lane_m)) {
+      // Filled before the path is evaluated (it does not depend on kappa): an instant at which the
+      // ego is D_lon clear of every vehicle is clear for every candidate of this ramp, whatever
+      // its lateral position, so the sigmoid need not be evaluated there.
+      below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
+      memo->blocked_below_m[static_cast<std::size_t>(k)] = below;
+    }
+    constexpr double kNone = -std::numeric_limits<double>::infinity();
+    if (below.lane_m == kNone && below.beside_m == kNone) return false;
     const double y_path = sig.y_at_m(x);
     const double sgm = (y_path - sig.offset_m) / sig.width_m;
     // An ego nearer the lane than the path's start is not assumed to have reached the path yet.
@@ -218,12 +229,8 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
     // the rules judge entry by it (docs/spec.md §8).
     const bool over_line = -y - yaw_extra_m - 0.5 * s.ego.size.width_m < 0.5 * s.road.lane_width_m + kLaneLineMarginM;
     if (!over_line && lateral_room_m >= widest_extra) return false;
-    const bool memoised = memo && k <= kOccupancySamples;
-    Blocking below = memoised ? memo->blocked_below_m[static_cast<std::size_t>(k)] : Blocking{std::nan(""), 0.0};
     if (std::isnan(below.lane_m)) below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
-    if (memoised) memo->blocked_below_m[static_cast<std::size_t>(k)] = below;
-    const bool lane_blocked = below.lane_m > -std::numeric_limits<double>::infinity() &&
-                              (over_line || lateral_room_m < below.lane_m);
+    const bool lane_blocked = below.lane_m > kNone && (over_line || lateral_room_m < below.lane_m);
     return lane_blocked || lateral_room_m < below.beside_m;
   };
   const int hint = memo && memo->last_blocked_k >= k_first && memo->last_blocked_k <= k_last ? memo->last_blocked_k : -1;

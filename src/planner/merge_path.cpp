@@ -198,6 +198,74 @@ double ego_lateral_rss_m(const Scenario& s, double lat_speed_mps) {
                         el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
 }
 
+// The ego on its path at one instant: its lateral room beyond D_lat (and the tracking margin) to
+// the target lane's centre, and whether a corner is over the lane line.
+struct PathLateral {
+  double room_m = 0.0;
+  bool over_line = false;
+};
+
+PathLateral path_lateral(const Scenario& s, double ego_y_m, const Sigmoid& sig, double x, double v) {
+  const double y_path = sig.y_at_m(x);
+  const double sgm = (y_path - sig.offset_m) / sig.width_m;
+  // An ego nearer the lane than the path's start is not assumed to have reached the path yet.
+  const double y = std::max(y_path, ego_y_m);
+  const double slope = sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);  // dY/dX on the path
+  const double d_lat = ego_lateral_rss_m(s, v * slope);
+  // The ego's half extent across the road on its heading along the path: the box's corner, not
+  // its side, comes nearest the lane (a halted ego, yawed 0.07 rad, had its corner 7 cm over
+  // the lane line while the vehicle it was to merge behind passed; a campaign finding).
+  const double cos_h = 1.0 / std::sqrt(1.0 + slope * slope);
+  const double yaw_extra_m = 0.5 * (s.ego.size.width_m * (cos_h - 1.0) + s.ego.size.length_m * slope * cos_h);
+  // Laterally safe (lane centre Y = 0), with the growing tracking margin.
+  const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
+  // A corner over the lane line (with kLaneLineMarginM) is in the lane, whatever D_lat says:
+  // the rules judge entry by it (docs/spec.md §8).
+  return {-y - yaw_extra_m - (d_lat + margin_m),
+          -y - yaw_extra_m - 0.5 * s.ego.size.width_m < 0.5 * s.road.lane_width_m + kLaneLineMarginM};
+}
+
+constexpr double kNone = -std::numeric_limits<double>::infinity();
+
+// One occupancy check's instants (occupancy_clear).
+struct OccupancyScan {
+  const Scenario& s;
+  double ego_x_m, ego_y_m;
+  const Sigmoid& sig;
+  const SpeedRamp& ego;
+  const OccupancyInstants& when;
+  const GapTracks& tracks;
+  double buffer_m;
+  OccupancyMemo* memo;
+  double widest_extra = std::numeric_limits<double>::quiet_NaN();  // computed when first needed
+
+  bool blocked_at(int k) {
+    const double t = std::max(0.0, k * when.step_s - when.elapsed_s);
+    const bool memoised = memo && k <= kOccupancySamples;
+    Blocking below = memoised ? memo->blocked_below_m[static_cast<std::size_t>(k)] : Blocking{std::nan(""), 0.0};
+    // An instant at which the ego is D_lon clear of every vehicle is clear for every candidate of
+    // this ramp, whatever its lateral position: then neither the ramp nor the path is evaluated.
+    if (below.lane_m == kNone && below.beside_m == kNone) return false;
+    const double x = ego_x_m + ego.distance_at_m(t);
+    const double v = ego.speed_at_mps(t);
+    if (memoised && std::isnan(below.lane_m)) {  // filled first: it does not depend on kappa
+      below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
+      memo->blocked_below_m[static_cast<std::size_t>(k)] = below;
+      if (below.lane_m == kNone && below.beside_m == kNone) return false;
+    }
+    const PathLateral lat = path_lateral(s, ego_y_m, sig, x, v);
+    // Without the instant's Blocking, a first test against the widest extra of any track (it bounds
+    // both parts, so a room above it is clear unless over the line); with it, it decides alone.
+    if (std::isnan(below.lane_m)) {
+      if (std::isnan(widest_extra)) widest_extra = widest_extra_m(s, tracks);
+      if (!lat.over_line && lat.room_m >= widest_extra) return false;
+      below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
+    }
+    const bool lane_blocked = below.lane_m > kNone && (lat.over_line || lat.room_m < below.lane_m);
+    return lane_blocked || lat.room_m < below.beside_m;
+  }
+};
+
 }  // namespace
 
 bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
@@ -210,43 +278,13 @@ bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Si
   // (about P_c) back to the first instant, then on to the last. Rejections concentrate just before
   // P_c (the follower), so most come after a few instants.
   const int k_middle = std::clamp(kOccupancySamples / 2, k_first, std::max(k_first, k_last));
-  const double widest_extra = widest_extra_m(s, tracks);
-  const auto blocked_at = [&](int k) {
-    const double t = std::max(0.0, k * when.step_s - when.elapsed_s);
-    const double x = ego_x_m + ego.distance_at_m(t);
-    const double v = ego.speed_at_mps(t);
-    const double y_path = sig.y_at_m(x);
-    const double sgm = (y_path - sig.offset_m) / sig.width_m;
-    // An ego nearer the lane than the path's start is not assumed to have reached the path yet.
-    const double y = std::max(y_path, ego_y_m);
-    const double slope = sig.width_m * sig.kappa_per_m * sgm * (1.0 - sgm);  // dY/dX on the path
-    const double d_lat = ego_lateral_rss_m(s, v * slope);
-    // The ego's half extent across the road on its heading along the path: the box's corner, not
-    // its side, comes nearest the lane (a halted ego, yawed 0.07 rad, had its corner 7 cm over
-    // the lane line while the vehicle it was to merge behind passed; a campaign finding).
-    const double cos_h = 1.0 / std::sqrt(1.0 + slope * slope);
-    const double yaw_extra_m = 0.5 * (s.ego.size.width_m * (cos_h - 1.0) + s.ego.size.length_m * slope * cos_h);
-    // Laterally safe (lane centre Y = 0), with the growing tracking margin.
-    const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
-    const double lateral_room_m = -y - yaw_extra_m - (d_lat + margin_m);
-    // A corner over the lane line (with kLaneLineMarginM) is in the lane, whatever D_lat says:
-    // the rules judge entry by it (docs/spec.md §8).
-    const bool over_line = -y - yaw_extra_m - 0.5 * s.ego.size.width_m < 0.5 * s.road.lane_width_m + kLaneLineMarginM;
-    if (!over_line && lateral_room_m >= widest_extra) return false;
-    const bool memoised = memo && k <= kOccupancySamples;
-    Blocking below = memoised ? memo->blocked_below_m[static_cast<std::size_t>(k)] : Blocking{std::nan(""), 0.0};
-    if (std::isnan(below.lane_m)) below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
-    if (memoised) memo->blocked_below_m[static_cast<std::size_t>(k)] = below;
-    const bool lane_blocked = below.lane_m > -std::numeric_limits<double>::infinity() &&
-                              (over_line || lateral_room_m < below.lane_m);
-    return lane_blocked || lateral_room_m < below.beside_m;
-  };
+  OccupancyScan scan{s, ego_x_m, ego_y_m, sig, ego, when, tracks, buffer_m, memo};
   const int hint = memo && memo->last_blocked_k >= k_first && memo->last_blocked_k <= k_last ? memo->last_blocked_k : -1;
-  if (hint >= 0 && blocked_at(hint)) return false;
+  if (hint >= 0 && scan.blocked_at(hint)) return false;
   for (int j = 0; j <= k_last - k_first; ++j) {
     const int k = j <= k_middle - k_first ? k_middle - j : k_first + j;
     if (k == hint) continue;  // clear, just checked
-    if (blocked_at(k)) {
+    if (scan.blocked_at(k)) {
       if (memo) memo->last_blocked_k = k;
       return false;
     }

@@ -51,4 +51,8 @@ double field_potential(const FieldScene& scene, const PlannerParams& p, double x
   return total;
 }
 
+double field_potential_floor(const PlannerParams& p, LaneCentreMode mode) {
+  return lane_centre_potential(p.pf_search_distance_m, p.pf_lane_xi, p.pf_search_distance_m, mode);
+}
+
 }  // namespace mg

@@ -42,5 +42,9 @@ struct FieldScene {
   LaneCentreMode mode = LaneCentreMode::kMerging;
 };
 double field_potential(const FieldScene& scene, const PlannerParams& p, double x_m, double y_m);
+// A lower bound of field_potential at any position of any scene in `mode`, exact in floating
+// point: the lane-centre term at distance D* (d = hypot(D*, dY) >= D*, and the term does not fall
+// with d); the road-mark and obstacle terms are >= 0, and each addition is monotone.
+double field_potential_floor(const PlannerParams& p, LaneCentreMode mode);
 
 }  // namespace mg

@@ -166,6 +166,16 @@ double field_cost(const WorldSnapshot& w, const FieldTimeline& field, const Sigm
   return sum / (kFieldSamples + 1);
 }
 
+// A lower bound of field_cost for any candidate, in floating point: its sum with every term at
+// field_potential_floor (each term is at least that, and each addition and the division are
+// monotone), divided as field_cost divides.
+double field_cost_floor(const PlannerParams& p) {
+  const double floor = field_potential_floor(p, LaneCentreMode::kMerging);
+  double sum = 0.0;
+  for (int k = 0; k <= kFieldSamples; ++k) sum += floor;
+  return sum / (kFieldSamples + 1);
+}
+
 double constant_speed_x(const ObservedVehicle& o, double t) {
   return o.state.x_m + std::max(0.0, o.state.road_vx_mps()) * t;
 }
@@ -232,6 +242,8 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     const double pc_margin = std::min(kPcMarginM, 0.25 * (pc_max - pc_min));
     OccupancyMemo memo;  // shared by the kappa candidates of one v_e* (choose_sigmoid's inner loop)
     double memo_v = std::numeric_limits<double>::quiet_NaN();
+    double best_seen = std::numeric_limits<double>::infinity();  // the lowest cost choose_sigmoid holds
+    const double field_floor = field_cost_floor(p);
     const auto cost = [&](double v, double kappa) {
       if (v != memo_v) {
         memo.forget_ramp();
@@ -239,16 +251,22 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
       }
       const SpeedRamp ramp = ctx.ramp_to(v);
       const double pc = pc_at(v);
-      const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
-      if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, OccupancyInstants::over(rho_s), tracks,
-                           kOccupancyPlanningBufferM, &memo))
-        return std::numeric_limits<double>::infinity();
       const bool near_bound = pc < pc_min + pc_margin || pc > pc_max - pc_margin;
       const double def1_cost = p.cost_time_weight * half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                                p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
                                (near_bound ? kNearPcBoundPenalty : 0.0);
+      // Not below the best so far even with the field at its floor: not chosen (a tie keeps the
+      // first), so neither its occupancy nor its field is evaluated.
+      if (def1_cost + field_floor >= best_seen) return std::numeric_limits<double>::infinity();
+      const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
+      if (!occupancy_clear(s, ctx.ego_x_m, w.ego.y_m, sig, ramp, OccupancyInstants::over(rho_s), tracks,
+                           kOccupancyPlanningBufferM, &memo))
+        return std::numeric_limits<double>::infinity();
       if (!field_at_rho) field_at_rho = field_timeline(w, rho_s, constant_speed_x);
-      return def1_cost + field_cost(w, *field_at_rho, sig, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); });
+      const double c =
+          def1_cost + field_cost(w, *field_at_rho, sig, [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); });
+      best_seen = std::min(best_seen, c);
+      return c;
     };
     // Candidates: pc_candidates values of v_e* evenly over [lo, v_hi], and the speed grid shared
     // with the progress rule within it. The grid is over v_e*, not P_c: an ego that cannot reach

@@ -223,5 +223,43 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswer, ()) {
   }
 }
 
+// The same with vehicles of mixed widths (each track's extra lateral room differs, so the two parts
+// of an instant's Blocking and the widest extra over all tracks differ), an ego off its lane's
+// centre, and a re-check's instants (elapsed since the decision): the memo's shortcuts (an instant
+// clear of every vehicle skips the path; a known Blocking decides without the widest extra) agree
+// with the plain check.
+RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswerWithMixedWidths, ()) {
+  const Scenario s = road_only();
+  const auto vehicle = [](int id) {
+    MainLaneVehicle v = lane_vehicle(id, *rc::gen::inRange(-800, 1200) / 10.0, *rc::gen::inRange(0, 350) / 10.0);
+    v.width_m = *rc::gen::inRange(15, 30) / 10.0;
+    return v;
+  };
+  std::vector<MainLaneVehicle> lane;
+  const int n = *rc::gen::inRange(1, 4);
+  for (int i = 0; i < n; ++i) lane.push_back(vehicle(i + 1));
+  const std::vector<LaneGap> gaps = enumerate_gaps(lane);
+  const LaneGap gap = gaps[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(gaps.size())))];
+  const double rho_s = *rc::gen::inRange(20, 120) / 10.0;
+  GapTracks tracks = gap_tracks(lane, gap, rho_s, no_accel);
+  const int n_beside = *rc::gen::inRange(0, 3);
+  for (int i = 0; i < n_beside; ++i) tracks.beside.push_back(beside_track(vehicle(10 + i), 3.5, 0.0));
+  const double ego_y_m = -3.5 + *rc::gen::inRange(0, 15) / 10.0;
+  const double step_s = rho_s / kOccupancySamples;
+  const OccupancyInstants when{step_s, *rc::gen::inRange(0, 20) * step_s * 0.5, rho_s * *rc::gen::inRange(5, 15) / 10.0};
+  const double v0 = *rc::gen::inRange(0, 300) / 10.0;
+  OccupancyMemo memo;
+  for (int speed = 0; speed < 3; ++speed) {
+    const SpeedRamp ego{v0, *rc::gen::inRange(0, 300) / 10.0, 2.0, 4.0};
+    const double pc_m = ego.distance_at_m(0.5 * rho_s);
+    memo.forget_ramp();
+    for (int k = 0; k < 6; ++k) {
+      const Sigmoid path{3.5, *rc::gen::inRange(5, 150) / 100.0, pc_m, -3.5};
+      const bool plain = occupancy_clear(s, 0.0, ego_y_m, path, ego, when, tracks, 1.5);
+      RC_ASSERT(occupancy_clear(s, 0.0, ego_y_m, path, ego, when, tracks, 1.5, &memo) == plain);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mg

@@ -55,5 +55,29 @@ TEST(PotentialField, TargetLaneIsLowerThanSideLaneWithoutObstacles) {
   EXPECT_LT(field_potential(scene, p, 100, 0.0), field_potential(scene, p, 100, -3.5));
 }
 
+// The floor the RCPP search prunes with (field_potential_floor): never above the field anywhere,
+// whatever the parameters (within their ranges), the obstacles and the mode.
+RC_GTEST_PROP(PotentialField, TheFloorIsNeverAboveTheField, ()) {
+  Road road;
+  road.main_lanes = *rc::gen::inRange(1, 4);
+  PlannerParams p;
+  p.pf_road_beta = *rc::gen::inRange(0, 1000) / 100.0;
+  p.pf_obstacle_gamma = *rc::gen::inRange(0, 2000) / 100.0;
+  p.pf_obstacle_u = *rc::gen::inRange(0, 100) / 100.0;
+  p.pf_lane_xi = *rc::gen::inRange(0, 1000) / 1000.0;
+  p.pf_search_distance_m = *rc::gen::inRange(1, 10000) / 100.0;
+  const LaneCentreMode mode = *rc::gen::inRange(0, 2) == 0 ? LaneCentreMode::kMerging : LaneCentreMode::kKeeping;
+  FieldScene scene{&road, 1.9, {}, 0.0, mode};
+  const int n = *rc::gen::inRange(0, 5);
+  for (int i = 0; i < n; ++i)
+    scene.obstacles.push_back(obstacle_field_from_rss(*rc::gen::inRange(-500, 500) / 10.0, *rc::gen::inRange(-70, 70) / 10.0,
+                                                      *rc::gen::inRange(5, 50) / 10.0, *rc::gen::inRange(50, 800) / 10.0));
+  for (int k = 0; k < 20; ++k) {
+    const double x = *rc::gen::inRange(-1000, 1000) / 10.0;
+    const double y = *rc::gen::inRange(-100000, 100000) / 10000.0;
+    RC_ASSERT(field_potential(scene, p, x, y) >= field_potential_floor(p, mode));
+  }
+}
+
 }  // namespace
 }  // namespace mg

@@ -1,0 +1,39 @@
+#include "cli/planner_option.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command.h"
+#include "planner/exec_planner.h"
+#include "planner/planner.h"
+
+namespace mg::cli {
+
+void add_planner_options(CLI::App& app, PlannerChoice& choice, const std::string& help) {
+  const CLI::Validator known(
+      [](std::string& name) -> std::string {
+        const std::vector<std::string> names = planner_names();
+        if (is_exec_planner(name) || std::find(names.begin(), names.end(), name) != names.end()) return "";
+        std::string list;
+        for (const std::string& n : names) list += n + ", ";
+        return "unknown planner '" + name + "' (known: " + list + "or exec:COMMAND)";
+      },
+      "PLANNER");
+  app.add_option("--planner", choice.name, help)->check(known);
+  app.add_option("--planner-timeout", choice.timeout_s, "seconds an exec planner may take per call (default 1)")
+      ->check(CLI::Range(0.001, 3600.0));
+}
+
+PlannerIdentity start_planner(const std::string& name, const PlannerChoice& choice, const std::string& log_dir) {
+  set_exec_options({choice.timeout_s, log_dir});
+  if (!is_exec_planner(name)) return {};
+  try {
+    return start_exec_planner(name);
+  } catch (const ExecStartError& e) {
+    throw UsageError(std::string("--planner: ") + e.what());
+  }
+}
+
+}  // namespace mg::cli

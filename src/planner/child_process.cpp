@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 
@@ -46,6 +47,31 @@ void default_signals(posix_spawnattr_t& attr) {
   // ends the campaign's runs in flight first, and end() kills whatever the command started.
   posix_spawnattr_setpgroup(&attr, 0);
   posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+}
+
+// An executable file, by path or found in PATH (as the shell would look it up).
+bool is_program(const std::string& word) {
+  if (word.find('/') != std::string::npos) return ::access(word.c_str(), X_OK) == 0;
+  const char* path = std::getenv("PATH");
+  std::string dirs = path != nullptr ? path : "";
+  for (std::size_t from = 0; from <= dirs.size();) {
+    const std::size_t to = std::min(dirs.find(':', from), dirs.size());
+    const std::string dir = to > from ? dirs.substr(from, to - from) : ".";
+    if (::access((dir + "/" + word).c_str(), X_OK) == 0) return true;
+    from = to + 1;
+  }
+  return false;
+}
+
+// A single command naming a program runs as `exec COMMAND`: the shell is replaced by the planner,
+// so that the child's pid, exit status and signal are the planner's own (dash would fork and
+// report a crash as status 128 + signal). Lists, pipelines, subshells, builtins, keywords and
+// leading assignments keep their shell.
+std::string shell_line(const std::string& command) {
+  const std::size_t start = command.find_first_not_of(" \t");
+  if (start == std::string::npos || command.find_first_of(";&|()`\n") != std::string::npos) return command;
+  const std::string first = command.substr(start, command.find_first_of(" \t", start) - start);
+  return is_program(first) ? "exec " + command : command;
 }
 
 int remaining_ms(Clock::time_point deadline) {
@@ -91,7 +117,7 @@ ChildProcess::ChildProcess(const std::string& command, const std::string& stderr
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
   default_signals(attr);
-  std::string sh = "/bin/sh", dash_c = "-c", cmd = command;
+  std::string sh = "/bin/sh", dash_c = "-c", cmd = shell_line(command);
   char* argv[] = {sh.data(), dash_c.data(), cmd.data(), nullptr};
   const int err = ::posix_spawn(&pid_, "/bin/sh", &actions, &attr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);

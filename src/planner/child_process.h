@@ -22,7 +22,8 @@ enum class IoStatus { kDone, kTimeout, kClosed };
 
 class ChildProcess {
  public:
-  // Starts `command` through /bin/sh in a new process group. Its stderr is appended to
+  // Starts `command` through /bin/sh (exec'd into when it is a single simple command) in a new
+  // process group. Its stderr is appended to
   // `stderr_path`, or inherited when that is empty. Throws ChildStartError.
   ChildProcess(const std::string& command, const std::string& stderr_path);
   // Ends the child (end(): no process of its group is left).

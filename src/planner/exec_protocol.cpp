@@ -1,5 +1,6 @@
 #include "planner/exec_protocol.h"
 
+#include <charconv>
 #include <cmath>
 #include <string_view>
 
@@ -86,24 +87,46 @@ V2vMessage message_of(const json& m, const Scenario& scenario, const std::string
   return out;
 }
 
-json ego_json(const VehicleState& e) {
-  return {{"x_m", e.x_m},         {"y_m", e.y_m},
-          {"yaw_rad", e.yaw_rad}, {"speed_mps", e.vx_mps},
-          {"lat_speed_mps", e.vy_mps}, {"accel_mps2", e.accel_mps2},
-          {"yaw_rate_radps", e.yaw_rate_radps}, {"steer_rad", e.steer_rad}};
+// The observe request is written on every planner cycle (some 45,000 times per second of a
+// campaign through a fast planner): written directly, in the shortest text that reads back to the
+// same double (std::to_chars), at a fifth of the cost of building it as a nlohmann::json.
+class LineWriter {
+ public:
+  LineWriter& raw(std::string_view text) {
+    out_ += text;
+    return *this;
+  }
+  LineWriter& number(std::string_view key, double v) {
+    raw(key);
+    if (!std::isfinite(v)) return raw("null");
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+    out_.append(buf, end);
+    return *this;
+  }
+  std::string take() { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+void write_ego(LineWriter& w, const VehicleState& e) {
+  w.number("\"ego\":{\"x_m\":", e.x_m).number(",\"y_m\":", e.y_m).number(",\"yaw_rad\":", e.yaw_rad);
+  w.number(",\"speed_mps\":", e.vx_mps).number(",\"lat_speed_mps\":", e.vy_mps).number(",\"accel_mps2\":", e.accel_mps2);
+  w.number(",\"yaw_rate_radps\":", e.yaw_rate_radps).number(",\"steer_rad\":", e.steer_rad).raw("}");
 }
 
-json other_json(const ObservedVehicle& o) {
-  return {{"id", o.id},
-          {"x_m", o.state.x_m},
-          {"y_m", o.state.y_m},
-          {"yaw_rad", o.state.yaw_rad},
-          {"speed_mps", o.state.vx_mps},
-          {"accel_mps2", o.state.accel_mps2},
-          {"length_m", o.size.length_m},
-          {"width_m", o.size.width_m},
-          {"limits", limits_to_json(o.limits)},
-          {"v2v_capable", o.v2v_capable}};
+// The keys of limits_to_json (core/scenario.h), which the protocol test holds this to.
+void write_other(LineWriter& w, const ObservedVehicle& o) {
+  w.number("{\"id\":", o.id).number(",\"x_m\":", o.state.x_m).number(",\"y_m\":", o.state.y_m);
+  w.number(",\"yaw_rad\":", o.state.yaw_rad).number(",\"speed_mps\":", o.state.vx_mps);
+  w.number(",\"accel_mps2\":", o.state.accel_mps2).number(",\"length_m\":", o.size.length_m);
+  w.number(",\"width_m\":", o.size.width_m);
+  const Limits& l = o.limits;
+  w.number(",\"limits\":{\"accel_max_mps2\":", l.accel_max_mps2).number(",\"brake_min_mps2\":", l.brake_min_mps2);
+  w.number(",\"brake_max_mps2\":", l.brake_max_mps2).number(",\"lat_accel_max_mps2\":", l.lat_accel_max_mps2);
+  w.number(",\"lat_brake_min_mps2\":", l.lat_brake_min_mps2).raw("},\"v2v_capable\":");
+  w.raw(o.v2v_capable ? "true}" : "false}");
 }
 
 json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
@@ -131,13 +154,17 @@ std::string reset_request(const Scenario& scenario) {
 }
 
 std::string observe_request(const WorldSnapshot& world) {
-  json others = json::array();
-  for (const ObservedVehicle& o : world.others) others.push_back(other_json(o));
-  json inbox = json::array();
+  LineWriter w;
+  w.number("{\"type\":\"observe\",\"time_s\":", world.time_s).raw(",");
+  write_ego(w, world.ego);
+  w.raw(",\"others\":[");
+  for (std::size_t i = 0; i < world.others.size(); ++i) {
+    if (i > 0) w.raw(",");
+    write_other(w, world.others[i]);
+  }
+  json inbox = json::array();  // rare (V2V replies only): as JSON
   for (const V2vMessage& m : world.inbox) inbox.push_back(message_json(m));
-  return json{{"type", "observe"}, {"time_s", world.time_s}, {"ego", ego_json(world.ego)},
-              {"others", std::move(others)}, {"inbox", std::move(inbox)}}
-      .dump();
+  return w.raw("],\"inbox\":").raw(inbox.dump()).raw("}").take();
 }
 
 std::string bye_request() { return R"({"type":"bye"})"; }

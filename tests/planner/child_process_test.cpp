@@ -46,6 +46,13 @@ TEST(ChildProcess, ACrashIsReportedWithItsSignal) {
   EXPECT_EQ(child.exit_description().rfind("was killed by signal 11", 0), 0u) << child.exit_description();
 }
 
+TEST(ChildProcess, ASingleCommandReplacesTheShellSoItsSignalIsSeen) {
+  ChildProcess direct("sh -c 'kill -ABRT $$'", "");  // without exec, dash would report status 134
+  std::string line;
+  EXPECT_EQ(direct.read_line(line, 5.0), IoStatus::kClosed);
+  EXPECT_EQ(direct.exit_description().rfind("was killed by signal 6", 0), 0u) << direct.exit_description();
+}
+
 TEST(ChildProcess, WritingToAChildThatExitedIsNoSigpipe) {
   ChildProcess child("exit 0", "");
   std::string line;

@@ -3,6 +3,7 @@
 // reused child; each misbehaviour is a PlannerFault of its kind, within the timeout, with no
 // process left; a command that does not answer hello cannot start. Timing bounds are generous.
 #include <chrono>
+#include <ostream>
 #include <regex>
 #include <string>
 #include <thread>
@@ -59,6 +60,7 @@ struct Misbehaviour {
   const char* mode;
   const char* kind;
 };
+void PrintTo(const Misbehaviour& m, std::ostream* os) { *os << m.mode; }
 
 class ExecPlannerFault : public ::testing::TestWithParam<Misbehaviour> {};
 

@@ -54,6 +54,9 @@ TEST(ExecProtocol, ObserveHoldsTheContractFields) {
   ASSERT_EQ(observe.at("others").size(), std4().vehicles.size());
   for (const char* key : {"id", "x_m", "y_m", "yaw_rad", "speed_mps", "accel_mps2", "length_m", "width_m", "limits", "v2v_capable"})
     EXPECT_TRUE(observe.at("others")[0].contains(key)) << key;
+  EXPECT_EQ(observe.at("others")[0].at("limits"), limits_to_json(std4().vehicles[0].limits));
+  EXPECT_EQ(observe.at("others")[0].at("x_m"), std4().vehicles[0].x_m);  // numbers read back exactly
+  EXPECT_EQ(observe.at("ego").at("speed_mps"), std4().ego.speed_mps);
   EXPECT_TRUE(observe.at("inbox").is_array());
 }
 

@@ -212,10 +212,11 @@ int run_fuzz(const std::vector<std::string>& args) {
     o.on_checkpoint = [&o, &report_dir](const fuzz::CampaignResult& r) { fuzz::write_campaign_report(report_dir, o, r, {}); };
   fuzz::CampaignResult result = fuzz::run_campaign(o, make_check);
   if (result.interrupted) result.stop_signal = signal_name(g_stop_signal.load());
-  if (is_exec_planner(o.planner))
-    result.planner_process = {{"hello", {{"name", hello.name}, {"version", hello.version}}}, {"logs", exec_planner_logs()}};
   if (::isatty(STDERR_FILENO)) std::cerr << "\n";
-  if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, write_liability_reports(report_dir, result));
+  const auto liability_reports = report_dir.empty() ? std::map<std::string, std::string>{} : write_liability_reports(report_dir, result);
+  if (is_exec_planner(o.planner))  // after the liability reports: their runs have a log too
+    result.planner_process = {{"hello", {{"name", hello.name}, {"version", hello.version}}}, {"logs", exec_planner_logs()}};
+  if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, liability_reports);
   if (json) std::cout << fuzz::campaign_summary_json(o, result).dump(2) << "\n";
   else print_human(o, result);
   if (result.interrupted) return kExitInterrupted;

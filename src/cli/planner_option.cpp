@@ -1,7 +1,6 @@
 #include "cli/planner_option.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include <CLI/CLI.hpp>
 

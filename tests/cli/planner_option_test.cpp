@@ -95,7 +95,7 @@ TEST(ExecPlannerCli, ACrashIsShrunkIntoACaseThatReplaysThroughTheSameCommand) {
   EXPECT_EQ(summary.at("violations"), 3);
   EXPECT_EQ(summary.at("failures_by_property").at("planner_responds"), 3);
   EXPECT_EQ(summary.at("planner_process").at("hello").at("name"), "fake-crash");
-  EXPECT_EQ(summary.at("planner_process").at("logs").size(), 2u);
+  EXPECT_GE(summary.at("planner_process").at("logs").size(), 2u);  // one per worker at least
   ASSERT_EQ(summary.at("new_cases").size(), 1u);
   const std::string case_path = summary.at("new_cases")[0];
   std::ifstream in(case_path);

@@ -1,6 +1,7 @@
 #include "cli/planner_option.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include <CLI/CLI.hpp>
 
@@ -21,8 +22,14 @@ void add_planner_options(CLI::App& app, PlannerChoice& choice, const std::string
       },
       "PLANNER");
   app.add_option("--planner", choice.name, help)->check(known);
-  app.add_option("--planner-timeout", choice.timeout_s, "seconds an exec planner may take per call (default 1)")
-      ->check(CLI::Range(0.001, 3600.0));
+  // CLI::Range lets NaN through (every comparison with it is false).
+  const CLI::Validator seconds(
+      [](std::string& text) -> std::string {
+        const double s = std::strtod(text.c_str(), nullptr);
+        return s >= 0.001 && s <= 3600.0 ? "" : "expected seconds in [0.001, 3600], got '" + text + "'";
+      },
+      "S");
+  app.add_option("--planner-timeout", choice.timeout_s, "seconds an exec planner may take per call (default 1)")->check(seconds);
 }
 
 PlannerIdentity start_planner(const std::string& name, const PlannerChoice& choice, const std::string& log_dir) {

@@ -85,6 +85,14 @@ TEST(ExecPlannerCli, APlannerThatCannotStartIsAUsageError) {
   EXPECT_TRUE(marked_processes_gone("c2"));
 }
 
+TEST(ExecPlannerCli, TheTimeoutMustBeSecondsInRange) {
+  for (const char* bad : {"nan", "inf", "0", "-1", "1e9", "x"}) {
+    const auto r = test::run_cli({"check", kScenario, "--planner-timeout", bad});
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("--planner-timeout"), std::string::npos) << r.err;
+  }
+}
+
 TEST(ExecPlannerCli, ACrashIsShrunkIntoACaseThatReplaysThroughTheSameCommand) {
   const fs::path corpus = scratch("crash");
   const auto r = test::run_cli({"fuzz", "--planner", fake("crash", "c3"), "--runs", "3", "--jobs", "2", "--seed", "1",

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -118,6 +119,23 @@ TEST(ExecPlannerCli, ACrashIsShrunkIntoACaseThatReplaysThroughTheSameCommand) {
   EXPECT_EQ(fixed.exit_code, 1) << fixed.out << fixed.err;
   EXPECT_NE(fixed.out.find("DOES NOT REPRODUCE"), std::string::npos) << fixed.out;
   EXPECT_TRUE(marked_processes_gone("c3"));
+}
+
+// The example users copy (examples/python_planner/): a short campaign finds its flaws, and every
+// case it writes replays through the same command.
+TEST(ExecPlannerCli, ThePythonExampleIsFoundFaultyAndItsCasesReplay) {
+  if (std::system("python3 -c pass > /dev/null 2>&1") != 0) GTEST_SKIP() << "no python3 (the quick start installs it)";
+  const fs::path dir = scratch("python");
+  const std::string planner = "exec:python3 " + std::string(MG_SOURCE_DIR) + "/examples/python_planner/planner.py";
+  const auto r = test::run_cli({"fuzz", "--planner", planner, "--runs", "12", "--jobs", "2", "--seed", "1",
+                                "--shrink-attempts", "10", "--corpus", (dir / "corpus").string(), "--json"});
+  ASSERT_EQ(r.exit_code, 1) << r.err;
+  const auto summary = nlohmann::json::parse(r.out);
+  EXPECT_GT(summary.at("violations").get<int>(), 0);
+  EXPECT_EQ(summary.at("planner_process").at("hello").at("name"), "python-naive-gap");
+  const auto replayed = test::run_cli({"replay", (dir / "corpus").string()});
+  EXPECT_EQ(replayed.exit_code, 0) << replayed.out << replayed.err;
+  fs::remove_all(dir);
 }
 
 TEST(ExecPlannerCli, CampaignsAreDeterministicAcrossJobs) {

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "fuzz/corpus_case.h"
+#include "planner/exec_planner.h"
 
 namespace mg::fuzz {
 namespace {
@@ -196,6 +197,7 @@ class Campaign {
     for (const PropertyFailure& f : final_run.failures)
       if (signature_of(final_run.planner, f) == signature) c.failure = f;
     c.provenance = {"mergeguard fuzz", opt_.seed, i, shrunk.steps, shrunk.attempts, shrunk.minimal, utc_now_iso8601()};
+    c.planner_hello = exec_planner_identity(signature.planner);
     std::lock_guard lock(mutex_);
     SignatureRecord& rec = signatures_.at(signature);
     if (rec.first_run != i) return;  // a lower run index failed meanwhile; its case wins

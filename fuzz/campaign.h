@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "fuzz/guided_search.h"
 #include "fuzz/properties.h"
 #include "fuzz/scenario_gen.h"
@@ -87,6 +89,9 @@ struct CampaignResult {
   double seconds = 0.0;
   bool interrupted = false;
   std::string stop_signal;                     // e.g. "SIGTERM" when interrupted (set by the CLI)
+  // An exec planner's process (set by the CLI): {"hello": {name, version}, "logs": [stderr log
+  // files, one per worker]}; null for registered planners.
+  nlohmann::json planner_process;
   std::map<Signature, SignatureRecord> signatures;
   std::map<std::string, std::uint64_t> by_property, by_rule, by_party;  // (scenario, signature) counts
   std::map<std::string, MarginStats> margins;  // per rule, over every checked scenario (rule_coverage.h)

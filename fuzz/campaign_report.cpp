@@ -215,6 +215,7 @@ std::string headline(const CampaignOptions& o, const CampaignResult& r) {
         << r.guided_failing_scenarios << " of them failed, and " << found << " of the " << r.signatures.size()
         << " signatures were first seen in a guided run.";
   }
+  if (!r.planner_process.is_null()) out << " Planner process: " << r.planner_process.dump() << ".";
   if (r.first_failure_run)
     out << " First failing run: " << *r.first_failure_run << " (first failure after " << fixed(r.first_failure_s.value_or(0.0), 2) << " s).";
   return out.str();
@@ -284,7 +285,7 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
   }
   json not_applicable = json::object();
   for (const auto& [rule, why] : rules_not_applicable(o.planner)) not_applicable[rule] = why;
-  return {{"planner", o.planner},
+  json summary = {{"planner", o.planner},
           {"seed", o.seed},
           {"runs", o.runs ? json(*o.runs) : json(nullptr)},
           {"time_budget_s", o.time_s ? json(*o.time_s) : json(nullptr)},
@@ -318,6 +319,8 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
           {"rules_never_exercised", r.scenarios > 0 ? rules_never_exercised(o.planner, r) : std::vector<std::string>{}},
           {"rules_not_applicable", not_applicable},
           {"date", utc_now_iso8601()}};
+  if (!r.planner_process.is_null()) summary["planner_process"] = r.planner_process;
+  return summary;
 }
 
 void write_campaign_report(const std::string& dir, const CampaignOptions& o, const CampaignResult& r,

@@ -139,7 +139,7 @@ CaseVerdict verdict_of(const RunOutcome& outcome) {
 }
 
 json case_to_json(const CorpusCase& c) {
-  return {{"format_version", c.format_version},
+  json j = {{"format_version", c.format_version},
           {"signature", signature_to_json(c.signature)},
           {"planner", c.signature.planner},
           {"property", c.signature.property},
@@ -147,6 +147,8 @@ json case_to_json(const CorpusCase& c) {
           {"verdict", verdict_to_json(c.verdict)},
           {"provenance", provenance_to_json(c.provenance)},
           {"scenario", scenario_to_json(c.scenario)}};
+  if (c.planner_hello) j["planner_hello"] = {{"name", c.planner_hello->name}, {"version", c.planner_hello->version}};
+  return j;
 }
 
 CorpusCase case_from_json(const json& j, const std::string& source) {
@@ -156,7 +158,8 @@ CorpusCase case_from_json(const json& j, const std::string& source) {
   if (version > kCorpusFormatVersion)
     r.fail("format_version", "format version " + std::to_string(version) + " is newer than this mergeguard reads (" +
                                  std::to_string(kCorpusFormatVersion) + ")");
-  r.only_keys({"format_version", "signature", "planner", "property", "failure", "verdict", "provenance", "scenario"});
+  r.only_keys({"format_version", "signature", "planner", "property", "failure", "verdict", "provenance", "scenario",
+               "planner_hello"});
   CorpusCase c;
   c.format_version = static_cast<int>(version);
   c.signature = signature_from(r.object("signature"));
@@ -165,6 +168,11 @@ CorpusCase case_from_json(const json& j, const std::string& source) {
   c.failure = failure_from(r.object("failure"));
   c.verdict = verdict_from(r.object("verdict"));
   c.provenance = provenance_from(r.object("provenance"));
+  if (r.has("planner_hello")) {
+    const ObjectReader hello = r.object("planner_hello");
+    hello.only_keys({"name", "version"});
+    c.planner_hello = PlannerIdentity{hello.string("name"), hello.string("version")};
+  }
   if (!j.contains("scenario")) r.fail("scenario", "missing");
   c.scenario = scenario_from_json(j.at("scenario"), source + " (/scenario)");
   return c;

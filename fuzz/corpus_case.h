@@ -13,6 +13,7 @@
 
 #include "core/scenario.h"
 #include "fuzz/properties.h"
+#include "planner/exec_protocol.h"
 #include "rules/check.h"
 
 namespace mg::fuzz {
@@ -55,6 +56,9 @@ struct CorpusCase {
   CaseVerdict verdict;
   Provenance provenance;
   Scenario scenario;
+  // What an exec planner said it was in its hello (key "planner_hello"); absent for registered
+  // planners. Informative: replay runs the command in "planner" whatever it answers.
+  std::optional<PlannerIdentity> planner_hello;
 };
 
 CaseVerdict verdict_of(const RunOutcome& outcome);

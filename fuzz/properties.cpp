@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "planner/planner_fault.h"
+
 namespace mg::fuzz {
 namespace {
 
@@ -84,7 +86,8 @@ const std::vector<std::string>& property_names() {
   static const std::vector<std::string> names{property::kEgoNeverLiable, property::kCompliantSafe,
                                               property::kCollisionLiable, property::kSideLaneEnd,
                                               property::kNoOscillation,  property::kDeterminism,
-                                              property::kProgress,       property::kCheckCompletes};
+                                              property::kProgress,       property::kCheckCompletes,
+                                              property::kPlannerResponds};
   return names;
 }
 
@@ -111,6 +114,9 @@ RunOutcome run_properties(const Scenario& scenario, const CheckFn& check, const 
     std::optional<std::uint64_t> rerun;
     if (check_determinism) rerun = check(scenario).trace_digest;
     outcome.failures = evaluate_properties(scenario, *outcome.result, rerun);
+  } catch (const PlannerFault& fault) {
+    outcome.result.reset();
+    outcome.failures = {{property::kPlannerResponds, fault.kind, kEgoId, fault.time_s, -1.0, fault.what()}};
   } catch (const std::exception& e) {
     outcome.result.reset();
     outcome.failures = {{property::kCheckCompletes, kRuleException, kNobody, 0.0, -1.0, e.what()}};

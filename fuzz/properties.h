@@ -24,6 +24,9 @@ inline constexpr const char* kNoOscillation = "no_oscillation";
 inline constexpr const char* kDeterminism = "determinism";
 inline constexpr const char* kProgress = "progress";
 inline constexpr const char* kCheckCompletes = "check_completes";         // the suite itself must not throw
+// An exec planner answered every call in time and within the protocol (planner/planner_fault.h);
+// its rule is the fault's kind (planner_timeout, planner_exit, planner_reply), its party the ego.
+inline constexpr const char* kPlannerResponds = "planner_responds";
 }  // namespace property
 const std::vector<std::string>& property_names();
 
@@ -59,8 +62,9 @@ struct RunOutcome {
   std::optional<CheckResult> result;
   std::vector<PropertyFailure> failures;
 };
-// Runs `check` (twice when `check_determinism`) and evaluates every property. An exception
-// thrown by the check is itself a failure of property check_completes, never propagated.
+// Runs `check` (twice when `check_determinism`) and evaluates every property. A PlannerFault
+// thrown by the check fails planner_responds; any other exception fails check_completes; neither
+// is propagated.
 RunOutcome run_properties(const Scenario& scenario, const CheckFn& check, const std::string& planner,
                           bool check_determinism);
 

@@ -1,10 +1,13 @@
-// mergeguard fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P]
+// mergeguard fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P] [--planner-timeout S]
 //                 [--search random|guided] [--corpus DIR] [--report DIR] [--json]: a property-based fuzzing campaign
 // (spec §9, §10; docs/fuzzing.md). Exit 0 when no scenario failed a property, 1 when one did,
 // 3 when a signal (SIGINT, SIGTERM, SIGHUP) stopped it early (its report and summary still written).
+// An exec planner's children (one per worker) log their stderr into the report directory, or a
+// temporary one without --report; the summary names the files.
 #include <unistd.h>
 
 #include <atomic>
+#include <filesystem>
 #include <csignal>
 #include <cstdio>
 #include <iterator>
@@ -15,12 +18,15 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
+#include "cli/planner_option.h"
 #include "core/atomic_file.h"
 #include "core/output_path.h"
 #include "fuzz/campaign.h"
 #include "fuzz/campaign_report.h"
 #include "fuzz/corpus_case.h"
+#include "planner/exec_planner.h"
 #include "planner/planner.h"
+#include "planner/planner_fault.h"
 #include "rules/check.h"
 #include "sim/checked_run.h"
 #include "rules/report_json.h"
@@ -107,11 +113,32 @@ std::map<std::string, std::string> write_liability_reports(const std::string& di
   std::map<std::string, std::string> links;
   for (const std::string& path : r.new_cases) {
     const fuzz::CorpusCase c = fuzz::load_case(path);
+    // A planner_responds case has no run to report on (the case says why); a planner may also
+    // fail to respond only in this run (a timeout on a loaded machine): no report then either.
+    if (c.signature.property == fuzz::property::kPlannerResponds) continue;
     const std::string rel = "cases/" + c.signature.file_stem();
-    write_check_reports(dir + "/" + rel, check_scenario(c.scenario, c.signature.planner, PlannerAccount::kDecisions));
+    CheckResult result;
+    try {
+      result = check_scenario(c.scenario, c.signature.planner, PlannerAccount::kDecisions);
+    } catch (const PlannerFault&) {
+      continue;
+    }
+    write_check_reports(dir + "/" + rel, result);
     links[path] = rel + "/report.html";
   }
   return links;
+}
+
+// Where an exec planner's children write their stderr: the report directory, or a fresh
+// temporary directory (named in the summary) when there is none.
+std::string planner_log_dir(const std::string& report_dir) {
+  if (!report_dir.empty()) return report_dir;
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("mergeguard-planner-logs-" + std::to_string(::getpid()));
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw UsageError("cannot create the planner log directory " + dir.string() + ": " + ec.message());
+  return dir.string();
 }
 
 void print_human(const fuzz::CampaignOptions& o, const fuzz::CampaignResult& r) {
@@ -125,6 +152,7 @@ void print_human(const fuzz::CampaignOptions& o, const fuzz::CampaignResult& r) 
     std::cout << "  " << sig.key() << ": " << rec.count << " scenarios, first run " << rec.first_run
               << (rec.known_before ? " (already in the corpus)" : "") << (rec.case_path.empty() ? "" : " -> " + rec.case_path)
               << "\n";
+  if (!r.planner_process.is_null()) std::cout << "  planner process: " << r.planner_process.dump() << "\n";
   for (const std::string& line : fuzz::coverage_warnings(o, r))
     if (line.rfind("Warning", 0) == 0) std::cout << line << "\n";
 }
@@ -146,7 +174,8 @@ int run_fuzz(const std::vector<std::string>& args) {
   app.add_option("--seed", o.seed, "campaign seed (run i uses a seed derived from it and i)");
   app.add_option("--jobs", o.jobs, "parallel workers (results do not depend on it)");
   app.add_option("--shard", shard, "K/N: run only the indices i with i mod N = K");
-  app.add_option("--planner", o.planner, "a registered planner (built in: rcpp, rcpp-coop, tripfield)")->check(CLI::IsMember(planner_names()));
+  PlannerChoice choice{"rcpp"};
+  add_planner_options(app, choice, "a registered planner (built in: rcpp, rcpp-coop, tripfield) or 'exec:COMMAND ARGS'");
   app.add_option("--corpus", o.corpus_dir, "corpus directory (minimal cases are added here, one per new signature)");
   app.add_option("--report", report_dir, "write report.json, report.md, report.html here");
   app.add_flag("--json", json, "print one JSON summary on stdout");
@@ -162,6 +191,7 @@ int run_fuzz(const std::vector<std::string>& args) {
   app.add_option("--shrink-attempts", o.shrink.max_attempts, "candidate checks per shrink (default 600)");
   app.add_option("--shrink-time", o.shrink.max_seconds, "seconds per shrink (default 60)");
   if (!parse_args(app, args)) return kExitOk;
+  o.planner = choice.name;
   parse_shard(shard, o);
   o.gen.targeted_families = families == "mixed";
   o.search = *fuzz::search_mode_from_string(search);
@@ -176,6 +206,8 @@ int run_fuzz(const std::vector<std::string>& args) {
   if (!o.corpus_dir.empty()) prepare_output_dir("--corpus", o.corpus_dir);
   if (!report_dir.empty()) prepare_output_dir("--report", report_dir);
   if (!o.corpus_dir.empty()) remove_stale_temporaries(o.corpus_dir);  // of campaigns killed while writing
+  const std::string log_dir = is_exec_planner(o.planner) ? planner_log_dir(report_dir) : "";
+  const PlannerIdentity hello = start_planner(o.planner, choice, log_dir);
   StopSignalGuard guard;
   o.stop = &g_stop;
   o.on_progress = progress_printer(::isatty(STDERR_FILENO) != 0);
@@ -184,7 +216,10 @@ int run_fuzz(const std::vector<std::string>& args) {
   fuzz::CampaignResult result = fuzz::run_campaign(o, make_check);
   if (result.interrupted) result.stop_signal = signal_name(g_stop_signal.load());
   if (::isatty(STDERR_FILENO)) std::cerr << "\n";
-  if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, write_liability_reports(report_dir, result));
+  const auto liability_reports = report_dir.empty() ? std::map<std::string, std::string>{} : write_liability_reports(report_dir, result);
+  if (is_exec_planner(o.planner))  // after the liability reports: their runs have a log too
+    result.planner_process = {{"hello", {{"name", hello.name}, {"version", hello.version}}}, {"logs", exec_planner_logs()}};
+  if (!report_dir.empty()) fuzz::write_campaign_report(report_dir, o, result, liability_reports);
   if (json) std::cout << fuzz::campaign_summary_json(o, result).dump(2) << "\n";
   else print_human(o, result);
   if (result.interrupted) return kExitInterrupted;
@@ -195,7 +230,7 @@ int run_fuzz(const std::vector<std::string>& args) {
 
 Command fuzz_command() {
   return {"fuzz",
-          "fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P] [--search random|guided] [--corpus DIR] [--report DIR] [--json]",
+          "fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P|exec:CMD] [--planner-timeout S] [--search random|guided] [--corpus DIR] [--report DIR] [--json]",
           run_fuzz};
 }
 

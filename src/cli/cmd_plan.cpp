@@ -1,5 +1,6 @@
 // mergeguard plan SCENARIO.json [--planner P] [--json]: the planner's decision at the scenario's
-// initial state, without simulating (spec §10).
+// initial state, without simulating (spec §10). An exec planner that misbehaves fails property
+// planner_responds: exit 1 with the reason.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -8,8 +9,10 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
+#include "cli/planner_option.h"
 #include "core/scenario.h"
 #include "planner/planner.h"
+#include "planner/planner_fault.h"
 
 namespace mg::cli {
 namespace {
@@ -50,16 +53,24 @@ void print_human(const std::string& scenario, const std::string& planner, const 
 int run_plan(const std::vector<std::string>& args) {
   CLI::App app("The planner's decision at the scenario's initial state", "mergeguard plan");
   std::string path;
-  std::string planner_name = "rcpp";
+  PlannerChoice choice{"rcpp"};
   bool json = false;
   app.add_option("scenario", path, "scenario JSON file")->required();
-  app.add_option("--planner", planner_name, "a registered planner (built in: rcpp, rcpp-coop, tripfield)")->check(CLI::IsMember(planner_names()));
+  add_planner_options(app, choice, "a registered planner (built in: rcpp, rcpp-coop, tripfield) or 'exec:COMMAND ARGS'");
   app.add_flag("--json", json, "print one JSON document");
   if (!parse_args(app, args)) return kExitOk;
   const Scenario scenario = load_scenario(path);
+  const std::string& planner_name = choice.name;
+  start_planner(planner_name, choice);
   auto planner = make_planner(planner_name);
   const WorldSnapshot world = initial_snapshot(scenario);
-  const PlanOutput out = planner->plan(world);
+  PlanOutput out;
+  try {
+    out = planner->plan(world);
+  } catch (const PlannerFault& fault) {
+    std::cout << "planner " << planner_name << ": VIOLATED planner_responds (" << fault.kind << "): " << fault.what() << "\n";
+    return kExitViolation;
+  }
   if (json) {
     nlohmann::json j;
     j["scenario"] = scenario.name;
@@ -68,6 +79,7 @@ int run_plan(const std::vector<std::string>& args) {
     j["target_speed_mps"] = out.target_speed_mps;
     j["proper_response"] = out.proper_response;
     j["messages_sent"] = out.outbox.size();
+    if (!out.decision.annotation.is_null()) j["annotation"] = out.decision.annotation;
     std::cout << j.dump(2) << "\n";
   } else {
     print_human(scenario.name, planner_name, out.decision, out);
@@ -78,7 +90,7 @@ int run_plan(const std::vector<std::string>& args) {
 }  // namespace
 
 Command plan_command() {
-  return {"plan", "plan SCENARIO.json [--planner rcpp|rcpp-coop|tripfield] [--json]", run_plan};
+  return {"plan", "plan SCENARIO.json [--planner rcpp|rcpp-coop|tripfield|exec:CMD] [--planner-timeout S] [--json]", run_plan};
 }
 
 }  // namespace mg::cli

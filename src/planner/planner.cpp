@@ -45,6 +45,7 @@ nlohmann::json decision_to_json(const Decision& d) {
   j["vo_star_mps"] = number_or_null(d.vo_star_mps);
   j["d_lon_star_m"] = number_or_null(d.d_lon_star_m);
   j["reason"] = d.reason;
+  if (!d.annotation.is_null()) j["annotation"] = d.annotation;
   return j;
 }
 

@@ -77,6 +77,9 @@ struct Decision {
   double vo_star_mps = std::numeric_limits<double>::quiet_NaN();
   double d_lon_star_m = std::numeric_limits<double>::quiet_NaN();
   std::string reason;   // one human-readable line explaining the decision
+  // A planner's own free-form account (an exec planner's `annotation`, docs/planner_protocol.md);
+  // null when it gives none. Reports and traces show it in planner_annotations; no rule reads it.
+  nlohmann::json annotation;
 };
 
 struct PathPoint {
@@ -119,7 +122,8 @@ class Planner {
 
 // A planner of the registry (planner/planner_registry.h): the built-ins "rcpp" (Definition 1
 // only), "rcpp-coop" (Definition 1 and 2), "tripfield" (baseline), then any registered by the
-// program. Returns nullptr for an unknown name. planner_names() lists them in registration order.
+// program, or an exec planner for "exec:COMMAND" (planner/exec_planner.h). Returns nullptr for an
+// unknown name. planner_names() lists the registered ones in registration order.
 std::unique_ptr<Planner> make_planner(const std::string& name);
 std::vector<std::string> planner_names();
 

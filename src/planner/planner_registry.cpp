@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "planner/exec_planner.h"
 #include "planner/rcpp_planner.h"
 #include "planner/tripfield_planner.h"
 
@@ -25,6 +26,8 @@ struct Registry {
 
 void add(std::vector<Entry>& entries, std::string name, PlannerFactory factory) {
   if (name.empty()) throw std::invalid_argument("register_planner: empty planner name");
+  if (is_exec_planner(name) || name == kExecPlannerPrefix)
+    throw std::invalid_argument("register_planner: names starting with 'exec:' are exec planners (planner/exec_planner.h)");
   if (!factory) throw std::invalid_argument("register_planner: empty factory for planner '" + name + "'");
   for (const Entry& e : entries)
     if (e.name == name) throw std::invalid_argument("register_planner: planner '" + name + "' is already registered");
@@ -56,6 +59,7 @@ void register_planner(std::string name, PlannerFactory factory) {
 }
 
 std::unique_ptr<Planner> make_planner(const std::string& name) {
+  if (is_exec_planner(name)) return make_exec_planner(name);
   Registry& r = registry();
   PlannerFactory factory;
   {

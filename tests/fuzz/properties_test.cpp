@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "planner/planner_fault.h"
+
 namespace mg::fuzz {
 namespace {
 
@@ -120,6 +122,20 @@ TEST(Properties, AThrowingCheckIsAFailureNotACrash) {
   ASSERT_EQ(o.failures.size(), 1u);
   EXPECT_EQ(o.failures[0].property, property::kCheckCompletes);
   EXPECT_EQ(o.failures[0].detail, "boom");
+}
+
+TEST(Properties, AMisbehavingPlannerFailsPlannerRespondsWithTheFaultAsItsRule) {
+  const RunOutcome o = run_properties(
+      one_vehicle_scenario(),
+      [](const Scenario&) -> CheckResult { throw PlannerFault(kFaultTimeout, 1.5, "planner process 'exec:x' (pid 7) did not answer"); },
+      "exec:x", true);
+  EXPECT_FALSE(o.result);
+  ASSERT_EQ(o.failures.size(), 1u);
+  EXPECT_EQ(o.failures[0].property, property::kPlannerResponds);
+  EXPECT_EQ(o.failures[0].rule, kFaultTimeout);
+  EXPECT_EQ(o.failures[0].liable_id, kEgoId);
+  EXPECT_EQ(o.failures[0].time_s, 1.5);
+  EXPECT_EQ(signature_of(o.planner, o.failures[0]).key(), "exec:x/planner_responds/planner_timeout/ego");
 }
 
 TEST(Properties, SignatureUsesThePartyClassNotTheVehicleId) {

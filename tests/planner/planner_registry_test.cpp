@@ -63,5 +63,13 @@ TEST(PlannerRegistry, RefusesEmptyAndDuplicateNamesAndEmptyFactories) {
   EXPECT_EQ(std::count(names.begin(), names.end(), "test-no-factory"), 0);
 }
 
+TEST(PlannerRegistry, ExecNamesAreMadeNotRegistered) {
+  EXPECT_THROW(register_planner("exec:true", [] { return std::make_unique<RenamedRcpp>(); }), std::invalid_argument);
+  const auto p = make_planner("exec:true");  // no process starts before the first plan()
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p->name(), "exec:true");
+  EXPECT_EQ(make_planner("exec:"), nullptr);
+}
+
 }  // namespace
 }  // namespace mg

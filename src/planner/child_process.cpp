@@ -1,0 +1,223 @@
+#include "planner/child_process.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
+
+extern char** environ;
+
+namespace mg {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string errno_text(const std::string& what, int err) { return what + ": " + std::strerror(err); }
+
+// Closes its file descriptors on every path out of the constructor.
+struct Fds {
+  int ours = -1, theirs = -1, log = -1;
+  ~Fds() {
+    for (int fd : {ours, theirs, log})
+      if (fd >= 0) ::close(fd);
+  }
+};
+
+// The child starts with default signal handling and an empty mask: mergeguard ignores SIGXFSZ
+// and, during fuzz, handles SIGINT/SIGTERM/SIGHUP, and ignored dispositions survive exec.
+void default_signals(posix_spawnattr_t& attr) {
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXFSZ, SIGCHLD}) sigaddset(&defaults, sig);
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setsigmask(&attr, &none);
+  // Its own process group (pgid = its pid): a terminal's Ctrl-C reaches mergeguard alone, which
+  // ends the campaign's runs in flight first, and end() kills whatever the command started.
+  posix_spawnattr_setpgroup(&attr, 0);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+}
+
+// An executable file, by path or found in PATH (as the shell would look it up).
+bool is_program(const std::string& word) {
+  if (word.find('/') != std::string::npos) return ::access(word.c_str(), X_OK) == 0;
+  const char* path = std::getenv("PATH");
+  std::string dirs = path != nullptr ? path : "";
+  for (std::size_t from = 0; from <= dirs.size();) {
+    const std::size_t to = std::min(dirs.find(':', from), dirs.size());
+    const std::string dir = to > from ? dirs.substr(from, to - from) : ".";
+    if (::access((dir + "/" + word).c_str(), X_OK) == 0) return true;
+    from = to + 1;
+  }
+  return false;
+}
+
+// A single command naming a program runs as `exec COMMAND`: the shell is replaced by the planner,
+// so that the child's pid, exit status and signal are the planner's own (dash would fork and
+// report a crash as status 128 + signal). Lists, pipelines, subshells, builtins, keywords and
+// leading assignments keep their shell.
+std::string shell_line(const std::string& command) {
+  const std::size_t start = command.find_first_not_of(" \t");
+  if (start == std::string::npos || command.find_first_of(";&|()`\n") != std::string::npos) return command;
+  const std::string first = command.substr(start, command.find_first_of(" \t", start) - start);
+  return is_program(first) ? "exec " + command : command;
+}
+
+int remaining_ms(Clock::time_point deadline) {
+  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+  return left <= 0 ? 0 : static_cast<int>(std::min<long long>(left + 1, 1 << 30));
+}
+
+Clock::time_point deadline_after(double timeout_s) {
+  return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s));
+}
+
+// poll() for `events` until the deadline; EINTR (a signal handled by mergeguard) retries.
+IoStatus wait_for(int fd, short events, Clock::time_point deadline) {
+  for (;;) {
+    pollfd p{fd, events, 0};
+    const int n = ::poll(&p, 1, remaining_ms(deadline));
+    if (n > 0) return (p.revents & (events | POLLHUP)) ? IoStatus::kDone : IoStatus::kClosed;
+    if (n == 0) return IoStatus::kTimeout;
+    if (errno != EINTR) return IoStatus::kClosed;
+  }
+}
+
+}  // namespace
+
+ChildProcess::ChildProcess(const std::string& command, const std::string& stderr_path) {
+  Fds fds;
+  int pair[2];
+  // A socket pair, not pipes: send() with MSG_NOSIGNAL reports a dead child as EPIPE instead of
+  // raising SIGPIPE in mergeguard.
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0) throw ChildStartError(errno_text("socketpair", errno));
+  fds.ours = pair[0];
+  fds.theirs = pair[1];
+  if (::fcntl(fds.ours, F_SETFL, O_NONBLOCK) != 0) throw ChildStartError(errno_text("fcntl", errno));
+  if (!stderr_path.empty()) {
+    fds.log = ::open(stderr_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (fds.log < 0) throw ChildStartError(errno_text("cannot open the planner log " + stderr_path, errno));
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds.theirs, STDIN_FILENO);  // dup2 clears FD_CLOEXEC
+  posix_spawn_file_actions_adddup2(&actions, fds.theirs, STDOUT_FILENO);
+  if (fds.log >= 0) posix_spawn_file_actions_adddup2(&actions, fds.log, STDERR_FILENO);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  default_signals(attr);
+  std::string sh = "/bin/sh", dash_c = "-c", cmd = shell_line(command);
+  char* argv[] = {sh.data(), dash_c.data(), cmd.data(), nullptr};
+  const int err = ::posix_spawn(&pid_, "/bin/sh", &actions, &attr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
+  if (err != 0) throw ChildStartError(errno_text("cannot start /bin/sh -c '" + command + "'", err));
+  fd_ = fds.ours;
+  fds.ours = -1;
+}
+
+ChildProcess::~ChildProcess() { end(); }
+
+IoStatus ChildProcess::write_line(std::string_view line, double timeout_s) {
+  if (fd_ < 0) return IoStatus::kClosed;
+  std::string data(line);
+  data.push_back('\n');
+  const Clock::time_point deadline = deadline_after(timeout_s);
+  std::size_t sent = 0;
+  while (sent < data.size()) {
+    const ssize_t n = ::send(fd_, data.data() + sent, data.size() - sent, MSG_NOSIGNAL);
+    if (n > 0) {
+      sent += static_cast<std::size_t>(n);
+    } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      const IoStatus s = wait_for(fd_, POLLOUT, deadline);
+      if (s != IoStatus::kDone) return s;
+    } else if (n < 0 && errno == EINTR) {
+      continue;
+    } else {
+      return IoStatus::kClosed;
+    }
+  }
+  return IoStatus::kDone;
+}
+
+IoStatus ChildProcess::read_line(std::string& line, double timeout_s) {
+  const Clock::time_point deadline = deadline_after(timeout_s);
+  std::size_t scanned = 0;
+  for (;;) {
+    const std::size_t newline = buffer_.find('\n', scanned);
+    if (newline != std::string::npos) {
+      line.assign(buffer_, 0, newline);
+      buffer_.erase(0, newline + 1);
+      return IoStatus::kDone;
+    }
+    scanned = buffer_.size();
+    if (fd_ < 0 || buffer_.size() > kMaxLineBytes) return IoStatus::kClosed;
+    char chunk[65536];
+    const ssize_t n = ::read(fd_, chunk, sizeof chunk);
+    if (n > 0) {
+      buffer_.append(chunk, static_cast<std::size_t>(n));
+    } else if (n == 0) {
+      return IoStatus::kClosed;
+    } else if (errno == EAGAIN || errno == EWOULDBLOCK) {
+      const IoStatus s = wait_for(fd_, POLLIN, deadline);
+      if (s != IoStatus::kDone) return s;
+    } else if (errno != EINTR) {
+      return IoStatus::kClosed;
+    }
+  }
+}
+
+bool ChildProcess::exited(double wait_s) {
+  const Clock::time_point deadline = deadline_after(wait_s);
+  while (!exited_ && pid_ > 0) {
+    siginfo_t info{};
+    if (::waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) != 0 && errno != EINTR) break;
+    if (info.si_pid == pid_) {
+      exited_ = true;
+      exit_code_ = info.si_code;
+      exit_status_ = info.si_status;
+    } else if (Clock::now() >= deadline) {
+      break;
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  }
+  return exited_;
+}
+
+void ChildProcess::end(double grace_s) {
+  if (pid_ <= 0 || reaped_) return;
+  if (fd_ >= 0) ::shutdown(fd_, SHUT_WR);  // end of input: a well-behaved planner exits now
+  exited(grace_s);
+  ::kill(-pid_, SIGKILL);  // the group: whatever the shell or the planner started
+  int status = 0;
+  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!exited_) {
+    exited_ = true;
+    exit_code_ = WIFSIGNALED(status) ? CLD_KILLED : CLD_EXITED;
+    exit_status_ = WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status);
+  }
+  reaped_ = true;
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+}
+
+std::string ChildProcess::exit_description() {
+  if (!exited(0.5)) return "is still running";
+  if (exit_code_ == CLD_EXITED) return "exited with status " + std::to_string(exit_status_);
+  return "was killed by signal " + std::to_string(exit_status_) + " (" + ::strsignal(exit_status_) + ")";
+}
+
+}  // namespace mg

@@ -1,0 +1,69 @@
+// A planner process for the exec protocol tests and benchmark (docs/planner_protocol.md), one
+// behaviour per mode (argv[1]; further arguments are ignored: tests mark their children with one):
+//   echo       correct: keeps its lane at its speed (the trivial planner the benchmark times);
+//              its annotation names its pid, so that tests see which child answered
+//   crash      answers hello and reset, then aborts on the first observe
+//   hang       answers hello and reset, then never answers observe
+//   garbage    answers observe with a line that is not JSON
+//   nan        answers observe with NaN in the command (as Python's json.dumps writes it)
+//   no-hello   exits with status 3 before answering hello
+//   bad-path   answers observe with a path whose x decreases
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+// The number after `"key":` inside the ego object. A trivial planner reads three numbers and does
+// not build the whole message as a DOM (which would cost it three quarters of its time): the
+// benchmark times the protocol, not a JSON library.
+double ego_number(const std::string& line, const char* key) {
+  const std::size_t ego = line.find("\"ego\":{");
+  const std::size_t at = line.find(std::string("\"") + key + "\":", ego);
+  return std::strtod(line.c_str() + at + std::strlen(key) + 3, nullptr);
+}
+
+std::string command_for(const std::string& observe) {
+  const double x = ego_number(observe, "x_m"), y = ego_number(observe, "y_m");
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                R"({"type":"command","path":[[%.17g,%.17g],[%.17g,%.17g]],"target_speed_mps":%.17g,)"
+                R"("accel_limit_mps2":2.0,"annotation":{"mode":"echo","pid":%ld}})",
+                x, y, x + 100.0, y, ego_number(observe, "speed_mps"), static_cast<long>(getpid()));
+  return buf;
+}
+
+std::string reply_to(const std::string& mode, const std::string& line) {
+  const bool observe = line.find(R"("type":"observe")") != std::string::npos;
+  const std::string type = observe ? "observe" : nlohmann::json::parse(line).at("type").get<std::string>();
+  if (type == "hello") return R"({"type":"hello","name":"fake-)" + mode + R"(","version":"1"})";
+  if (type == "reset") return R"({"type":"ready"})";
+  if (type == "bye") return "";
+  if (mode == "crash") std::abort();
+  if (mode == "hang") pause();
+  if (mode == "garbage") return "this is not JSON";
+  if (mode == "nan") return R"({"type":"command","path":[[0,0],[100,0]],"target_speed_mps":NaN,"accel_limit_mps2":2})";
+  if (mode == "bad-path") return R"({"type":"command","path":[[100,0],[0,0]],"target_speed_mps":10,"accel_limit_mps2":2})";
+  return command_for(line);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "echo";
+  if (mode == "no-hello") return 3;
+  std::ios::sync_with_stdio(false);
+  std::string line;
+  while (std::getline(std::cin, line)) {
+    const std::string reply = reply_to(mode, line);
+    if (reply.empty()) return 0;  // bye
+    std::cout << reply << '\n' << std::flush;
+  }
+  return 0;
+}

@@ -215,13 +215,24 @@ std::string headline(const CampaignOptions& o, const CampaignResult& r) {
         << r.guided_failing_scenarios << " of them failed, and " << found << " of the " << r.signatures.size()
         << " signatures were first seen in a guided run.";
   }
-  if (!r.planner_process.is_null()) out << " Planner process: " << r.planner_process.dump() << ".";
+  if (!r.planner_process.is_null()) out << " " << planner_process_text(r) << ".";
   if (r.first_failure_run)
     out << " First failing run: " << *r.first_failure_run << " (first failure after " << fixed(r.first_failure_s.value_or(0.0), 2) << " s).";
   return out.str();
 }
 
 }  // namespace
+
+std::string planner_process_text(const CampaignResult& r) {
+  if (!r.planner_process.is_object()) return "";
+  const nlohmann::json hello = r.planner_process.value("hello", nlohmann::json::object());
+  std::ostringstream out;
+  out << "Planner process: " << hello.value("name", std::string("(unnamed)")) << " version "
+      << hello.value("version", std::string("(none)")) << " (from its hello); its stderr logs:";
+  for (const nlohmann::json& log : r.planner_process.value("logs", nlohmann::json::array()))
+    if (log.is_string()) out << " " << log.get<std::string>();
+  return out.str();
+}
 
 // The warning a reader must see first: rules that could apply but no scenario exercised, so the
 // campaign says nothing about them; and the rules that cannot apply to this planner.

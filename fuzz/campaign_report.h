@@ -22,6 +22,10 @@ nlohmann::json campaign_summary_json(const CampaignOptions& options, const Campa
 // but that no scenario exercised ("Warning: ..."), and the rules that cannot apply to it.
 std::vector<std::string> coverage_warnings(const CampaignOptions& options, const CampaignResult& result);
 
+// One line for people on an exec planner's process (CampaignResult::planner_process): the name and
+// version it gave in `hello` and its stderr logs; empty for an in-process planner.
+std::string planner_process_text(const CampaignResult& result);
+
 // Writes report.json, report.md and report.html into `dir` (atomically, each). `liability_reports`
 // maps a case path to its liability report (relative to `dir`) when one was written.
 void write_campaign_report(const std::string& dir, const CampaignOptions& options, const CampaignResult& result,

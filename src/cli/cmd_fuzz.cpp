@@ -152,7 +152,7 @@ void print_human(const fuzz::CampaignOptions& o, const fuzz::CampaignResult& r) 
     std::cout << "  " << sig.key() << ": " << rec.count << " scenarios, first run " << rec.first_run
               << (rec.known_before ? " (already in the corpus)" : "") << (rec.case_path.empty() ? "" : " -> " + rec.case_path)
               << "\n";
-  if (!r.planner_process.is_null()) std::cout << "  planner process: " << r.planner_process.dump() << "\n";
+  if (!r.planner_process.is_null()) std::cout << "  " << fuzz::planner_process_text(r) << "\n";
   for (const std::string& line : fuzz::coverage_warnings(o, r))
     if (line.rfind("Warning", 0) == 0) std::cout << line << "\n";
 }

@@ -159,6 +159,12 @@ RC_GTEST_PROP(OccupancyClear, AMergeClearOfTheNextLaneStaysClearWhileItsVehicles
   }
 }
 
+// One of the lane's gaps, open ends included (a RapidCheck draw).
+LaneGap any_gap_of(const std::vector<MainLaneVehicle>& lane) {
+  const std::vector<LaneGap> gaps = enumerate_gaps(lane);
+  return gaps[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(gaps.size())))];
+}
+
 // The memo (per-instant D_lon blocking shared by the kappa candidates of one speed profile, and
 // the hint that visits the last blocking instant first) saves work only: over a run of checks
 // like the planner's (several speed profiles, several kappa each, one memo throughout) every
@@ -201,8 +207,7 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswer, ()) {
   const int n = *rc::gen::inRange(1, 4);
   for (int i = 0; i < n; ++i)
     lane.push_back(lane_vehicle(i + 1, *rc::gen::inRange(-800, 1200) / 10.0, *rc::gen::inRange(0, 350) / 10.0));
-  const std::vector<LaneGap> gaps = enumerate_gaps(lane);
-  const LaneGap gap = gaps[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(gaps.size())))];
+  const LaneGap gap = any_gap_of(lane);
   const double rho_s = *rc::gen::inRange(20, 120) / 10.0;
   GapTracks tracks = gap_tracks(lane, gap, rho_s, no_accel);
   const int n_beside = *rc::gen::inRange(0, 3);
@@ -238,8 +243,7 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswerWithMixedWidths, ()) {
   std::vector<MainLaneVehicle> lane;
   const int n = *rc::gen::inRange(1, 4);
   for (int i = 0; i < n; ++i) lane.push_back(vehicle(i + 1));
-  const std::vector<LaneGap> gaps = enumerate_gaps(lane);
-  const LaneGap gap = gaps[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(gaps.size())))];
+  const LaneGap gap = any_gap_of(lane);
   const double rho_s = *rc::gen::inRange(20, 120) / 10.0;
   GapTracks tracks = gap_tracks(lane, gap, rho_s, no_accel);
   const int n_beside = *rc::gen::inRange(0, 3);

@@ -239,6 +239,17 @@ TEST(RssLateralMonitor, AnEgoCentringItselfInTheLaneOfAVehicleBehindIsJudgedLong
   for (const double m : out.margin) EXPECT_TRUE(std::isnan(m));  // not applicable at any step
 }
 
+// The ego at X = 0 in the side lane with a weak lateral brake (0.1 m/s2); vehicle 1 beside it in
+// the next lane over (lane 1, Y = 3.5), two main lanes.
+Scenario merge_beside_next_lane() {
+  Scenario s = base_scenario();
+  s.road.main_lanes = 2;
+  s.ego.limits.lat_brake_min_mps2 = 0.1;
+  s.vehicles = {vehicle(1, 0.0, 20.0)};
+  s.vehicles[0].lane = 1;
+  return s;
+}
+
 // The right of way waives the lateral duty for the merge's own motion only. The ego merges into
 // an empty rightmost lane (it holds the right of way by Definition 1) at 1 m/s laterally with a
 // weak lateral brake (0.1 m/s2), beside vehicle 1 in the next lane over (Y = 3.5): D_lat exceeds
@@ -247,11 +258,7 @@ TEST(RssLateralMonitor, AnEgoCentringItselfInTheLaneOfAVehicleBehindIsJudgedLong
 // T = 0.5 s to start braking (judged here with a speed tolerance of 0.05 m/s, so that not braking
 // shows at 4.5 s, before the ego's centre reaches vehicle 1's lane at 5.25 s).
 TEST(RssLateralMonitor, TheRightOfWayWaivesTheLateralDutyOnlyUpToTheTargetLanesCentre) {
-  Scenario s = base_scenario();
-  s.road.main_lanes = 2;
-  s.ego.limits.lat_brake_min_mps2 = 0.1;
-  s.vehicles = {vehicle(1, 0.0, 20.0)};
-  s.vehicles[0].lane = 1;
+  Scenario s = merge_beside_next_lane();
   const auto moving_left_for = [&](double duration_s) {
     Trace t = constant_accel_trace(s, duration_s);
     for (auto& st : t.steps) {
@@ -276,11 +283,7 @@ TEST(RssLateralMonitor, TheRightOfWayWaivesTheLateralDutyOnlyUpToTheTargetLanesC
 // at its b_lat_min (0.1 m/s2) from 4 s on answers it, although the lateral danger began at t = 0
 // (a campaign finding: counted from t = 0, the ego was "1 s late" the moment its merge ended).
 TEST(RssLateralMonitor, ADutyThatBeginsAtTheLanesCentreHasItsResponseTimeFromThere) {
-  Scenario s = base_scenario();
-  s.road.main_lanes = 2;
-  s.ego.limits.lat_brake_min_mps2 = 0.1;
-  s.vehicles = {vehicle(1, 0.0, 20.0)};
-  s.vehicles[0].lane = 1;
+  Scenario s = merge_beside_next_lane();
   Trace t = constant_accel_trace(s, 6.0);
   for (auto& st : t.steps) {
     const double braking_s = std::max(0.0, st.time_s - 4.0);

@@ -67,7 +67,7 @@ inline constexpr double kReturnLengthTolerance = 0.01;
 ReturnPath plan_return_path(double x0_m, double y0_m, double slope0, double y_end_m, const ReturnLimits& limits);
 // A stop of the lateral motion toward the main lane alone, level where it ends, never moving
 // back (slope0 > 0; within the same limits as a return): an ego that aborted a merge it had
-// barely begun holds its lateral position instead of swinging back (rcpp_planner.cpp).
+// barely begun holds its lateral position instead of swinging back (side_lane_path.cpp).
 ReturnPath plan_lateral_hold(double x0_m, double y0_m, double slope0, const ReturnLimits& limits);
 // Samples from x_from to x_to (inclusive, step_m apart, strictly increasing in X).
 std::vector<PathPoint> sample_return_path(const ReturnPath& p, double x_from_m, double x_to_m, double step_m);

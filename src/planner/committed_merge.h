@@ -1,0 +1,43 @@
+// RCPP's commitment stage (RCPP §II-C, spec §6): a merge once decided is followed along its
+// sigmoid, re-checked every cycle against the gap vehicles as observed, and aborted while that is
+// still sound; its speed is v_e*, capped behind a braking leader.
+#pragma once
+
+#include "planner/planner.h"
+#include "planner/sigmoid.h"
+
+namespace mg {
+
+// A committed merge may be aborted (P_c bounds crossed) only while the ego has covered less than
+// this fraction of its lateral move (from the side lane's centre, or from where it was when the
+// merge was planned if that is nearer the main lane); later it completes, protected by the RSS
+// override.
+inline constexpr double kAbortLateralFraction = 0.25;
+
+struct CommittedMerge {
+  Sigmoid sigmoid;
+  double target_speed_mps = 0.0;  // v_e* (Def. 1) or the speed after the exchange (Def. 2)
+  Decision decision;              // the decision that started it
+  // Where the lateral move starts: the side lane's centre, or the ego's offset at the decision
+  // if nearer the main lane (a merge planned while the ego is still on its way back from an
+  // abort is not committed from its first cycle: it would then follow, at RSS distance, the
+  // gap's follower it is about to pass, and stop behind it for good; a campaign finding).
+  double start_y_m = 0.0;
+  bool committed(double ego_y_m) const {
+    const double move_m = sigmoid.offset_m + sigmoid.width_m - start_y_m;
+    return ego_y_m - start_y_m >= kAbortLateralFraction * move_m;
+  }
+};
+
+// The ego has reached the sigmoid's end (by X or by lateral progress).
+bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w);
+
+// Abort now: not yet committed, still able to halt before the side lane's end, and the P_c
+// bounds cross at the predicted positions (or, for a Definition 1 merge, the rest of the merge
+// is occupied).
+bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
+
+// This cycle's command along the merge.
+PlanOutput follow_merge(const CommittedMerge& m, const WorldSnapshot& w);
+
+}  // namespace mg

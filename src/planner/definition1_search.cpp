@@ -1,0 +1,208 @@
+#include "planner/definition1_search.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/fixed_text.h"
+#include "core/rss.h"
+#include "planner/field_timeline.h"
+#include "planner/merge_path.h"
+#include "planner/rcpp_world.h"
+#include "planner/world_view.h"
+
+namespace mg {
+namespace {
+
+constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds ...
+constexpr double kNearPcBoundPenalty = 1e4;  // ... or pay this (far above any candidate's cost)
+
+std::string gap_name(const Gap& g) {
+  const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
+  return "gap (follower " + id(g.follower_id) + ", leader " + id(g.leader_id) + ")";
+}
+
+double gap_traffic_speed_mps(const LaneGap& g, double fallback_mps) {
+  if (g.follower && g.leader) return 0.5 * (g.follower->speed_mps + g.leader->speed_mps);
+  if (g.follower) return g.follower->speed_mps;
+  if (g.leader) return g.leader->speed_mps;
+  return fallback_mps;
+}
+
+// What the search at one merge duration shares between the gaps it tries.
+struct Def1Search {
+  const WorldSnapshot& w;
+  const Scenario& s;
+  Def1Context ctx;
+  double rho_s = 0.0;
+  double half_s = 0.0;
+  std::vector<MainLaneVehicle> lane;
+  std::vector<BesideTrack> beside;
+  std::optional<FieldTimeline> field_at_rho;  // built when the first candidate needs it
+
+  // P_c of a merge at v_e* = v: where the ego is at rho/2 on its ramp to v.
+  double pc_of(double v) const { return ctx.ego_x_m + ctx.ramp_to(v).distance_at_m(half_s); }
+};
+
+// A gap's P_c interval and the highest v_e* whose P_c lies in it.
+struct PcBounds {
+  double v_hi_mps = 0.0;
+  double pc_min_m = 0.0;
+  double pc_max_m = 0.0;
+  // P_c(v) is monotone in v, but only up to rounding: a candidate at v_hi must not land a
+  // rounding error outside [pc_min, pc_max] (a campaign finding: P_c "outside" by 1e-13 m).
+  double pc_at(const Def1Search& f, double v) const { return std::clamp(f.pc_of(v), pc_min_m, pc_max_m); }
+};
+
+// nullopt when the bounds cross (RCPP §II-C).
+std::optional<PcBounds> def1_pc_bounds(const Def1Search& f, const LaneGap& gap, const SpeedInterval& iv) {
+  // Sigmoid upper bound (RCPP §II-C): P_c <= X_o - D_lon at the leader's predicted position.
+  double v_hi = iv.hi_mps;
+  if (gap.leader) {
+    // The leader as the commit re-check predicts it (leader_track): a bound from the constant
+    // speed of Def. 1.2 alone let a merge be decided that the next cycle aborted.
+    const MainLaneVehicle& l = *gap.leader;
+    const Track lt = predicted_leader(f.w, f.lane, l);
+    const Def1Context& ctx = f.ctx;
+    const auto margin = [&](double v) {
+      const double d = rss_longitudinal_m({ctx.ramp_to(v).speed_at_mps(f.half_s), lt.v_at(f.half_s), ctx.ego_length_m,
+                                           l.length_m, ctx.response_time_s, ctx.ego_limits.accel_max_mps2,
+                                           ctx.ego_limits.brake_min_mps2, l.limits.brake_max_mps2});
+      return (lt.x_at(f.half_s) - d) - f.pc_of(v);
+    };
+    const auto bound = highest_satisfying(margin, iv.lo_mps, iv.hi_mps);
+    if (!bound) return std::nullopt;
+    v_hi = *bound;
+  }
+  // Lower bound X_o^i + D*_lon <= P_c coincides with ineq. (1.1) at v_e* = lo.
+  const double pc_min = f.pc_of(iv.lo_mps);
+  const double pc_max = std::min(f.pc_of(v_hi), side_exit_limit_x_m(f.s));
+  if (pc_min > pc_max) return std::nullopt;
+  return PcBounds{v_hi, pc_min, pc_max};
+}
+
+// The v_e* candidates: pc_candidates values evenly over [lo, v_hi], and the speed grid shared
+// with the progress rule within it. The grid is over v_e*, not P_c: an ego that cannot reach
+// v_e* by rho/2 has the same P_c for a range of v_e*, which differ after P_c.
+std::vector<double> def1_candidate_speeds(const Def1Search& f, double lo_mps, double v_hi_mps) {
+  std::vector<double> speeds = even_grid(lo_mps, v_hi_mps, f.s.params.planner.pc_candidates);
+  const double grid_step_mps = f.ctx.speed_limit_mps / kDef1SpeedGridSteps;
+  for (int i = static_cast<int>(std::ceil(lo_mps / grid_step_mps)); i * grid_step_mps <= v_hi_mps; ++i)
+    speeds.push_back(i * grid_step_mps);
+  std::sort(speeds.begin(), speeds.end());
+  speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+  return speeds;
+}
+
+// The cheapest comfortable sigmoid into `gap` whose merge stays clear of the lane's vehicles.
+std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, const SpeedInterval& iv, const PcBounds& b) {
+  const Scenario& s = f.s;
+  const PlannerParams& p = s.params.planner;
+  const Def1Context& ctx = f.ctx;
+  const double v_e = ctx.ego_speed_mps;
+  const double v_traffic = gap_traffic_speed_mps(gap, v_e);
+  GapTracks tracks = gap_tracks(f.lane, gap, f.rho_s, [&](int id) { return observed_accel_mps2(f.w, id); });
+  tracks.beside = f.beside;
+  const auto kappa_range = [&](double v) {
+    const SpeedRamp ramp = ctx.ramp_to(v);
+    return kappa_range_for(s, b.pc_at(f, v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(f.rho_s), ramp, ctx.ego_x_m);
+  };
+  // Candidates keep kPcMarginM from both P_c bounds when they can (path-tracking error): one
+  // nearer a bound pays kNearPcBoundPenalty, so it wins only when nothing else is admissible.
+  const double pc_margin = std::min(kPcMarginM, 0.25 * (b.pc_max_m - b.pc_min_m));
+  OccupancyMemo memo;  // shared by the kappa candidates of one v_e* (choose_sigmoid's inner loop)
+  double memo_v = std::numeric_limits<double>::quiet_NaN();
+  double best_seen = std::numeric_limits<double>::infinity();  // the lowest cost choose_sigmoid holds
+  const double field_floor = field_cost_floor(p);
+  const auto cost = [&](double v, double kappa) {
+    if (v != memo_v) {
+      memo.forget_ramp();
+      memo_v = v;
+    }
+    const SpeedRamp ramp = ctx.ramp_to(v);
+    const double pc = b.pc_at(f, v);
+    const bool near_bound = pc < b.pc_min_m + pc_margin || pc > b.pc_max_m - pc_margin;
+    const double def1_cost = p.cost_time_weight * f.half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
+                             p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
+                             (near_bound ? kNearPcBoundPenalty : 0.0);
+    // Not below the best so far even with the field at its floor: not chosen (a tie keeps the
+    // first), so neither its occupancy nor its field is evaluated.
+    if (def1_cost + field_floor >= best_seen) return std::numeric_limits<double>::infinity();
+    const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
+    if (!occupancy_clear(s, ctx.ego_x_m, f.w.ego.y_m, sig, ramp, OccupancyInstants::over(f.rho_s), tracks,
+                         kOccupancyPlanningBufferM, &memo))
+      return std::numeric_limits<double>::infinity();
+    if (!f.field_at_rho) f.field_at_rho = field_timeline(f.w, f.rho_s, constant_speed_x);
+    const double c = def1_cost + field_cost(p, *f.field_at_rho, sig,
+                                            [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); });
+    best_seen = std::min(best_seen, c);
+    return c;
+  };
+  return choose_sigmoid(def1_candidate_speeds(f, iv.lo_mps, b.v_hi_mps), kappa_range, p.kappa_candidates, cost);
+}
+
+Def1Plan def1_plan(const Def1Search& f, const Gap& gid, const SpeedInterval& iv, const PcBounds& b,
+                   const SigmoidChoice& choice) {
+  Def1Plan plan;
+  plan.ve_star_mps = choice.param;
+  const double pc = b.pc_at(f, choice.param);
+  plan.sigmoid = Sigmoid{f.s.road.lane_width_m, choice.kappa_per_m, pc, -f.s.road.lane_width_m};
+  Decision& d = plan.decision;
+  d.time_s = f.w.time_s;
+  d.mode = DecisionMode::kDef1Merge;
+  d.gap = gid;
+  d.ve_min_mps = iv.lo_mps;
+  d.ve_max_mps = iv.hi_mps;
+  d.ve_star_mps = plan.ve_star_mps;
+  d.pc_min_m = b.pc_min_m;
+  d.pc_max_m = b.pc_max_m;
+  d.pc_m = pc;
+  d.kappa_per_m = choice.kappa_per_m;
+  d.merge_duration_s = f.rho_s;
+  d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fixed_text(iv.lo_mps, 2) + ", " +
+             fixed_text(iv.hi_mps, 2) + "] m/s; merging at v_e* = " + fixed_text(plan.ve_star_mps, 2) +
+             " m/s, P_c = " + fixed_text(pc, 1) + " m, kappa = " + fixed_text(choice.kappa_per_m, 3) +
+             "/m, rho = " + fixed_text(f.rho_s, 1) + " s (cost " + fixed_text(choice.cost, 2) + ")";
+  return plan;
+}
+
+// Definition 1 for one merge duration rho_s: the cheapest gap's plan.
+std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_s, std::string* why) {
+  Def1Search f{w, *w.scenario, def1_context(w, rho_s), rho_s, 0.5 * rho_s, target_lane_vehicles(w), beside_tracks(w), {}};
+  std::optional<Def1Plan> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  int n_def1 = 0, n_cross = 0, n_sigmoid = 0;
+  for (const LaneGap& gap : enumerate_gaps(f.lane)) {
+    const SpeedInterval iv = solve_def1_interval(f.ctx, gap);
+    if (!iv.feasible) { ++n_def1; continue; }
+    const auto bounds = def1_pc_bounds(f, gap, iv);
+    if (!bounds) { ++n_cross; continue; }
+    const auto choice = def1_choose(f, gap, iv, *bounds);
+    if (!choice) { ++n_sigmoid; continue; }
+    if (choice->cost >= best_cost) continue;
+    best_cost = choice->cost;
+    best = def1_plan(f, Gap{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1}, iv, *bounds, *choice);
+  }
+  if (!best && why)
+    *why = std::to_string(n_def1) + " gap(s) violate ineq. 1.1/1.2, " + std::to_string(n_cross) +
+           " with crossing P_c bounds, " + std::to_string(n_sigmoid) + " without a comfortable sigmoid";
+  return best;
+}
+
+}  // namespace
+
+std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why) {
+  const Scenario& s = *w.scenario;
+  const double rho_base_s =
+      merge_duration_base_s(planned_rho_m_s(s), s.road.lane_width_m, s.params.planner.lat_accel_comfort_mps2);
+  for (const double factor : kMergeDurationFactors) {
+    if ((factor == 1.0) != (durations == MergeDurations::kRhoM)) continue;
+    std::string this_why;
+    if (auto plan = plan_definition1_rho(w, factor * rho_base_s, &this_why)) return plan;
+    if (why) *why += (why->empty() ? "" : "; ") + ("rho = " + fixed_text(factor * rho_base_s, 1) + " s: ") + this_why;
+  }
+  return std::nullopt;
+}
+
+}  // namespace mg

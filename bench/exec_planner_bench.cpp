@@ -46,7 +46,7 @@ BENCHMARK(BM_ExecObserveRequest)->Unit(benchmark::kMicrosecond);
 void BM_ExecParseCommand(benchmark::State& state) {
   const std::string reply =
       R"({"type":"command","path":[[20.0,-3.5],[120.0,-3.5]],"target_speed_mps":20.0,"accel_limit_mps2":2.0,"annotation":{"mode":"echo","pid":4242}})";
-  for (auto _ : state) benchmark::DoNotOptimize(mg::parse_command_reply(reply, std4()).path.size());
+  for (auto _ : state) benchmark::DoNotOptimize(mg::parse_command_reply(reply, mg::initial_snapshot(std4())).path.size());
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ExecParseCommand)->Unit(benchmark::kMicrosecond);

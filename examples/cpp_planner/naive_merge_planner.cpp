@@ -7,7 +7,7 @@
 namespace example {
 
 mg::PlanOutput NaiveMergePlanner::plan(const mg::WorldSnapshot& world) {
-  const mg::Scenario& s = *world.scenario;
+  const mg::PlannerSetup& s = *world.setup;
   if (!start_y_m_) start_y_m_ = world.ego.y_m;
   if (!merge_pc_m_ && world.time_s >= kMergeTimeS) merge_pc_m_ = world.ego.x_m + kMergeAheadM;
   const double from_y = *start_y_m_;

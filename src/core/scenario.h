@@ -127,13 +127,21 @@ struct Ego {
   bool operator==(const Ego&) const = default;
 };
 
-struct Scenario {
-  std::string name = "unnamed";
-  std::string description;
+// What a planner may know before it starts (issue #16; the exec protocol's `reset`): the road,
+// its own vehicle's declarations and dynamics, and the parameters. Nothing of the other
+// vehicles, whose behaviours no planner can observe.
+struct PlannerSetup {
   Road road;
   Ego ego;
-  std::vector<MainVehicle> vehicles;
   Params params;
+  bool operator==(const PlannerSetup&) const = default;
+};
+
+// A scenario: the planner's setup plus the other vehicles, each with its behaviour.
+struct Scenario : PlannerSetup {
+  std::string name = "unnamed";
+  std::string description;
+  std::vector<MainVehicle> vehicles;
   bool operator==(const Scenario&) const = default;
 
   // Index into `vehicles` of the vehicle with this id, or -1.

@@ -23,7 +23,7 @@ constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committ
 // 0.07 m to spare halted 0.07 m past the end (seed-700 campaign of session 5, weak brakes:
 // b_min = b_max = 3 m/s2 at 15.4 m/s).
 bool can_still_halt(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double v = ego_speed_mps(w);
   const double room_m =
       s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - w.ego.x_m - v * s.params.sim.planner_cycle_s;
@@ -34,7 +34,7 @@ bool can_still_halt(const WorldSnapshot& w) {
 // P_c at D_lon behind the leader as predicted.
 double pc_bound_speed_mps(const CommittedMerge& m, const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
                           const MainLaneVehicle& leader, double target_mps) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double pc_m = m.sigmoid.pc_m;
   const Track ahead = predicted_leader(w, lane, leader);
   const auto holds = [&](double v) {
@@ -98,7 +98,7 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
                                          const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& o,
                                          double t_s) {
   const Decision& d = m.decision;
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   if (d.mode == DecisionMode::kDef2Merge && o.id == d.coop_partner_id) {
     // From its speed now linearly to v_o* by the yield deadline of the plan's responder model
     // (coop_candidate: rho_c after the request arrives), then v_o*. A partner slower to yield
@@ -120,7 +120,7 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
 
 // spec §6: abort when the P_c bounds cross at the gap vehicles' predicted positions.
 bool committed_bounds_crossed(const CommittedMerge& m, const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const Decision& d = m.decision;
   if (!d.gap) return false;
   // The speed the ego will really aim for: v_e*, or less behind a braking leader (follow_merge).
@@ -150,7 +150,7 @@ bool committed_bounds_crossed(const CommittedMerge& m, const WorldSnapshot& w) {
 
 // The occupancy check of the rest of the merge with the gap vehicles as observed now.
 bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const Decision& d = m.decision;
   if (!d.gap) return true;
   // The rest of the merge, until the ego reaches the sigmoid's end at the speed it aims for.
@@ -198,7 +198,7 @@ bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
 }
 
 PlanOutput follow_merge(const CommittedMerge& m, const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   PlanOutput out;
   out.path = sample_sigmoid(m.sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kPathStepM);
   const double target = merge_target_speed_mps(m, w);

@@ -33,7 +33,7 @@ double gap_traffic_speed_mps(const LaneGap& g, double fallback_mps) {
 // What the search at one merge duration shares between the gaps it tries.
 struct Def1Search {
   const WorldSnapshot& w;
-  const Scenario& s;
+  const PlannerSetup& s;
   Def1Context ctx;
   double rho_s = 0.0;
   double half_s = 0.0;
@@ -97,7 +97,7 @@ std::vector<double> def1_candidate_speeds(const Def1Search& f, double lo_mps, do
 
 // The cheapest comfortable sigmoid into `gap` whose merge stays clear of the lane's vehicles.
 std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, const SpeedInterval& iv, const PcBounds& b) {
-  const Scenario& s = f.s;
+  const PlannerSetup& s = f.s;
   const PlannerParams& p = s.params.planner;
   const Def1Context& ctx = f.ctx;
   const double v_e = ctx.ego_speed_mps;
@@ -169,7 +169,7 @@ Def1Plan def1_plan(const Def1Search& f, const Gap& gid, const SpeedInterval& iv,
 
 // Definition 1 for one merge duration rho_s: the cheapest gap's plan.
 std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_s, std::string* why) {
-  Def1Search f{w, *w.scenario, def1_context(w, rho_s), rho_s, 0.5 * rho_s, target_lane_vehicles(w), beside_tracks(w), {}};
+  Def1Search f{w, *w.setup, def1_context(w, rho_s), rho_s, 0.5 * rho_s, target_lane_vehicles(w), beside_tracks(w), {}};
   std::optional<Def1Plan> best;
   double best_cost = std::numeric_limits<double>::infinity();
   int n_def1 = 0, n_cross = 0, n_sigmoid = 0;
@@ -193,7 +193,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
 }  // namespace
 
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double rho_base_s =
       merge_duration_base_s(planned_rho_m_s(s), s.road.lane_width_m, s.params.planner.lat_accel_comfort_mps2);
   for (const double factor : kMergeDurationFactors) {

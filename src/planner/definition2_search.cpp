@@ -43,7 +43,7 @@ struct CoopBounds {
 // The request's gap and P_c bounds: ineq. (3) or (4) in P_c form toward the responder, and the
 // gap's other vehicle as in Definition 1. nullopt when that vehicle rules the merge out.
 std::optional<CoopBounds> coop_bounds(const CoopCandidate& x) {
-  const Scenario& s = *x.w.scenario;
+  const PlannerSetup& s = *x.w.setup;
   const CoopContext& c = x.c;
   const MainLaneVehicle& o = x.responder();
   const double responder_at_pc_m = o.x_m + 0.5 * (o.speed_mps + x.vo.vo_star_mps) * c.comm_threshold_s +
@@ -98,7 +98,7 @@ GapTracks coop_tracks(const CoopCandidate& x, const SpeedRamp& responder_ramp) {
 }
 
 Def2Plan coop_plan(const CoopCandidate& x, const CoopBounds& b, double pc_m, double kappa_per_m) {
-  const Scenario& s = *x.w.scenario;
+  const PlannerSetup& s = *x.w.setup;
   const MainLaneVehicle& o = x.responder();
   Def2Plan plan;
   plan.sigmoid = Sigmoid{s.road.lane_width_m, kappa_per_m, pc_m, -s.road.lane_width_m};
@@ -129,7 +129,7 @@ Def2Plan coop_plan(const CoopCandidate& x, const CoopBounds& b, double pc_m, dou
 // One Definition 2 candidate: responder lane[i], case k; its cost in *cost_out.
 std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
                                        std::size_t i, CoopCase k, double* cost_out) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const PlannerParams& p = s.params.planner;
   const CoopContext c = coop_context(w);
   const MainLaneVehicle& o = lane[i];

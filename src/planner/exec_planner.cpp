@@ -129,12 +129,12 @@ class ExecPlanner : public Planner {
   PlanOutput plan(const WorldSnapshot& world) override {
     if (!reset_) {
       session_->ensure_started();
-      parse_or_fail([&] { parse_ready_reply(session_->call(reset_request(*world.scenario), "reset", world.time_s)); },
+      parse_or_fail([&] { parse_ready_reply(session_->call(reset_request(*world.setup), "reset", world.time_s)); },
                     world.time_s);
       reset_ = true;
     }
     PlanOutput out;
-    parse_or_fail([&] { out = parse_command_reply(session_->call(observe_request(world), "observe", world.time_s), *world.scenario); },
+    parse_or_fail([&] { out = parse_command_reply(session_->call(observe_request(world), "observe", world.time_s), world); },
                   world.time_s);
     // The protocol has no discrete decisions (the Decision record is RCPP's): the mode stays
     // keep_lane and the planner's own account is its annotation.

@@ -1,5 +1,6 @@
 #include "planner/exec_protocol.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -65,7 +66,7 @@ std::vector<PathPoint> path_of(const json& command) {
   return out;
 }
 
-V2vMessage message_of(const json& m, const Scenario& scenario, const std::string& where) {
+V2vMessage message_of(const json& m, const WorldSnapshot& world, const std::string& where) {
   if (!m.is_object()) throw ProtocolError(where + " is not an object");
   V2vMessage out;
   const json& type = member(m, "type", where.c_str());
@@ -74,8 +75,11 @@ V2vMessage message_of(const json& m, const Scenario& scenario, const std::string
   else if (type == "refuse") out.type = MessageType::kRefuse;
   else throw ProtocolError(where + ": \"type\" must be \"request\", \"accept\" or \"refuse\"");
   const json& to = member(m, "to_id", where.c_str());
-  if (!to.is_number_integer() || scenario.index_of(to.get<int>()) < 0)
-    throw ProtocolError(where + ": \"to_id\" is not the id of a main-lane vehicle");
+  const auto observed = [&](int id) {
+    return std::any_of(world.others.begin(), world.others.end(), [&](const ObservedVehicle& o) { return o.id == id; });
+  };
+  if (!to.is_number_integer() || !observed(to.get<int>()))
+    throw ProtocolError(where + ": \"to_id\" is not the id of a vehicle the planner observes");
   out.to_id = to.get<int>();
   const auto coop = m.find("coop_case");
   if (coop != m.end() && *coop != "ego_ahead" && *coop != "ego_behind")
@@ -148,8 +152,10 @@ json message_json(const V2vMessage& m) {
 
 std::string hello_request() { return json{{"type", "hello"}, {"protocol", kPlannerProtocol}}.dump(); }
 
-std::string reset_request(const Scenario& scenario) {
-  const json s = scenario_to_json(scenario);
+std::string reset_request(const PlannerSetup& setup) {
+  Scenario keys;  // the scenario format's own keys for the road, the ego and the parameters
+  static_cast<PlannerSetup&>(keys) = setup;
+  const json s = scenario_to_json(keys);
   return json{{"type", "reset"}, {"road", s.at("road")}, {"ego", s.at("ego")}, {"params", s.at("params")}}.dump();
 }
 
@@ -176,7 +182,7 @@ PlannerIdentity parse_hello_reply(const std::string& line) {
 
 void parse_ready_reply(const std::string& line) { parse_reply(line, "ready"); }
 
-PlanOutput parse_command_reply(const std::string& line, const Scenario& scenario) {
+PlanOutput parse_command_reply(const std::string& line, const WorldSnapshot& world) {
   const json j = parse_reply(line, "command");
   PlanOutput out;
   out.path = path_of(j);
@@ -187,7 +193,7 @@ PlanOutput parse_command_reply(const std::string& line, const Scenario& scenario
   if (const auto outbox = j.find("outbox"); outbox != j.end()) {
     if (!outbox->is_array() || outbox->size() > kMaxOutbox) throw ProtocolError("command: \"outbox\" must be an array of at most 64 messages");
     for (std::size_t i = 0; i < outbox->size(); ++i)
-      out.outbox.push_back(message_of((*outbox)[i], scenario, "command: outbox[" + std::to_string(i) + "]"));
+      out.outbox.push_back(message_of((*outbox)[i], world, "command: outbox[" + std::to_string(i) + "]"));
   }
   if (const auto annotation = j.find("annotation"); annotation != j.end()) {
     if (!annotation->is_object()) throw ProtocolError("command: \"annotation\" must be an object");

@@ -28,16 +28,16 @@ struct PlannerIdentity {
 std::string hello_request();
 // What a planner may know before it starts: the road, its own vehicle, the parameters, in the
 // scenario format's keys; nothing of the other vehicles.
-std::string reset_request(const Scenario& scenario);
+std::string reset_request(const PlannerSetup& setup);
 std::string observe_request(const WorldSnapshot& world);
 std::string bye_request();
 
 // The replies, checked against the schema (ProtocolError otherwise). A command's path must have
 // at least two points, finite coordinates and strictly increasing x; its speeds must be finite
-// and >= 0; outbox messages must name a vehicle of `scenario`. The annotation (any JSON object)
+// and >= 0; outbox messages must name a vehicle of `world.others`. The annotation (any JSON object)
 // lands in PlanOutput::decision.annotation.
 PlannerIdentity parse_hello_reply(const std::string& line);
 void parse_ready_reply(const std::string& line);
-PlanOutput parse_command_reply(const std::string& line, const Scenario& scenario);
+PlanOutput parse_command_reply(const std::string& line, const WorldSnapshot& world);
 
 }  // namespace mg

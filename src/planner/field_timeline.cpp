@@ -12,7 +12,7 @@ namespace {
 // (D_lat, D_lon) between the ego and each other vehicle at the decision instant, the one behind
 // answering for the longitudinal distance.
 std::vector<std::pair<double, double>> rss_distances(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double v_e = ego_speed_mps(w);
   std::vector<std::pair<double, double>> d_lat_lon;
   for (const ObservedVehicle& o : w.others) {
@@ -35,7 +35,7 @@ std::vector<std::pair<double, double>> rss_distances(const WorldSnapshot& w) {
 
 FieldTimeline field_timeline(const WorldSnapshot& w, double duration_s,
                              const std::function<double(const ObservedVehicle&, double)>& other_x_at) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const std::vector<std::pair<double, double>> d_lat_lon = rss_distances(w);
   FieldTimeline field{duration_s, {}};
   field.scenes.reserve(kFieldSamples + 1);

@@ -16,11 +16,11 @@ double side_lane_exit_fraction(double ego_width_m, double lane_width_m) {
   return std::clamp(0.5 + ego_width_m / (2.0 * lane_width_m), 0.5 + 1e-3, 1.0 - kSigmoidEndFraction);
 }
 
-double side_exit_limit_x_m(const Scenario& s, double speed_mps) {
+double side_exit_limit_x_m(const PlannerSetup& s, double speed_mps) {
   return s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - std::max(kSideExitMarginM, kSideExitLagS * speed_mps);
 }
 
-double path_curvature_cap_per_m(const Scenario& s) {
+double path_curvature_cap_per_m(const PlannerSetup& s) {
   const EgoDynamics& dyn = s.ego.dynamics;
   return std::min(std::tan(dyn.steer_max_rad) / (2.0 * dyn.wheelbase_m()), std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
 }
@@ -29,12 +29,12 @@ double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
   return d.cg_to_rear_m - d.mass_kg * d.cg_to_front_m * speed_mps * speed_mps / (d.cornering_rear_npr * d.wheelbase_m());
 }
 
-double kappa_cap_per_m(const Scenario& s) {
+double kappa_cap_per_m(const PlannerSetup& s) {
   return std::min(s.params.planner.kappa_max_per_m,
                   std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s) / s.road.lane_width_m));
 }
 
-KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
+KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m) {
   const PlannerParams& p = s.params.planner;
   const double before_m = pc_m - start_x_m;
@@ -149,7 +149,7 @@ namespace {
 // less. Returns the largest such extra over the vehicles the ego is not D_lon clear of (-inf
 // when it is clear of all), for the target lane's and the other lanes' vehicles apart: the
 // instant is blocked when the lateral room is below it.
-Blocking blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps, double pc_m, const GapTracks& tracks,
+Blocking blocked_below_m(const PlannerSetup& s, double t_s, double x_m, double v_mps, double pc_m, const GapTracks& tracks,
                          double buffer_m) {
   const double t_lag = s.params.rss.response_time_s;
   const Limits& el = s.ego.limits;
@@ -183,7 +183,7 @@ Blocking blocked_below_m(const Scenario& s, double t_s, double x_m, double v_mps
 }
 
 // The largest extra lateral distance any of the tracks needs (see blocked_below_m).
-double widest_extra_m(const Scenario& s, const GapTracks& tracks) {
+double widest_extra_m(const PlannerSetup& s, const GapTracks& tracks) {
   double extra = -std::numeric_limits<double>::infinity();
   const auto widen = [&](const Track& o) { extra = std::max(extra, 0.5 * (o.width_m - s.ego.size.width_m) - o.lane_y_m); };
   for (const auto* list : {&tracks.followers, &tracks.leaders})
@@ -192,7 +192,7 @@ double widest_extra_m(const Scenario& s, const GapTracks& tracks) {
   return extra;
 }
 
-double ego_lateral_rss_m(const Scenario& s, double lat_speed_mps) {
+double ego_lateral_rss_m(const PlannerSetup& s, double lat_speed_mps) {
   const Limits& el = s.ego.limits;
   return rss_lateral_m({0.0, lat_speed_mps, s.ego.size.width_m, s.ego.size.width_m, s.params.rss.response_time_s,
                         el.lat_accel_max_mps2, el.lat_brake_min_mps2, s.params.rss.fluctuation_margin_m});
@@ -205,7 +205,7 @@ struct PathLateral {
   bool over_line = false;
 };
 
-PathLateral path_lateral(const Scenario& s, double ego_y_m, const Sigmoid& sig, double x, double v) {
+PathLateral path_lateral(const PlannerSetup& s, double ego_y_m, const Sigmoid& sig, double x, double v) {
   const double y_path = sig.y_at_m(x);
   const double sgm = (y_path - sig.offset_m) / sig.width_m;
   // An ego nearer the lane than the path's start is not assumed to have reached the path yet.
@@ -229,7 +229,7 @@ constexpr double kNone = -std::numeric_limits<double>::infinity();
 
 // One occupancy check's instants (occupancy_clear).
 struct OccupancyScan {
-  const Scenario& s;
+  const PlannerSetup& s;
   double ego_x_m, ego_y_m;
   const Sigmoid& sig;
   const SpeedRamp& ego;
@@ -268,7 +268,7 @@ struct OccupancyScan {
 
 }  // namespace
 
-bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
+bool occupancy_clear(const PlannerSetup& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
                      const OccupancyInstants& when, const GapTracks& tracks, double buffer_m, OccupancyMemo* memo) {
   assert(when.step_s > 0.0);
   // The instants k step - elapsed within [0, horizon]: k from k_first to k_last.

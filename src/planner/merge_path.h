@@ -30,26 +30,26 @@ double side_lane_exit_fraction(double ego_width_m, double lane_width_m);
 // the road 2 mm past the side lane's end; a campaign finding).
 inline constexpr double kSideExitMarginM = 5.0;
 inline constexpr double kSideExitLagS = 0.4;
-double side_exit_limit_x_m(const Scenario& s, double speed_mps = 0.0);
+double side_exit_limit_x_m(const PlannerSetup& s, double speed_mps = 0.0);
 
 // Trackability of a path at any speed: its curvature c stays within half the ego's steering
 // ability (tan(steer_max)/(2 wheelbase)) and keeps the kinematic sideslip atan(l_r c) below
 // kPathSideslipMaxRad, half the sideslip rule's bound (docs/planner.md). For the sigmoid, whose
 // peak curvature is W kappa^2/(6 sqrt 3), that caps kappa.
 inline constexpr double kPathSideslipMaxRad = 0.025;
-double path_curvature_cap_per_m(const Scenario& s);
+double path_curvature_cap_per_m(const PlannerSetup& s);
 // The linear single-track model's steady-state sideslip per unit path curvature at speed v,
 // beta / c = l_r - m l_f v^2 / (C_r L) (rear axle: F_yr = m v^2 c l_f / L = C_r alpha_r and
 // beta = l_r c - alpha_r; Rajamani, Vehicle Dynamics and Control, 2nd ed., §3.3). At a crawl it is
 // the kinematic l_r; at speed, with soft rear tyres, many times larger and of the other sign.
 double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps);
-double kappa_cap_per_m(const Scenario& s);
+double kappa_cap_per_m(const PlannerSetup& s);
 
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
 // start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak
 // lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
 // bound, and lies in the configured [kappa_min, kappa_max].
-KappaRange kappa_range_for(const Scenario& s, double pc_m, double start_x_m, double complete_by_x_m,
+KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m);
 
 // A main-lane vehicle's predicted motion during a merge candidate: from x0_m, one speed ramp, on
@@ -179,7 +179,7 @@ struct OccupancyMemo {
   OccupancyMemo() { forget_ramp(); }
   void forget_ramp() { blocked_below_m.fill(Blocking{std::numeric_limits<double>::quiet_NaN(), 0.0}); }
 };
-bool occupancy_clear(const Scenario& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
+bool occupancy_clear(const PlannerSetup& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
                      const OccupancyInstants& when, const GapTracks& tracks, double buffer_m,
                      OccupancyMemo* memo = nullptr);
 

@@ -67,7 +67,7 @@ WorldSnapshot initial_snapshot(const Scenario& s) {
     w.others.push_back(o);
   }
   std::sort(w.others.begin(), w.others.end(), [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
-  w.scenario = &s;
+  w.setup = &s;
   return w;
 }
 

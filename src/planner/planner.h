@@ -35,7 +35,7 @@ struct WorldSnapshot {
   VehicleState ego;
   std::vector<ObservedVehicle> others;   // sorted by id
   std::vector<V2vMessage> inbox;         // messages delivered to the ego since the last cycle
-  const Scenario* scenario = nullptr;    // road, ego parameters, params (never null)
+  const PlannerSetup* setup = nullptr;   // road, the ego's declarations and dynamics, params (never null)
 };
 
 enum class DecisionMode {

@@ -9,7 +9,7 @@
 namespace mg {
 
 std::optional<Danger> rss_danger_ahead(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double v_e = ego_speed_mps(w);
   const double vy_e = ego_lat_speed_mps(w);
   for (const ObservedVehicle& o : w.others) {

@@ -27,7 +27,7 @@ CommittedMerge commit(const WorldSnapshot& w, const Sigmoid& sig, double speed_m
 }
 
 PlanOutput keep_main_lane(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double lane_w = s.road.lane_width_m;
   const double lane_y = std::max(0.0, std::round(w.ego.y_m / lane_w)) * lane_w;
   PlanOutput out;
@@ -60,7 +60,7 @@ struct HaltProfile {
 };
 
 HaltProfile halt_profile(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double v_e = ego_speed_mps(w);
   HaltProfile h;
   h.halt_x_m = halt_point_x_m(s.road, s.params.planner.halt_margin_m, s.ego.size.length_m, standstill_merge_length_m(s));
@@ -78,7 +78,7 @@ PlanOutput hold_after_abort(const InSideLane& side, const WorldSnapshot& w, cons
   PlanOutput out;
   out.path = std::move(path);
   out.target_speed_mps = std::min(ego_speed_mps(w), h.halt_cap_mps);
-  out.accel_limit_mps2 = w.scenario->ego.limits.brake_min_mps2;
+  out.accel_limit_mps2 = w.setup->ego.limits.brake_min_mps2;
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kDef1Halt;
   out.decision.reason = note + "holding the side lane after an aborted merge until t = " +
@@ -88,7 +88,7 @@ PlanOutput hold_after_abort(const InSideLane& side, const WorldSnapshot& w, cons
 
 // Waiting for the answer to an open request: the speed profile its P_c assumes.
 void wait_for_reply(const PendingRequest& pending, const WorldSnapshot& w, const HaltProfile& h, PlanOutput& out) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double v_e = ego_speed_mps(w);
   // The request's P_c assumes Def. 2's speed profile over rho_c (2.1: v_e held; 2.2: b_min
   // down to v_e - b_min rho_c). The comfortable halt profile left a braking ego behind its own
@@ -123,7 +123,7 @@ void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, 
           PlanOutput& out) {
   const double v_e = ego_speed_mps(w);
   out.target_speed_mps = std::min(std::max(v_e, kStandstillMergeSpeedMps), h.halt_cap_mps);
-  out.accel_limit_mps2 = std::max(h.brake_limit_mps2, accel_limit_toward(*w.scenario, v_e, out.target_speed_mps));
+  out.accel_limit_mps2 = std::max(h.brake_limit_mps2, accel_limit_toward(*w.setup, v_e, out.target_speed_mps));
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kDef1Halt;
   out.decision.reason = note + "Def. 1.3: no feasible gap (" + why + "); braking to halt by x = " +
@@ -157,7 +157,7 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
 std::string RcppPlanner::advance_phase(const WorldSnapshot& w) {
   // Already in the main lane (a start there); not an ego on its way back after an abort.
   if (const auto* side = std::get_if<InSideLane>(&phase_);
-      side && !side->lateral.return_path && w.ego.y_m > -0.5 * w.scenario->road.lane_width_m) {
+      side && !side->lateral.return_path && w.ego.y_m > -0.5 * w.setup->road.lane_width_m) {
     phase_ = InMainLane{};
     return "";
   }
@@ -197,14 +197,14 @@ std::optional<CommittedMerge> RcppPlanner::read_reply(InSideLane& side, const Wo
   if (note.empty() && w.time_s > pending.deadline_s)
     note = "Def. 2.3: no acceptance from vehicle " + std::to_string(partner) + " within rho_c; ";
   if (!note.empty()) {
-    retry_after_s_[partner] = w.time_s + kRetryAfterRhoC * w.scenario->params.planner.comm_threshold_s;
+    retry_after_s_[partner] = w.time_s + kRetryAfterRhoC * w.setup->params.planner.comm_threshold_s;
     side.pending.reset();
   }
   return std::nullopt;
 }
 
 void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, PlanOutput& out, std::string& note) {
-  if (side.pending || !cooperative_ || !w.scenario->ego.v2v.capable) return;
+  if (side.pending || !cooperative_ || !w.setup->ego.v2v.capable) return;
   auto plan = plan_definition2(w, retry_after_s_);
   if (!plan) return;
   V2vMessage req;
@@ -219,7 +219,7 @@ void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, PlanOut
   out.outbox.push_back(req);
   plan->decision.reason = note + plan->decision.reason;
   note.clear();
-  side.pending = PendingRequest{std::move(*plan), w.time_s + w.scenario->params.planner.comm_threshold_s};
+  side.pending = PendingRequest{std::move(*plan), w.time_s + w.setup->params.planner.comm_threshold_s};
 }
 
 // The paper's order: an answer to an open request, Definition 1 at rho_m, a Definition 2

@@ -9,18 +9,18 @@
 
 namespace mg {
 
-double planned_rho_m_s(const Scenario& s) {
+double planned_rho_m_s(const PlannerSetup& s) {
   return std::max(s.params.planner.merge_duration_s, s.params.rules.merge_duration_s);
 }
 
 Def1Context def1_context(const WorldSnapshot& w, double rho_s) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   return Def1Context{w.ego.x_m, ego_speed_mps(w), s.ego.size.length_m, s.ego.limits,
                      s.params.rss.response_time_s, rho_s, s.road.speed_limit_mps};
 }
 
 CoopContext coop_context(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   // v_o* with slack: solved exactly, ineq. (3) left the responder 0.29 m inside the ego's safe
   // distance at the midpoint once the request's latency delayed it (docs/planner.md).
   return CoopContext{w.ego.x_m,
@@ -47,7 +47,7 @@ Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle
   return leader_track(l, observed_accel_mps2(w, l.id), ahead, ahead ? chained_accel_mps2(lane, *ahead, accel_of) : 0.0);
 }
 
-double leader_bound_margin_m(const Scenario& s, const MainLaneVehicle& o, double x_o_m, double v_o_mps, double v_at_mps,
+double leader_bound_margin_m(const PlannerSetup& s, const MainLaneVehicle& o, double x_o_m, double v_o_mps, double v_at_mps,
                              double pc_m) {
   const double dl = rss_longitudinal_m({v_at_mps, v_o_mps, s.ego.size.length_m, o.length_m,
                                         s.params.rss.response_time_s, s.ego.limits.accel_max_mps2,
@@ -62,7 +62,7 @@ std::optional<double> time_to_reach_s(const WorldSnapshot& w, const SpeedRamp& r
 }
 
 std::vector<BesideTrack> beside_tracks(const WorldSnapshot& w) {
-  const double lane_w = w.scenario->road.lane_width_m;
+  const double lane_w = w.setup->road.lane_width_m;
   std::vector<BesideTrack> tracks;
   for (const ObservedVehicle& o : w.others) {
     const double lane_y_m = std::round(o.state.y_m / lane_w) * lane_w;
@@ -76,7 +76,7 @@ double constant_speed_x(const ObservedVehicle& o, double t_s) {
   return o.state.x_m + std::max(0.0, o.state.road_vx_mps()) * t_s;
 }
 
-double standstill_merge_length_m(const Scenario& s) {
+double standstill_merge_length_m(const PlannerSetup& s) {
   const PlannerParams& p = s.params.planner;
   const double kappa = std::max(
       p.kappa_min_per_m,
@@ -87,7 +87,7 @@ double standstill_merge_length_m(const Scenario& s) {
          kSideExitMarginM;
 }
 
-double accel_limit_toward(const Scenario& s, double current_mps, double target_mps) {
+double accel_limit_toward(const PlannerSetup& s, double current_mps, double target_mps) {
   return target_mps >= current_mps ? s.ego.limits.accel_max_mps2 : s.ego.limits.brake_min_mps2;
 }
 

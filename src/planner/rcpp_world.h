@@ -21,7 +21,7 @@ inline constexpr double kPathStepM = 1.0;
 // The merge duration RCPP plans with: its own rho_m, but never below the rules' (the traffic
 // code's rho_m, public like the speed limit): a merge planned for a shorter rho than the judge's
 // is a merge into a gap the judge finds too short (spec §8; docs/planner.md).
-double planned_rho_m_s(const Scenario& s);
+double planned_rho_m_s(const PlannerSetup& s);
 
 Def1Context def1_context(const WorldSnapshot& w, double rho_s);
 CoopContext coop_context(const WorldSnapshot& w);
@@ -34,7 +34,7 @@ Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle
 
 // The P_c bound toward a vehicle `o` the ego merges behind (RCPP §II-C, spec §6), the ego reaching
 // P_c at v_at while `o` is predicted at (x_o, v_o): x_o less D_lon, minus P_c; >= 0 while it holds.
-double leader_bound_margin_m(const Scenario& s, const MainLaneVehicle& o, double x_o_m, double v_o_mps, double v_at_mps,
+double leader_bound_margin_m(const PlannerSetup& s, const MainLaneVehicle& o, double x_o_m, double v_o_mps, double v_at_mps,
                              double pc_m);
 
 // When the ego on `ramp` reaches X = x_m from where it is now (nullopt: never).
@@ -50,9 +50,9 @@ double constant_speed_x(const ObservedVehicle& o, double t_s);
 // a comfortable sigmoid at kStandstillMergeSpeedMps to the side-lane exit, plus kSideExitMarginM
 // (Def. 1.3).
 inline constexpr double kStandstillMergeSpeedMps = 5.0;
-double standstill_merge_length_m(const Scenario& s);
+double standstill_merge_length_m(const PlannerSetup& s);
 
 // |accel| the speed controller may use from current_mps toward target_mps: a_accel^max or b_min.
-double accel_limit_toward(const Scenario& s, double current_mps, double target_mps);
+double accel_limit_toward(const PlannerSetup& s, double current_mps, double target_mps);
 
 }  // namespace mg

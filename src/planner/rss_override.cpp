@@ -11,7 +11,7 @@ namespace mg {
 void apply_proper_response(const WorldSnapshot& w, PlanOutput& out) {
   const auto danger = rss_danger_ahead(w);
   if (!danger) return;
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const auto o = std::find_if(w.others.begin(), w.others.end(),
                               [&](const ObservedVehicle& v) { return v.id == danger->vehicle_id; });
   out.proper_response = true;

@@ -26,7 +26,7 @@ constexpr double kReturnLaneLineMarginM = 0.25;
 
 // What a return or a hold may do at the ego's speed (planner/return_path.h, ReturnLimits).
 ReturnLimits return_limits(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double v = ego_speed_mps(w);
   ReturnLimits limits;
   limits.cap_curvature_per_m =
@@ -51,12 +51,12 @@ SideLaneLateral lateral_after_abort(const WorldSnapshot& w) {
   // again at the next merge (each swing reverses the lateral speed; a random leader's bursts
   // drew a merge, an abort and a swing back every few seconds: smoothness_oscillation).
   SideLaneLateral lateral;
-  lateral.hold_pending = w.ego.y_m - w.scenario->road.side_lane_y_m() <= kHoldAfterAbortOffsetM;
+  lateral.hold_pending = w.ego.y_m - w.setup->road.side_lane_y_m() <= kHoldAfterAbortOffsetM;
   return lateral;
 }
 
 std::vector<PathPoint> side_lane_path(SideLaneLateral& lateral, const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double from_x = w.ego.x_m - kPathBehindM, to_x = w.ego.x_m + tracked_path_ahead_m(w);
   if (lateral.hold_pending) {  // the first cycle after a shallow abort: stop the lateral motion, no swing back
     lateral.hold_pending = false;

@@ -21,7 +21,7 @@ struct FieldModel {
   const TripFieldCoefficients* k;
 
   double obstacles(double x, double y, double t) const {
-    const Scenario& s = *w->scenario;
+    const PlannerSetup& s = *w->setup;
     double u = 0.0;
     for (const ObservedVehicle& o : w->others) {
       const double v_o = std::max(0.0, o.state.road_vx_mps());
@@ -34,12 +34,12 @@ struct FieldModel {
 
   // The lane attraction's growth toward the side lane's end (a function of x alone).
   double urgency(double x) const {
-    const Road& road = w->scenario->road;
+    const Road& road = w->setup->road;
     return 1.0 + k->end_urgency_gain * std::exp(-std::max(0.0, road.side_lane_end_x_m - x) / k->end_urgency_length_m);
   }
 
   double total(double x, double y, double t, double urgency_at_x) const {
-    const Scenario& s = *w->scenario;
+    const PlannerSetup& s = *w->setup;
     const Road& road = s.road;
     const bool side_lane_here = x >= road.side_lane_start_x_m && x <= road.side_lane_end_x_m;
     const double right_y = side_lane_here ? -1.5 * road.lane_width_m : -0.5 * road.lane_width_m;
@@ -61,7 +61,7 @@ double tripfield_obstacle_potential(double dx_m, double dy_m, double obstacle_sp
 }
 
 PlanOutput TripFieldPlanner::plan(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const Road& road = s.road;
   const FieldModel field{&w, &k_};
   const double v_e = ego_speed_mps(w);

@@ -11,7 +11,7 @@ double ego_speed_mps(const WorldSnapshot& w) { return std::max(0.0, w.ego.road_v
 double ego_lat_speed_mps(const WorldSnapshot& w) { return w.ego.road_vy_mps(); }
 
 double tracked_path_ahead_m(const WorldSnapshot& w) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double cycle_s = s.params.sim.planner_cycle_s;
   const double reach_speed_mps = ego_speed_mps(w) + s.ego.limits.accel_max_mps2 * cycle_s;
   return 10.0 + reach_speed_mps * (cycle_s + 1.0);
@@ -23,7 +23,7 @@ MainLaneVehicle to_lane_vehicle(const ObservedVehicle& o) {
 }
 
 std::vector<MainLaneVehicle> target_lane_vehicles(const WorldSnapshot& w) {
-  const double half_lane_m = 0.5 * w.scenario->road.lane_width_m;
+  const double half_lane_m = 0.5 * w.setup->road.lane_width_m;
   std::vector<MainLaneVehicle> lane;
   for (const ObservedVehicle& o : w.others)
     if (std::abs(o.state.y_m) < half_lane_m) lane.push_back(to_lane_vehicle(o));
@@ -40,7 +40,7 @@ std::optional<MainLaneVehicle> leader_ahead_of(const std::vector<MainLaneVehicle
 }
 
 double rss_follow_speed_mps(const WorldSnapshot& w, const MainLaneVehicle& leader) {
-  const Scenario& s = *w.scenario;
+  const PlannerSetup& s = *w.setup;
   const double gap_m = leader.x_m - w.ego.x_m - kFollowBufferM;
   const auto margin = [&](double v) {
     return gap_m - rss_longitudinal_m({v, leader.speed_mps, s.ego.size.length_m, leader.length_m,

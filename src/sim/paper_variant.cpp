@@ -10,7 +10,7 @@ PlanOutput CruiseAfterMergePlanner::plan(const WorldSnapshot& world) {
   PlanOutput out = inner_->plan(world);
   // Only plain lane keeping: an RSS proper response (kProperResponse) keeps its braking.
   if (out.decision.mode != DecisionMode::kMerged) return out;
-  const Scenario& s = *world.scenario;
+  const PlannerSetup& s = *world.setup;
   const double cruise_mps = s.ego.speed_mps;
   if (out.target_speed_mps <= cruise_mps) return out;
   out.target_speed_mps = cruise_mps;

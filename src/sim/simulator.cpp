@@ -140,7 +140,7 @@ class Run {
     WorldSnapshot world;
     world.time_s = t;
     world.ego = ego_;
-    world.scenario = &s_;
+    world.setup = &s_;
     world.inbox = std::move(inbox_);
     inbox_.clear();
     for (std::size_t i = 0; i < s_.vehicles.size(); ++i) {

@@ -19,7 +19,7 @@ const Scenario& std4() {
 
 std::string refusal(const std::string& reply) {
   try {
-    parse_command_reply(reply, std4());
+    parse_command_reply(reply, initial_snapshot(std4()));
   } catch (const ProtocolError& e) {
     return e.what();
   }
@@ -64,7 +64,7 @@ TEST(ExecProtocol, ACommandBecomesAPlanOutput) {
   const PlanOutput out = parse_command_reply(
       R"({"type":"command","path":[[0,-3.5],[50,0]],"target_speed_mps":20,"accel_limit_mps2":2,)"
       R"("outbox":[{"type":"request","to_id":1,"coop_case":"ego_behind","target_speed_mps":15}],"annotation":{"why":"gap"}})",
-      std4());
+      initial_snapshot(std4()));
   ASSERT_EQ(out.path.size(), 2u);
   EXPECT_EQ(out.path[1].y_m, 0.0);
   EXPECT_EQ(out.target_speed_mps, 20.0);

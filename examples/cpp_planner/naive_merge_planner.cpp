@@ -24,21 +24,20 @@ mg::PlanOutput NaiveMergePlanner::plan(const mg::WorldSnapshot& world) {
   out.path = mg::sample_path(world.ego.x_m - 10.0, world.ego.x_m + 50.0 + 3.0 * speed, 2.0, y_of);
   out.target_speed_mps = speed;
   out.accel_limit_mps2 = s.ego.limits.accel_max_mps2;
-  out.decision.time_s = world.time_s;
   if (!merge_pc_m_) {
-    out.decision.mode = mg::DecisionMode::kKeepLane;
-    out.decision.reason = "example-naive: keeping its lane until t = 1 s";
+    out.mode = "keep_lane";
+    out.reason = "example-naive: keeping its lane until t = 1 s";
   } else if (merged_ || std::abs(world.ego.y_m - to_y) < 0.1) {
     merged_ = true;
-    out.decision.mode = mg::DecisionMode::kMerged;
-    out.decision.reason = "example-naive: in the main lane";
+    out.mode = "merged";
+    out.reason = "example-naive: in the main lane";
   } else {
-    // A merge it declares, with its sigmoid, but with no gap: it claims no right of way.
-    out.decision.mode = mg::DecisionMode::kDef1Merge;
-    out.decision.pc_m = *merge_pc_m_;
-    out.decision.kappa_per_m = kKappaPerM;
-    out.decision.ve_star_mps = speed;
-    out.decision.reason = "example-naive: merging at its initial speed, gap unchecked";
+    // A merge it declares, with its sigmoid, but with no gap: its account says "merging", which
+    // reports show beside the verdict; the rules judge what it does.
+    out.mode = "merging";
+    out.reason = "example-naive: merging at its initial speed, gap unchecked";
+    out.annotation = std::make_shared<const mg::JsonAnnotation>(
+        nlohmann::json{{"pc_m", *merge_pc_m_}, {"kappa_per_m", kKappaPerM}, {"speed_mps", speed}});
   }
   return out;
 }

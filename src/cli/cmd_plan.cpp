@@ -17,37 +17,23 @@
 namespace mg::cli {
 namespace {
 
-std::string num(double v, const char* unit) {
-  if (std::isnan(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3f %s", v, unit);
-  return buf;
+void print_line(const std::string& label, const std::string& value) {
+  std::cout << label << ":" << std::string(label.size() < 18 ? 18 - label.size() : 1, ' ') << value << "\n";
 }
 
-std::string id_or_open(int id) { return id < 0 ? "open" : std::to_string(id); }
-
-void print_human(const std::string& scenario, const std::string& planner, const Decision& d, const PlanOutput& out) {
-  std::cout << "scenario:          " << scenario << "\n"
-            << "planner:           " << planner << "\n"
-            << "mode:              " << to_string(d.mode) << "\n"
-            << "gap:               "
-            << (d.gap ? "follower " + id_or_open(d.gap->follower_id) + ", leader " + id_or_open(d.gap->leader_id) : "-")
-            << "\n"
-            << "v_e* interval:     [" << num(d.ve_min_mps, "m/s") << ", " << num(d.ve_max_mps, "m/s") << "]\n"
-            << "v_e* chosen:       " << num(d.ve_star_mps, "m/s") << "\n"
-            << "P_c bounds:        [" << num(d.pc_min_m, "m") << ", " << num(d.pc_max_m, "m") << "]\n"
-            << "P_c chosen:        " << num(d.pc_m, "m") << "\n"
-            << "kappa:             " << num(d.kappa_per_m, "1/m") << "\n"
-            << "merge duration:    " << num(d.merge_duration_s, "s") << "\n"
-            << "cooperation:       "
-            << (d.coop_partner_id < 0 ? std::string("-")
-                                      : "vehicle " + std::to_string(d.coop_partner_id) + ", v_o* " +
-                                            num(d.vo_star_mps, "m/s") + ", D*_lon " + num(d.d_lon_star_m, "m"))
-            << "\n"
-            << "target speed:      " << num(out.target_speed_mps, "m/s") << "\n"
-            << "proper response:   " << (out.proper_response ? "yes" : "no") << "\n"
-            << "messages sent:     " << out.outbox.size() << "\n"
-            << "reason:            " << d.reason << "\n";
+// The command, then the planner's own account (its annotation's lines), then the reason.
+void print_human(const std::string& scenario, const std::string& planner, const PlanOutput& out) {
+  char speed[64];
+  std::snprintf(speed, sizeof speed, "%.3f m/s", out.target_speed_mps);
+  print_line("scenario", scenario);
+  print_line("planner", planner);
+  print_line("mode", out.mode.empty() ? "-" : out.mode);
+  if (out.annotation)
+    for (const auto& [label, value] : out.annotation->describe()) print_line(label, value);
+  print_line("target speed", speed);
+  print_line("proper response", out.proper_response ? "yes" : "no");
+  print_line("messages sent", std::to_string(out.outbox.size()));
+  print_line("reason", out.reason);
 }
 
 int run_plan(const std::vector<std::string>& args) {
@@ -75,14 +61,13 @@ int run_plan(const std::vector<std::string>& args) {
     nlohmann::json j;
     j["scenario"] = scenario.name;
     j["planner"] = planner_name;
-    j["decision"] = decision_to_json(out.decision);
+    j["decision"] = plan_record_to_json({world.time_s, out.mode, out.reason, out.annotation});
     j["target_speed_mps"] = out.target_speed_mps;
     j["proper_response"] = out.proper_response;
     j["messages_sent"] = out.outbox.size();
-    if (!out.decision.annotation.is_null()) j["annotation"] = out.decision.annotation;
     std::cout << j.dump(2) << "\n";
   } else {
-    print_human(scenario.name, planner_name, out.decision, out);
+    print_human(scenario.name, planner_name, out);
   }
   return kExitOk;
 }

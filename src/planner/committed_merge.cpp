@@ -97,7 +97,7 @@ double merge_target_speed_mps(const CommittedMerge& m, const WorldSnapshot& w) {
 std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSnapshot& w,
                                          const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& o,
                                          double t_s) {
-  const Decision& d = m.decision;
+  const RcppDecision& d = m.decision;
   const PlannerSetup& s = *w.setup;
   if (d.mode == DecisionMode::kDef2Merge && o.id == d.coop_partner_id) {
     // From its speed now linearly to v_o* by the yield deadline of the plan's responder model
@@ -121,7 +121,7 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
 // spec §6: abort when the P_c bounds cross at the gap vehicles' predicted positions.
 bool committed_bounds_crossed(const CommittedMerge& m, const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
-  const Decision& d = m.decision;
+  const RcppDecision& d = m.decision;
   if (!d.gap) return false;
   // The speed the ego will really aim for: v_e*, or less behind a braking leader (follow_merge).
   const SpeedRamp ramp{ego_speed_mps(w), merge_target_speed_mps(m, w), s.ego.limits.accel_max_mps2,
@@ -151,7 +151,7 @@ bool committed_bounds_crossed(const CommittedMerge& m, const WorldSnapshot& w) {
 // The occupancy check of the rest of the merge with the gap vehicles as observed now.
 bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
-  const Decision& d = m.decision;
+  const RcppDecision& d = m.decision;
   if (!d.gap) return true;
   // The rest of the merge, until the ego reaches the sigmoid's end at the speed it aims for.
   // The ego's speed as planned (v_e*), as the candidate was checked: checking the capped target
@@ -197,9 +197,9 @@ bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
              : committed_bounds_crossed(m, w);
 }
 
-PlanOutput follow_merge(const CommittedMerge& m, const WorldSnapshot& w) {
+RcppCycle follow_merge(const CommittedMerge& m, const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
-  PlanOutput out;
+  RcppCycle out;
   out.path = sample_sigmoid(m.sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kPathStepM);
   const double target = merge_target_speed_mps(m, w);
   out.target_speed_mps = target;

@@ -3,7 +3,7 @@
 // still sound; its speed is v_e*, capped behind a braking leader.
 #pragma once
 
-#include "planner/planner.h"
+#include "planner/rcpp_decision.h"
 #include "planner/sigmoid.h"
 
 namespace mg {
@@ -17,7 +17,7 @@ inline constexpr double kAbortLateralFraction = 0.25;
 struct CommittedMerge {
   Sigmoid sigmoid;
   double target_speed_mps = 0.0;  // v_e* (Def. 1) or the speed after the exchange (Def. 2)
-  Decision decision;              // the decision that started it
+  RcppDecision decision;              // the decision that started it
   // Where the lateral move starts: the side lane's centre, or the ego's offset at the decision
   // if nearer the main lane (a merge planned while the ego is still on its way back from an
   // abort is not committed from its first cycle: it would then follow, at RSS distance, the
@@ -38,6 +38,6 @@ bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w);
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
 
 // This cycle's command along the merge.
-PlanOutput follow_merge(const CommittedMerge& m, const WorldSnapshot& w);
+RcppCycle follow_merge(const CommittedMerge& m, const WorldSnapshot& w);
 
 }  // namespace mg

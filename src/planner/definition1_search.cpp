@@ -148,7 +148,7 @@ Def1Plan def1_plan(const Def1Search& f, const Gap& gid, const SpeedInterval& iv,
   plan.ve_star_mps = choice.param;
   const double pc = b.pc_at(f, choice.param);
   plan.sigmoid = Sigmoid{f.s.road.lane_width_m, choice.kappa_per_m, pc, -f.s.road.lane_width_m};
-  Decision& d = plan.decision;
+  RcppDecision& d = plan.decision;
   d.time_s = f.w.time_s;
   d.mode = DecisionMode::kDef1Merge;
   d.gap = gid;

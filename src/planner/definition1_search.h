@@ -6,14 +6,14 @@
 #include <optional>
 #include <string>
 
-#include "planner/planner.h"
+#include "planner/rcpp_decision.h"
 #include "planner/sigmoid.h"
 
 namespace mg {
 
 // Definition 1 at one decision instant: the best gap and sigmoid over the merge durations.
 struct Def1Plan {
-  Decision decision;  // mode kDef1Merge, gap, v_e* interval and choice, P_c bounds/choice, kappa
+  RcppDecision decision;  // mode kDef1Merge, gap, v_e* interval and choice, P_c bounds/choice, kappa
   Sigmoid sigmoid;
   double ve_star_mps = 0.0;
 };

@@ -105,7 +105,7 @@ Def2Plan coop_plan(const CoopCandidate& x, const CoopBounds& b, double pc_m, dou
   plan.vo = x.vo;
   plan.partner = o;
   plan.ego_speed_after_mps = x.v_after_mps;
-  Decision& d = plan.decision;
+  RcppDecision& d = plan.decision;
   d.time_s = x.w.time_s;
   d.mode = DecisionMode::kDef2Request;
   d.gap = b.gap;

@@ -8,14 +8,14 @@
 
 #include "planner/definition1.h"
 #include "planner/definition2.h"
-#include "planner/planner.h"
+#include "planner/rcpp_decision.h"
 #include "planner/sigmoid.h"
 
 namespace mg {
 
 // Definition 2 request at one decision instant.
 struct Def2Plan {
-  Decision decision;  // mode kDef2Request, partner, v_o*, D*_lon, P_c bounds/choice, kappa
+  RcppDecision decision;  // mode kDef2Request, partner, v_o*, D*_lon, P_c bounds/choice, kappa
   Sigmoid sigmoid;
   VoStar vo;
   MainLaneVehicle partner;

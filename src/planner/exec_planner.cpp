@@ -136,9 +136,10 @@ class ExecPlanner : public Planner {
     PlanOutput out;
     parse_or_fail([&] { out = parse_command_reply(session_->call(observe_request(world), "observe", world.time_s), world); },
                   world.time_s);
-    // The protocol has no discrete decisions (the Decision record is RCPP's): the mode stays
-    // keep_lane and the planner's own account is its annotation.
-    out.decision.reason = "command of " + session_->identity().name;
+    // The protocol has no mode or reason of its own: a planner may name them in its annotation
+    // (docs/planner_protocol.md); otherwise the mode is "command".
+    if (out.mode.empty()) out.mode = "command";
+    if (out.reason.empty()) out.reason = "command of " + session_->identity().name;
     return out;
   }
 

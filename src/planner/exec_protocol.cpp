@@ -197,7 +197,12 @@ PlanOutput parse_command_reply(const std::string& line, const WorldSnapshot& wor
   }
   if (const auto annotation = j.find("annotation"); annotation != j.end()) {
     if (!annotation->is_object()) throw ProtocolError("command: \"annotation\" must be an object");
-    out.decision.annotation = *annotation;
+    // Its "mode" and "reason", when they are strings, are what the trace's events and reports show.
+    if (const auto mode = annotation->find("mode"); mode != annotation->end() && mode->is_string())
+      out.mode = mode->get<std::string>();
+    if (const auto reason = annotation->find("reason"); reason != annotation->end() && reason->is_string())
+      out.reason = reason->get<std::string>();
+    out.annotation = std::make_shared<const JsonAnnotation>(*annotation);
   }
   return out;
 }

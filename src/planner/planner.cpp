@@ -1,51 +1,20 @@
 #include "planner/planner.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace mg {
 
-std::string to_string(DecisionMode m) {
-  switch (m) {
-    case DecisionMode::kKeepLane: return "keep_lane";
-    case DecisionMode::kDef1Merge: return "def1_merge";
-    case DecisionMode::kDef2Request: return "def2_request";
-    case DecisionMode::kDef2Merge: return "def2_merge";
-    case DecisionMode::kDef1Halt: return "def1_halt";
-    case DecisionMode::kProperResponse: return "proper_response";
-    case DecisionMode::kMerged: return "merged";
-    case DecisionMode::kPotentialField: return "potential_field";
-  }
-  return "unknown";
+std::vector<std::pair<std::string, std::string>> PlanAnnotation::describe() const {
+  std::vector<std::pair<std::string, std::string>> lines;
+  const nlohmann::json j = to_json();
+  if (!j.is_object()) return {{"annotation", j.dump()}};
+  for (const auto& [key, value] : j.items()) lines.emplace_back(key, value.is_string() ? value.get<std::string>() : value.dump());
+  return lines;
 }
 
-namespace {
-// NaN (not applicable) becomes JSON null.
-nlohmann::json number_or_null(double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); }
-}  // namespace
-
-nlohmann::json decision_to_json(const Decision& d) {
-  nlohmann::json j;
-  j["time_s"] = d.time_s;
-  j["mode"] = to_string(d.mode);
-  if (d.gap)
-    j["gap"] = {{"follower_id", d.gap->follower_id < 0 ? nlohmann::json(nullptr) : nlohmann::json(d.gap->follower_id)},
-                {"leader_id", d.gap->leader_id < 0 ? nlohmann::json(nullptr) : nlohmann::json(d.gap->leader_id)}};
-  else
-    j["gap"] = nullptr;
-  j["ve_min_mps"] = number_or_null(d.ve_min_mps);
-  j["ve_max_mps"] = number_or_null(d.ve_max_mps);
-  j["ve_star_mps"] = number_or_null(d.ve_star_mps);
-  j["pc_min_m"] = number_or_null(d.pc_min_m);
-  j["pc_max_m"] = number_or_null(d.pc_max_m);
-  j["pc_m"] = number_or_null(d.pc_m);
-  j["kappa_per_m"] = number_or_null(d.kappa_per_m);
-  j["merge_duration_s"] = number_or_null(d.merge_duration_s);
-  j["coop_partner_id"] = d.coop_partner_id < 0 ? nlohmann::json(nullptr) : nlohmann::json(d.coop_partner_id);
-  j["vo_star_mps"] = number_or_null(d.vo_star_mps);
-  j["d_lon_star_m"] = number_or_null(d.d_lon_star_m);
-  j["reason"] = d.reason;
-  if (!d.annotation.is_null()) j["annotation"] = d.annotation;
+nlohmann::json plan_record_to_json(const PlanRecord& r) {
+  nlohmann::json j{{"time_s", r.time_s}, {"mode", r.mode}, {"reason", r.reason}};
+  if (r.annotation) j["annotation"] = r.annotation->to_json();
   return j;
 }
 

@@ -1,14 +1,17 @@
 // The one planner interface that the simulator, checker and fuzzer drive (issue #3 item 1).
-// A planner sees a snapshot of the world and returns a reference path, a speed command,
-// outgoing V2V messages and a decision record. New planners register with register_planner
-// (planner/planner_registry.h), built-in or not.
+// A planner sees an observation (WorldSnapshot: time, its own state, the other vehicles'
+// observable states and declarations, the V2V messages delivered to it, its setup: road, own
+// declarations, parameters) and returns a command (PlanOutput: a reference path, a target speed
+// and acceleration limit, V2V messages to send, and an optional account of itself for reports).
+// Nothing in it is any one planner's vocabulary: RCPP's decision record is RCPP's annotation
+// (planner/rcpp_decision.h). Planners register with register_planner (planner/planner_registry.h),
+// built-in or not.
 #pragma once
 
 #include <cassert>
 #include <cstddef>
-#include <limits>
 #include <memory>
-#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -38,48 +41,30 @@ struct WorldSnapshot {
   const PlannerSetup* setup = nullptr;   // road, the ego's declarations and dynamics, params (never null)
 };
 
-enum class DecisionMode {
-  kKeepLane,        // not merging yet / already in the main lane, following
-  kDef1Merge,       // Definition 1 gap found, merging
-  kDef2Request,     // Definition 2 request sent, waiting (rho_c)
-  kDef2Merge,       // Definition 2 accepted, merging
-  kDef1Halt,        // Definition 1.3: no gap, brake to halt before the side lane end
-  kProperResponse,  // RSS override: dangerous situation, braking at least b_min
-  kMerged,          // merge completed, lane keeping in the main lane
-  kPotentialField,  // baseline planner (TriPField-style), no discrete decision
+// A planner's own account of one cycle (RCPP's decision record, an exec planner's `annotation`):
+// reports and saved traces show it beside the verdict; no rule reads it. It is serialized only
+// when a report or trace asks, so a planner may keep it typed and cheap.
+class PlanAnnotation {
+ public:
+  virtual ~PlanAnnotation() = default;
+  virtual nlohmann::json to_json() const = 0;  // a JSON object
+  // "label: value" lines for `mergeguard plan`'s human output; by default the JSON's members.
+  virtual std::vector<std::pair<std::string, std::string>> describe() const;
+
+ protected:
+  PlanAnnotation() = default;
+  PlanAnnotation(const PlanAnnotation&) = default;
+  PlanAnnotation& operator=(const PlanAnnotation&) = default;
 };
 
-// A gap between main-lane vehicles: follower behind, leader ahead; -1 = open side.
-struct Gap {
-  int follower_id = -1;
-  int leader_id = -1;
-  bool operator==(const Gap&) const = default;
-};
+// The annotation of a planner that gives JSON (an exec planner's free-form object).
+class JsonAnnotation final : public PlanAnnotation {
+ public:
+  explicit JsonAnnotation(nlohmann::json j) : json_(std::move(j)) {}
+  nlohmann::json to_json() const override { return json_; }
 
-// The record of one planning decision; what `mergeguard plan` prints and the trace keeps.
-struct Decision {
-  double time_s = 0.0;
-  DecisionMode mode = DecisionMode::kKeepLane;
-  std::optional<Gap> gap;
-  // Definition 1: feasible interval of v_e* and the choice (NaN when not applicable).
-  double ve_min_mps = std::numeric_limits<double>::quiet_NaN();
-  double ve_max_mps = std::numeric_limits<double>::quiet_NaN();
-  double ve_star_mps = std::numeric_limits<double>::quiet_NaN();
-  // Sigmoid: P_c bounds and choice, slope kappa, lateral offset b.
-  double pc_min_m = std::numeric_limits<double>::quiet_NaN();
-  double pc_max_m = std::numeric_limits<double>::quiet_NaN();
-  double pc_m = std::numeric_limits<double>::quiet_NaN();
-  double kappa_per_m = std::numeric_limits<double>::quiet_NaN();
-  // Merge duration rho the decision was evaluated with (rho_m, or longer for slow merges).
-  double merge_duration_s = std::numeric_limits<double>::quiet_NaN();
-  // Definition 2: responder and the v_o* asked for.
-  int coop_partner_id = -1;
-  double vo_star_mps = std::numeric_limits<double>::quiet_NaN();
-  double d_lon_star_m = std::numeric_limits<double>::quiet_NaN();
-  std::string reason;   // one human-readable line explaining the decision
-  // A planner's own free-form account (an exec planner's `annotation`, docs/planner_protocol.md);
-  // null when it gives none. Reports and traces show it in planner_annotations; no rule reads it.
-  nlohmann::json annotation;
+ private:
+  nlohmann::json json_;
 };
 
 struct PathPoint {
@@ -102,14 +87,29 @@ std::vector<PathPoint> sample_path(double x_from_m, double x_to_m, double step_m
   return path;
 }
 
+// A planner's command for one cycle.
 struct PlanOutput {
   std::vector<PathPoint> path;          // reference path in the road frame, increasing X
   double target_speed_mps = 0.0;        // speed to track
   double accel_limit_mps2 = 0.0;        // |accel| the speed controller may use toward it
-  bool proper_response = false;         // RSS override active: brake at least b_min
+  bool proper_response = false;         // RSS proper response (spec §4): brake at least b_min
   std::vector<V2vMessage> outbox;
-  Decision decision;
+  // What the planner says it is doing, for reports only: a short name of its state (a change is
+  // a trace event), one line of reason, and its own record (optional).
+  std::string mode;
+  std::string reason;
+  std::shared_ptr<const PlanAnnotation> annotation;
 };
+
+// One planner cycle's account as the trace keeps it (planner_annotations.decisions[i]).
+struct PlanRecord {
+  double time_s = 0.0;
+  std::string mode;
+  std::string reason;
+  std::shared_ptr<const PlanAnnotation> annotation;
+};
+// {"time_s", "mode", "reason", "annotation" (when there is one)}.
+nlohmann::json plan_record_to_json(const PlanRecord& r);
 
 class Planner {
  public:
@@ -127,8 +127,6 @@ class Planner {
 std::unique_ptr<Planner> make_planner(const std::string& name);
 std::vector<std::string> planner_names();
 
-std::string to_string(DecisionMode m);
-nlohmann::json decision_to_json(const Decision& d);
 // Builds the snapshot of a scenario's initial state (used by `mergeguard plan`).
 WorldSnapshot initial_snapshot(const Scenario& s);
 

@@ -22,15 +22,15 @@ constexpr double kDeadlineTieS = 1e-9;
 constexpr double kMergeRetryAfterAbortS = 1.0;
 constexpr double kLongerMergeEveryS = 0.5;
 
-CommittedMerge commit(const WorldSnapshot& w, const Sigmoid& sig, double speed_mps, Decision d) {
+CommittedMerge commit(const WorldSnapshot& w, const Sigmoid& sig, double speed_mps, RcppDecision d) {
   return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m)};
 }
 
-PlanOutput keep_main_lane(const WorldSnapshot& w) {
+RcppCycle keep_main_lane(const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
   const double lane_w = s.road.lane_width_m;
   const double lane_y = std::max(0.0, std::round(w.ego.y_m / lane_w)) * lane_w;
-  PlanOutput out;
+  RcppCycle out;
   out.path = sample_straight(lane_y, w.ego.x_m - kPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kPathStepM);
   double target = s.road.speed_limit_mps;
   std::string reason = "lane keeping at the speed limit";
@@ -73,9 +73,9 @@ HaltProfile halt_profile(const WorldSnapshot& w) {
 }
 
 // Holding the side lane after an abort, until no_merge_before_s.
-PlanOutput hold_after_abort(const InSideLane& side, const WorldSnapshot& w, const HaltProfile& h,
+RcppCycle hold_after_abort(const InSideLane& side, const WorldSnapshot& w, const HaltProfile& h,
                             std::vector<PathPoint> path, const std::string& note) {
-  PlanOutput out;
+  RcppCycle out;
   out.path = std::move(path);
   out.target_speed_mps = std::min(ego_speed_mps(w), h.halt_cap_mps);
   out.accel_limit_mps2 = w.setup->ego.limits.brake_min_mps2;
@@ -87,7 +87,7 @@ PlanOutput hold_after_abort(const InSideLane& side, const WorldSnapshot& w, cons
 }
 
 // Waiting for the answer to an open request: the speed profile its P_c assumes.
-void wait_for_reply(const PendingRequest& pending, const WorldSnapshot& w, const HaltProfile& h, PlanOutput& out) {
+void wait_for_reply(const PendingRequest& pending, const WorldSnapshot& w, const HaltProfile& h, RcppCycle& out) {
   const PlannerSetup& s = *w.setup;
   const double v_e = ego_speed_mps(w);
   // The request's P_c assumes Def. 2's speed profile over rho_c (2.1: v_e held; 2.2: b_min
@@ -120,7 +120,7 @@ void wait_for_reply(const PendingRequest& pending, const WorldSnapshot& w, const
 // to anyone under way, was not to an ego that had to merge within rho of standing still
 // (progress; a campaign finding).
 void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, const std::string& note,
-          PlanOutput& out) {
+          RcppCycle& out) {
   const double v_e = ego_speed_mps(w);
   out.target_speed_mps = std::min(std::max(v_e, kStandstillMergeSpeedMps), h.halt_cap_mps);
   out.accel_limit_mps2 = std::max(h.brake_limit_mps2, accel_limit_toward(*w.setup, v_e, out.target_speed_mps));
@@ -135,7 +135,7 @@ void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, 
 PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
   const WorldSnapshot w = braking_.apply(observed);
   const std::string note = advance_phase(w);
-  PlanOutput out;
+  RcppCycle out;
   if (auto* side = std::get_if<InSideLane>(&phase_)) {
     SideLaneStep step = decide_in_side_lane(*side, w);
     if (step.merge) {
@@ -151,7 +151,7 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
   }
   if (!note.empty()) out.decision.reason = note + out.decision.reason;
   apply_proper_response(w, out);
-  return out;
+  return to_command(std::move(out));
 }
 
 std::string RcppPlanner::advance_phase(const WorldSnapshot& w) {
@@ -185,7 +185,7 @@ std::optional<CommittedMerge> RcppPlanner::read_reply(InSideLane& side, const Wo
     // once a cycle, so one delivered after the deadline may still be read before the next).
     const double delivered_s = std::isnan(m.delivered_time_s) ? w.time_s : m.delivered_time_s;
     if (m.type == MessageType::kAccept && delivered_s <= pending.deadline_s + kDeadlineTieS) {
-      Decision d = pending.plan.decision;
+      RcppDecision d = pending.plan.decision;
       d.mode = DecisionMode::kDef2Merge;
       d.reason = "vehicle " + std::to_string(partner) + " accepted: " + d.reason;
       const Def2Plan plan = pending.plan;
@@ -203,7 +203,7 @@ std::optional<CommittedMerge> RcppPlanner::read_reply(InSideLane& side, const Wo
   return std::nullopt;
 }
 
-void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, PlanOutput& out, std::string& note) {
+void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, RcppCycle& out, std::string& note) {
   if (side.pending || !cooperative_ || !w.setup->ego.v2v.capable) return;
   auto plan = plan_definition2(w, retry_after_s_);
   if (!plan) return;

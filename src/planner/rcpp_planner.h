@@ -5,7 +5,7 @@
 // end. A merge once decided is committed, re-checked and possibly aborted
 // (planner/committed_merge.h); in the side lane the return stage draws the path
 // (planner/side_lane_path.h); the RSS proper response overrides last (planner/rss_override.h).
-// Decision rules and cost: docs/planner.md.
+// RcppDecision rules and cost: docs/planner.md.
 #pragma once
 
 #include <map>
@@ -52,13 +52,13 @@ class RcppPlanner : public Planner {
  private:
   // A side-lane cycle's command, or the merge it starts.
   struct SideLaneStep {
-    PlanOutput out;
+    RcppCycle out;
     std::optional<CommittedMerge> merge;
   };
   std::string advance_phase(const WorldSnapshot& w);  // completion, abort, a start in the main lane
   SideLaneStep decide_in_side_lane(InSideLane& side, const WorldSnapshot& w);
   std::optional<CommittedMerge> read_reply(InSideLane& side, const WorldSnapshot& w, std::string& note);
-  void send_request(InSideLane& side, const WorldSnapshot& w, PlanOutput& out, std::string& note);
+  void send_request(InSideLane& side, const WorldSnapshot& w, RcppCycle& out, std::string& note);
 
   bool cooperative_;
   RcppPhase phase_;

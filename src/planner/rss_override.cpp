@@ -8,7 +8,7 @@
 
 namespace mg {
 
-void apply_proper_response(const WorldSnapshot& w, PlanOutput& out) {
+void apply_proper_response(const WorldSnapshot& w, RcppCycle& out) {
   const auto danger = rss_danger_ahead(w);
   if (!danger) return;
   const PlannerSetup& s = *w.setup;

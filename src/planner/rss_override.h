@@ -3,10 +3,10 @@
 // is overridden to brake at least b_min toward the RSS following speed.
 #pragma once
 
-#include "planner/planner.h"
+#include "planner/rcpp_decision.h"
 
 namespace mg {
 
-void apply_proper_response(const WorldSnapshot& w, PlanOutput& out);
+void apply_proper_response(const WorldSnapshot& w, RcppCycle& out);
 
 }  // namespace mg

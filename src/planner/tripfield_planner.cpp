@@ -99,10 +99,9 @@ PlanOutput TripFieldPlanner::plan(const WorldSnapshot& w) {
   }
   out.target_speed_mps = target;
   out.accel_limit_mps2 = target >= v_e ? s.ego.limits.accel_max_mps2 : brake;
-  out.decision.time_s = w.time_s;
-  out.decision.mode = DecisionMode::kPotentialField;
-  out.decision.reason = "TriPField-style baseline: path follows the field gradient; obstacle field ahead " +
-                        fixed_text(u_ahead, 2) + ", target " + fixed_text(target, 2) + " m/s";
+  out.mode = "potential_field";  // no discrete decision
+  out.reason = "TriPField-style baseline: path follows the field gradient; obstacle field ahead " +
+               fixed_text(u_ahead, 2) + ", target " + fixed_text(target, 2) + " m/s";
   return out;
 }
 

@@ -15,7 +15,11 @@ CheckResult check_trace(const Scenario& scenario, const Trace& trace, PlannerAcc
 CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name, PlannerAccount account) {
   std::unique_ptr<Planner> planner = make_planner(planner_name);
   if (!planner) throw std::invalid_argument("unknown planner '" + planner_name + "'");
-  return check_trace(scenario, simulate(scenario, *planner), account);
+  return check_scenario(scenario, *planner, account);
+}
+
+CheckResult check_scenario(const Scenario& scenario, Planner& planner, PlannerAccount account) {
+  return check_trace(scenario, simulate(scenario, planner), account);
 }
 
 }  // namespace mg

@@ -22,5 +22,9 @@ CheckResult check_trace(const Scenario& scenario, const Trace& trace,
 // std::invalid_argument.
 CheckResult check_scenario(const Scenario& scenario, const std::string& planner_name,
                            PlannerAccount account = PlannerAccount::kNameOnly);
+// Simulates with `planner` (fresh, or reset by its owner: planners keep state between cycles),
+// registered or not, and judges the run: a planner under test needs no name in the registry.
+CheckResult check_scenario(const Scenario& scenario, Planner& planner,
+                           PlannerAccount account = PlannerAccount::kNameOnly);
 
 }  // namespace mg

@@ -26,7 +26,7 @@ std::vector<VehicleDeclaration> declarations_of(const Scenario& s) {
 nlohmann::json annotations_of(const Trace& t, PlannerAccount account) {
   if (account == PlannerAccount::kNameOnly) return {{"planner", t.planner}};
   nlohmann::json decisions = nlohmann::json::array();
-  for (const Decision& d : t.decisions) decisions.push_back(decision_to_json(d));
+  for (const PlanRecord& d : t.decisions) decisions.push_back(plan_record_to_json(d));
   return {{"planner", t.planner}, {"decisions", std::move(decisions)}};
 }
 

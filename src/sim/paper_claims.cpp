@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/fixed_text.h"
+#include "planner/rcpp_decision.h"
 #include "sim/single_track.h"
 
 namespace mg {
@@ -137,8 +138,10 @@ std::optional<double> first_acceptance_s(const Trace& t, int vehicle_id) {
 }
 
 std::string def1_merge_side(const Trace& t, int vehicle_id) {
-  for (const Decision& d : t.decisions) {
-    if (d.mode != DecisionMode::kDef1Merge || !d.gap) continue;
+  for (const PlanRecord& r : t.decisions) {
+    const RcppDecision* d_of = rcpp_decision(r.annotation);  // the paper's claims are about RCPP
+    if (!d_of || d_of->mode != DecisionMode::kDef1Merge || !d_of->gap) continue;
+    const RcppDecision& d = *d_of;
     const char* side = d.gap->leader_id == vehicle_id ? "behind" : d.gap->follower_id == vehicle_id ? "ahead of" : "away from";
     return std::string("merged ") + side + " the obstacle (Def. 1 at t = " + fmt(d.time_s, 1) + " s, v_e* = " +
            fmt(d.ve_star_mps, 1) + " m/s, rho = " + fmt(d.merge_duration_s, 1) + " s)";

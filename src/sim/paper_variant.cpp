@@ -1,6 +1,7 @@
 #include "sim/paper_variant.h"
 
 #include "core/fixed_text.h"
+#include "planner/rcpp_decision.h"
 #include "planner/world_view.h"
 #include "sim/simulator.h"
 
@@ -9,13 +10,13 @@ namespace mg {
 PlanOutput CruiseAfterMergePlanner::plan(const WorldSnapshot& world) {
   PlanOutput out = inner_->plan(world);
   // Only plain lane keeping: an RSS proper response (kProperResponse) keeps its braking.
-  if (out.decision.mode != DecisionMode::kMerged) return out;
+  if (out.mode != to_string(DecisionMode::kMerged)) return out;
   const PlannerSetup& s = *world.setup;
   const double cruise_mps = s.ego.speed_mps;
   if (out.target_speed_mps <= cruise_mps) return out;
   out.target_speed_mps = cruise_mps;
   out.accel_limit_mps2 = ego_speed_mps(world) > cruise_mps ? s.ego.limits.brake_min_mps2 : s.ego.limits.accel_max_mps2;
-  out.decision.reason += "; variant: capped at the cruise speed " + fixed_text(cruise_mps, 1) + " m/s";
+  out.reason += "; variant: capped at the cruise speed " + fixed_text(cruise_mps, 1) + " m/s";
   return out;
 }
 

@@ -88,7 +88,7 @@ class Run {
       const double t = static_cast<double>(k) * dt;
       deliver_messages(t);
       if (k % cycle == 0) run_planner(t);
-      trace_.steps.push_back({t, ego_, others_, plan_.decision.mode, plan_.proper_response});
+      trace_.steps.push_back({t, ego_, others_, plan_.mode, plan_.proper_response});
       if (k == n_steps) break;
       // The simulator models no crash: vehicles that collided would drive on through each other,
       // and whatever came after would be judged against vehicles that cannot be where they are.
@@ -150,7 +150,6 @@ class Run {
     std::sort(world.others.begin(), world.others.end(),
               [](const ObservedVehicle& a, const ObservedVehicle& b) { return a.id < b.id; });
     PlanOutput out = planner_.plan(world);
-    out.decision.time_s = t;
     // Repeated points carry no direction: drop them; a path that turns back is a planner bug.
     out.path.erase(std::unique(out.path.begin(), out.path.end(),
                                [](const PathPoint& a, const PathPoint& b) { return a.x_m == b.x_m && a.y_m == b.y_m; }),
@@ -166,10 +165,9 @@ class Run {
     if (!std::isfinite(out.target_speed_mps) || !std::isfinite(out.accel_limit_mps2))
       throw contract_broken("a non-finite speed command");
     const bool first = trace_.decisions.empty();
-    if (first || out.decision.mode != plan_.decision.mode)
-      trace_.events.push_back({t, EventKind::kDecision, 0, to_string(out.decision.mode) + ": " + out.decision.reason,
-                               std::nullopt});
-    trace_.decisions.push_back(out.decision);
+    if (first || out.mode != plan_.mode)
+      trace_.events.push_back({t, EventKind::kDecision, 0, out.mode + ": " + out.reason, std::nullopt});
+    trace_.decisions.push_back({t, out.mode, out.reason, out.annotation});
     for (V2vMessage m : out.outbox) {
       m.from_id = 0;
       m.sent_time_s = t;

@@ -60,7 +60,8 @@ std::uint64_t compute_digest(const Trace& t) {
     h.add(s.time_s);
     h.add(s.ego);
     for (const VehicleState& o : s.others) h.add(o);
-    h.add_bytes(static_cast<std::uint64_t>(s.ego_mode) * 2u + (s.ego_proper_response ? 1u : 0u));
+    for (const char c : s.ego_mode) h.add_bytes(static_cast<std::uint64_t>(static_cast<unsigned char>(c)));
+    h.add_bytes(s.ego_proper_response ? 1u : 0u);
   }
   return h.value();
 }
@@ -79,11 +80,11 @@ nlohmann::json trace_to_json(const Trace& t) {
     steps.push_back({{"time_s", s.time_s},
                      {"ego", state_to_json(s.ego)},
                      {"others", std::move(others)},
-                     {"ego_mode", to_string(s.ego_mode)},
+                     {"ego_mode", s.ego_mode},
                      {"ego_proper_response", s.ego_proper_response}});
   }
   nlohmann::json decisions = nlohmann::json::array();
-  for (const Decision& d : t.decisions) decisions.push_back(decision_to_json(d));
+  for (const PlanRecord& d : t.decisions) decisions.push_back(plan_record_to_json(d));
   nlohmann::json events = nlohmann::json::array();
   for (const TraceEvent& e : t.events) {
     nlohmann::json j = {{"time_s", e.time_s}, {"kind", to_string(e.kind)}, {"vehicle_id", e.vehicle_id},

@@ -20,7 +20,7 @@ struct TraceStep {
   double time_s = 0.0;
   VehicleState ego;
   std::vector<VehicleState> others;     // same order as Scenario::vehicles
-  DecisionMode ego_mode = DecisionMode::kKeepLane;  // mode of the planner output in force
+  std::string ego_mode;                 // mode of the planner output in force (PlanOutput::mode)
   bool ego_proper_response = false;     // RSS override active this step
 };
 
@@ -48,7 +48,7 @@ struct TraceEvent {
 struct Trace {
   std::string planner;
   std::vector<TraceStep> steps;
-  std::vector<Decision> decisions;      // every planner cycle's decision record
+  std::vector<PlanRecord> decisions;    // every planner cycle's account of itself
   std::vector<TraceEvent> events;
 };
 

@@ -32,7 +32,7 @@ long pid_in(const std::string& message) {
 
 long answering_pid(const std::string& name) {
   const PlanOutput out = make_exec_planner(name)->plan(initial_snapshot(std4()));
-  return out.decision.annotation.at("pid").get<long>();
+  return out.annotation->to_json().at("pid").get<long>();
 }
 
 TEST(ExecPlanner, ACorrectPlannerAnswersWithItsCommandAndAnnotation) {
@@ -42,7 +42,8 @@ TEST(ExecPlanner, ACorrectPlannerAnswersWithItsCommandAndAnnotation) {
   ASSERT_EQ(out.path.size(), 2u);
   EXPECT_EQ(out.path[0].x_m, std4().ego.x_m);
   EXPECT_EQ(out.target_speed_mps, std4().ego.speed_mps);
-  EXPECT_EQ(out.decision.annotation.at("mode"), "echo");
+  EXPECT_EQ(out.annotation->to_json().at("mode"), "echo");
+  EXPECT_EQ(out.mode, "echo") << "an annotation's mode names the command's";
   ASSERT_TRUE(exec_planner_identity(fake("echo")));
   EXPECT_EQ(exec_planner_identity(fake("echo"))->name, "fake-echo");
 }

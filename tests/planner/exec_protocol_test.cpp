@@ -71,7 +71,8 @@ TEST(ExecProtocol, ACommandBecomesAPlanOutput) {
   ASSERT_EQ(out.outbox.size(), 1u);
   EXPECT_EQ(out.outbox[0].to_id, 1);
   EXPECT_EQ(out.outbox[0].coop_case, CoopCase::kEgoBehind);
-  EXPECT_EQ(out.decision.annotation, (json{{"why", "gap"}}));
+  ASSERT_TRUE(out.annotation);
+  EXPECT_EQ(out.annotation->to_json(), (json{{"why", "gap"}}));
 }
 
 TEST(ExecProtocol, BadCommandsAreRefusedWithTheReason) {

@@ -10,6 +10,8 @@
 #include "core/scenario.h"
 #include "planner/planner.h"
 
+#include "rcpp_decision_of.h"
+
 namespace mg {
 namespace {
 
@@ -22,7 +24,7 @@ PlanOutput plan_initial(const Scenario& s, const std::string& planner) {
   return p->plan(initial_snapshot(s));
 }
 
-void expect_choice_within_bounds(const Decision& d) {
+void expect_choice_within_bounds(const RcppDecision& d) {
   EXPECT_GE(d.ve_star_mps, d.ve_min_mps);
   EXPECT_LE(d.ve_star_mps, d.ve_max_mps);
   EXPECT_GE(d.pc_m, d.pc_min_m);
@@ -40,7 +42,7 @@ TEST(Fig2, Situation1EgoAheadMergesAheadOfTheFollower) {
   // P_c lower bound = X(2 s) at 20.916 = 100 + 41.832 + (1.084)^2/8 = 141.979 m; upper: accelerating at
   // 2 to the limit gives 100 + 44 + 4 = 148 m.
   const PlanOutput out = plan_initial(load("fig2_s1_ahead_noncoop"), "rcpp");
-  const Decision& d = out.decision;
+  const RcppDecision d = decision_of(out);
   EXPECT_EQ(d.mode, DecisionMode::kDef1Merge);
   ASSERT_TRUE(d.gap);
   EXPECT_EQ(d.gap->follower_id, 1);
@@ -64,7 +66,7 @@ TEST(Fig2, Situation2EgoBehindMergesBehindTheLeader) {
   //   -> v <= (9 + sqrt(81 + 785.2))/2 = 19.216 (literal at 2 s: v <= 19.226). Binding: 19.216.
   // No follower: lower end 0. P_c lower bound: X(2 s) at v_e* = 0 is 30 + 40 - 8 = 62 m.
   const PlanOutput out = plan_initial(load("fig2_s2_behind_noncoop"), "rcpp");
-  const Decision& d = out.decision;
+  const RcppDecision d = decision_of(out);
   EXPECT_EQ(d.mode, DecisionMode::kDef1Merge);
   ASSERT_TRUE(d.gap);
   EXPECT_EQ(d.gap->follower_id, -1);
@@ -84,7 +86,7 @@ TEST(Fig2, Situation3EgoAheadWithoutV2vDropsBackAndWithV2vAsksToSlowDown) {
   // halts (Def. 1.3). "rcpp" then tries the longer merges of its extension (docs/planner.md): it
   // drops back behind vehicle 1 in a merge longer than rho_m.
   const Scenario s = load("fig2_s3_ahead_coop");
-  const Decision halt_or_longer = plan_initial(s, "rcpp").decision;
+  const RcppDecision halt_or_longer = decision_of(plan_initial(s, "rcpp"));
   EXPECT_EQ(halt_or_longer.mode, DecisionMode::kDef1Merge);
   ASSERT_TRUE(halt_or_longer.gap);
   EXPECT_EQ(halt_or_longer.gap->follower_id, -1);
@@ -96,7 +98,7 @@ TEST(Fig2, Situation3EgoAheadWithoutV2vDropsBackAndWithV2vAsksToSlowDown) {
   // instead of v (0.1 (20 - v)) <=> v^2 + 11.2v - 450.6 <= 0 -> v_o* = 16.353 m/s >= 20 - 4*1.5
   // = 14 (brake limit). (The paper's ineq. (3) alone: v^2 + 12v - 478.6 <= 0, 16.683 m/s.)
   const PlanOutput out = plan_initial(s, "rcpp-coop");
-  const Decision& d = out.decision;
+  const RcppDecision d = decision_of(out);
   EXPECT_EQ(d.mode, DecisionMode::kDef2Request);
   EXPECT_EQ(d.coop_partner_id, 1);
   EXPECT_NEAR(d.vo_star_mps, (-11.2 + std::sqrt(11.2 * 11.2 + 4 * 450.6)) / 2, 1e-4);
@@ -123,12 +125,12 @@ TEST(Fig2, Situation4EgoBehindAsksToSpeedUpWithV2vAndOtherwiseDropsBack) {
   // the longer-merge extension drops back behind vehicle 1 with rho = 1.5 rho_m. (The Def. 2.2
   // request itself is computed in definition2_test.cpp, HandComputedEgoBehindSpeed.)
   const Scenario s = load("fig2_s4_behind_coop");
-  const Decision coop = plan_initial(s, "rcpp-coop").decision;
+  const RcppDecision coop = decision_of(plan_initial(s, "rcpp-coop"));
   EXPECT_EQ(coop.mode, DecisionMode::kDef2Request);
   EXPECT_EQ(coop.coop_partner_id, 1);
   EXPECT_GT(coop.vo_star_mps, 20.0);  // vehicle 1 is asked to speed up
 
-  const Decision d = plan_initial(s, "rcpp").decision;
+  const RcppDecision d = decision_of(plan_initial(s, "rcpp"));
   EXPECT_EQ(d.mode, DecisionMode::kDef1Merge);
   ASSERT_TRUE(d.gap.has_value());
   EXPECT_EQ(d.gap->follower_id, -1);

@@ -15,6 +15,8 @@
 #include "planner/definition1.h"
 #include "planner/planner.h"
 
+#include "rcpp_decision_of.h"
+
 namespace mg {
 namespace {
 
@@ -125,15 +127,16 @@ void expect_sane(const Scenario& s, const Rollout& r, const std::string& where) 
     EXPECT_LE(out.target_speed_mps, s.road.speed_limit_mps + 1e-9);
     EXPECT_TRUE(std::isfinite(out.accel_limit_mps2));
     EXPECT_GT(out.accel_limit_mps2, 0.0);
-    EXPECT_FALSE(out.decision.reason.empty());
-    const Decision& d = out.decision;
-    if (!std::isnan(d.pc_m)) {
-      EXPECT_GE(d.pc_m, d.pc_min_m);
-      EXPECT_LE(d.pc_m, d.pc_max_m);
+    EXPECT_FALSE(out.reason.empty());
+    EXPECT_FALSE(out.mode.empty());
+    const RcppDecision* d = rcpp_decision(out.annotation);  // the baseline gives no record
+    if (d && !std::isnan(d->pc_m)) {
+      EXPECT_GE(d->pc_m, d->pc_min_m);
+      EXPECT_LE(d->pc_m, d->pc_max_m);
     }
-    if (!std::isnan(d.ve_min_mps)) {
-      EXPECT_GE(d.ve_star_mps, d.ve_min_mps);
-      EXPECT_LE(d.ve_star_mps, d.ve_max_mps);
+    if (d && !std::isnan(d->ve_min_mps)) {
+      EXPECT_GE(d->ve_star_mps, d->ve_min_mps);
+      EXPECT_LE(d->ve_star_mps, d->ve_max_mps);
     }
   }
 }
@@ -141,7 +144,7 @@ void expect_sane(const Scenario& s, const Rollout& r, const std::string& where) 
 std::string digest(const Rollout& r) {
   std::string out;
   for (const PlanOutput& o : r.outputs) {
-    out += decision_to_json(o.decision).dump();
+    out += plan_record_to_json({0.0, o.mode, o.reason, o.annotation}).dump();
     for (const PathPoint& p : o.path) out += std::to_string(p.x_m) + "," + std::to_string(p.y_m) + ";";
     out += std::to_string(o.target_speed_mps) + std::to_string(o.outbox.size());
   }
@@ -197,7 +200,7 @@ TEST(PlannerHarness, Definition13HaltsThenMergesFromStandstill) {
   const Rollout r = roll_out(s, "rcpp", s.params.sim.horizon_s);
   bool halted = false;
   for (std::size_t k = 0; k < r.egos.size(); ++k)
-    halted = halted || (r.outputs[k].decision.mode == DecisionMode::kDef1Halt && r.egos[k].vx_mps < 0.05);
+    halted = halted || (decision_of(r.outputs[k]).mode == DecisionMode::kDef1Halt && r.egos[k].vx_mps < 0.05);
   EXPECT_TRUE(halted);
   EXPECT_TRUE(r.merged);
   EXPECT_FALSE(r.left_road);
@@ -210,12 +213,12 @@ TEST(PlannerHarness, SilentResponderFallsBackToDefinition1) {
   Scenario s = load("fig2_s3_ahead_coop");
   s.vehicles[0].behaviour.type = BehaviourType::kNonResponsive;
   const Rollout r = roll_out(s, "rcpp-coop", 3.0);
-  ASSERT_EQ(r.outputs[0].decision.mode, DecisionMode::kDef2Request);
+  ASSERT_EQ(decision_of(r.outputs[0]).mode, DecisionMode::kDef2Request);
   bool fell_back = false;
   for (const PlanOutput& o : r.outputs) {
-    EXPECT_NE(o.decision.mode, DecisionMode::kDef2Merge);
-    fell_back = fell_back || ((o.decision.mode == DecisionMode::kDef1Halt || o.decision.mode == DecisionMode::kDef1Merge) &&
-                              o.decision.reason.find("Def. 2.3") != std::string::npos);
+    EXPECT_NE(decision_of(o).mode, DecisionMode::kDef2Merge);
+    fell_back = fell_back || ((decision_of(o).mode == DecisionMode::kDef1Halt || decision_of(o).mode == DecisionMode::kDef1Merge) &&
+                              o.reason.find("Def. 2.3") != std::string::npos);
   }
   EXPECT_TRUE(fell_back);
 }
@@ -258,7 +261,7 @@ TEST(PlannerHarness, NoCooperativeRequestAsksTheResponderToDriveOntoAVehicleAhea
   WorldSnapshot w = initial_snapshot(s);
   w.others[0].state.accel_mps2 = -1.8;
   w.ego.accel_mps2 = -1.3;
-  const Decision d = make_planner("rcpp-coop")->plan(w).decision;
+  const RcppDecision d = decision_of(make_planner("rcpp-coop")->plan(w));
   EXPECT_FALSE(d.mode == DecisionMode::kDef2Request && d.coop_partner_id == 1 && d.vo_star_mps > 21.2) << d.reason;
 }
 
@@ -289,7 +292,7 @@ TEST(PlannerHarness, AMergeAheadOfAStoppedFollowerIsNotSlowedByTheVehiclesItPass
   w.others[0].state.accel_mps2 = -3.27;
   w.others[1].state.accel_mps2 = -4.0;
   auto planner = make_planner("rcpp");
-  const Decision first = planner->plan(w).decision;
+  const RcppDecision first = decision_of(planner->plan(w));
   ASSERT_EQ(first.mode, DecisionMode::kDef1Merge) << first.reason;
   ASSERT_EQ(first.gap, (Gap{3, -1})) << first.reason;
   // A cycle on, everything as predicted: the ego at v_e*, vehicle 2 still braking.
@@ -300,8 +303,8 @@ TEST(PlannerHarness, AMergeAheadOfAStoppedFollowerIsNotSlowedByTheVehiclesItPass
   w.others[1].state.x_m += (w.others[1].state.vx_mps - 2.0 * dt) * dt;
   w.others[1].state.vx_mps -= 4.0 * dt;
   const PlanOutput next = planner->plan(w);
-  EXPECT_EQ(next.decision.mode, DecisionMode::kDef1Merge) << next.decision.reason;
-  EXPECT_GE(next.target_speed_mps, first.ve_star_mps - 1e-9) << next.decision.reason;
+  EXPECT_EQ(decision_of(next).mode, DecisionMode::kDef1Merge) << next.reason;
+  EXPECT_GE(next.target_speed_mps, first.ve_star_mps - 1e-9) << next.reason;
 }
 
 // The ego merges behind vehicle 1, a 16 m truck still alongside it, braking at 1.4 m/s2 for
@@ -338,7 +341,7 @@ TEST(PlannerHarness, AMergeBehindABrakingLeaderStillAlongsideSlowsToReachPcBehin
   w.others[0].state.accel_mps2 = -1.438;
   w.others[1].state.accel_mps2 = -0.504;
   auto planner = make_planner("rcpp");
-  const Decision first = planner->plan(w).decision;
+  const RcppDecision first = decision_of(planner->plan(w));
   ASSERT_EQ(first.mode, DecisionMode::kDef1Merge) << first.reason;
   ASSERT_EQ(first.gap, (Gap{-1, 1})) << first.reason;
   // A cycle on (the states the simulator gave): the truck still ahead of the ego's centre by 5.4 m.
@@ -354,9 +357,9 @@ TEST(PlannerHarness, AMergeBehindABrakingLeaderStillAlongsideSlowsToReachPcBehin
   w.others[1].state.vx_mps = 1.446;
   w.others[1].state.accel_mps2 = -0.455;
   const PlanOutput next = planner->plan(w);
-  EXPECT_EQ(next.decision.mode, DecisionMode::kDef1Merge) << next.decision.reason;
-  EXPECT_GT(next.target_speed_mps, 5.0) << next.decision.reason;
-  EXPECT_LE(next.target_speed_mps, first.ve_star_mps) << next.decision.reason;
+  EXPECT_EQ(decision_of(next).mode, DecisionMode::kDef1Merge) << next.reason;
+  EXPECT_GT(next.target_speed_mps, 5.0) << next.reason;
+  EXPECT_LE(next.target_speed_mps, first.ve_star_mps) << next.reason;
 }
 
 // ---- planner-level properties on random scenarios ----
@@ -384,7 +387,7 @@ RC_GTEST_PROP(PlannerProperties, ChosenMergeSpeedSatisfiesDefinition1ForItsGap, 
   const Scenario s = gen_scenario();
   const WorldSnapshot w = initial_snapshot(s);
   const PlanOutput out = make_planner(*rc::gen::element<std::string>("rcpp", "rcpp-coop"))->plan(w);
-  const Decision& d = out.decision;
+  const RcppDecision d = decision_of(out);
   RC_PRE(d.mode == DecisionMode::kDef1Merge);
   RC_ASSERT(d.gap.has_value());
   const Def1Context c{s.ego.x_m, s.ego.speed_mps, s.ego.size.length_m, s.ego.limits,
@@ -405,7 +408,8 @@ RC_GTEST_PROP(PlannerProperties, SamePlannerSameSnapshotSameOutput, ()) {
   for (const std::string& name : planner_names()) {
     const PlanOutput a = make_planner(name)->plan(w);
     const PlanOutput b = make_planner(name)->plan(w);
-    RC_ASSERT(decision_to_json(a.decision) == decision_to_json(b.decision));
+    RC_ASSERT(plan_record_to_json({0.0, a.mode, a.reason, a.annotation}) ==
+              plan_record_to_json({0.0, b.mode, b.reason, b.annotation}));
     RC_ASSERT(a.target_speed_mps == b.target_speed_mps);
     RC_ASSERT(a.path.size() == b.path.size());
     for (std::size_t i = 0; i < a.path.size(); ++i)

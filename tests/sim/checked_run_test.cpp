@@ -20,7 +20,9 @@
 #include <rapidcheck/gtest.h>
 
 #include "fuzz/scenario_gen.h"
+#include "planner/rcpp_planner.h"
 #include "rules/check.h"
+#include "test_planners.h"
 
 namespace mg {
 namespace {
@@ -147,6 +149,29 @@ TEST(CheckedRun, TheAnnotationsHoldThePlannersDecisions) {
   EXPECT_EQ(a.at("planner"), "rcpp");
   ASSERT_FALSE(a.at("decisions").empty());
   EXPECT_NE(falsified(a, r.trace, 7), a);
+}
+
+// check_scenario takes a planner object as well as a registry name: a planner under test needs no
+// registration, and one object is judged exactly as the registry's planner of the same kind.
+TEST(CheckedRun, APlannerObjectOutsideTheRegistryIsJudgedLikeARegisteredOne) {
+  Scenario s;
+  MainVehicle v;
+  v.id = 1;
+  v.x_m = 60.0;
+  s.vehicles.push_back(v);
+  RcppPlanner rcpp(false);
+  const CheckResult by_object = check_scenario(s, rcpp);
+  const CheckResult by_name = check_scenario(s, "rcpp");
+  EXPECT_EQ(by_object.trace_digest, by_name.trace_digest);
+  EXPECT_EQ(by_object.holds, by_name.holds);
+  EXPECT_EQ(by_object.liable_id, by_name.liable_id);
+
+  // A planner nobody registered: keeps the side lane and halts, and is judged all the same.
+  test::LaneKeepPlanner unregistered(s.ego.y_m, 0.0, 4.0);
+  ASSERT_EQ(make_planner(unregistered.name()), nullptr);
+  const CheckResult judged = check_scenario(s, unregistered);
+  EXPECT_EQ(judged.planner, unregistered.name());
+  EXPECT_FALSE(judged.rules.empty());
 }
 
 }  // namespace

@@ -83,7 +83,7 @@ TEST(ObservedRun, ThePlannerSelfReportIsOnlyAnAnnotation) {
   const nlohmann::json& a = r.observed.planner_annotations;
   EXPECT_EQ(a.at("planner"), "rcpp-coop");
   EXPECT_EQ(a.at("decisions").size(), r.trace.decisions.size());
-  EXPECT_EQ(a.at("decisions").at(0).at("mode"), to_string(r.trace.decisions.at(0).mode));
+  EXPECT_EQ(a.at("decisions").at(0).at("mode"), r.trace.decisions.at(0).mode);
   // Nothing else in the file speaks of modes or decisions. (The judge's own parameters do: the
   // rules' merge_decision_window_s is how far before an observed start they look, not a planner's.)
   nlohmann::json j = observed_trace_to_json(r.observed);

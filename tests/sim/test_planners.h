@@ -26,8 +26,8 @@ class LaneKeepPlanner : public Planner {
     out.path = line_at(w.ego.x_m, y_m_);
     out.target_speed_mps = speed_;
     out.accel_limit_mps2 = accel_;
-    out.decision.mode = DecisionMode::kKeepLane;
-    out.decision.reason = "test: keep lane";
+    out.mode = "keep_lane";
+    out.reason = "test: keep lane";
     return out;
   }
 
@@ -47,10 +47,8 @@ class SigmoidPlanner : public Planner {
       out.path.push_back({x, w_ / (1.0 + std::exp(-kappa_ * (x - pc_))) + b_});
     out.target_speed_mps = speed_;
     out.accel_limit_mps2 = 2.0;
-    out.decision.mode = w.ego.y_m > -0.2 ? DecisionMode::kMerged : DecisionMode::kDef1Merge;
-    out.decision.pc_m = pc_;
-    out.decision.kappa_per_m = kappa_;
-    out.decision.reason = "test: fixed sigmoid";
+    out.mode = w.ego.y_m > -0.2 ? "merged" : "def1_merge";
+    out.reason = "test: fixed sigmoid";
     return out;
   }
 
@@ -73,7 +71,7 @@ class RequestingPlanner : public LaneKeepPlanner {
       m.coop_case = case_;
       m.target_speed_mps = vo_star_;
       out.outbox.push_back(m);
-      out.decision.mode = DecisionMode::kDef2Request;
+      out.mode = "def2_request";
       sent_ = true;
     }
     return out;

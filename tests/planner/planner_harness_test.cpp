@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include "core/scenario.h"
 #include "planner/definition1.h"
 #include "planner/planner.h"
+#include "planner/rcpp_planner.h"
 
 #include "rcpp_decision_of.h"
 
@@ -32,6 +34,7 @@ struct Rollout {
   std::vector<VehicleState> egos;   // ego state each output was planned for
   bool left_road = false;           // the ego passed the side lane's end while still in the side lane
   bool merged = false;              // ego centre within 0.2 m of the main lane centre at the end
+  std::vector<std::size_t> phases;  // an RCPP planner's phase after each cycle (RcppPhase's index)
 };
 
 double path_y(const std::vector<PathPoint>& path, double x) {
@@ -64,6 +67,7 @@ Rollout roll_out(const Scenario& s, const std::string& planner_name, double hori
       }
     }
     PlanOutput out = planner->plan(w);
+    if (const auto* rcpp = dynamic_cast<const RcppPlanner*>(planner.get())) r.phases.push_back(rcpp->phase().index());
     r.egos.push_back(w.ego);
     for (const V2vMessage& m : out.outbox) {  // cooperative responders accept after 2 latencies
       const int idx = s.index_of(m.to_id);
@@ -263,6 +267,53 @@ TEST(PlannerHarness, NoCooperativeRequestAsksTheResponderToDriveOntoAVehicleAhea
   w.ego.accel_mps2 = -1.3;
   const RcppDecision d = decision_of(make_planner("rcpp-coop")->plan(w));
   EXPECT_FALSE(d.mode == DecisionMode::kDef2Request && d.coop_partner_id == 1 && d.vo_star_mps > 21.2) << d.reason;
+}
+
+// RCPP's state machine on a plain merge: in the side lane until Definition 1 finds the gap, then
+// merging along the committed sigmoid, then in the main lane for good; no way back.
+TEST(PlannerHarness, RcppsPhasesRunFromTheSideLaneThroughTheMergeIntoTheMainLane) {
+  const Rollout r = roll_out(load("fig2_s1_ahead_noncoop"), "rcpp", 20.0);
+  ASSERT_FALSE(r.phases.empty());
+  EXPECT_TRUE(std::holds_alternative<InSideLane>(RcppPhase{}));  // the phase a planner starts in
+  EXPECT_TRUE(std::is_sorted(r.phases.begin(), r.phases.end()));  // InSideLane < Merging < InMainLane
+  EXPECT_NE(std::find(r.phases.begin(), r.phases.end(), RcppPhase(Merging{}).index()), r.phases.end());
+  EXPECT_EQ(r.phases.back(), RcppPhase(InMainLane{}).index());
+  EXPECT_TRUE(r.merged);
+}
+
+// An abort: the ego decides to merge behind vehicle 1; a cycle later vehicle 1 brakes at its
+// b_max, its P_c bound crosses while the ego has barely moved sideways and can still stop, so
+// the ego is back in the side lane, holding it for a second before it plans again.
+//
+//   main lane          [1] 25 m/s --> brakes at 8 m/s2
+//   side lane  [ego] 25 m/s                                  (end 300 m)
+TEST(PlannerHarness, AnAbortReturnsRcppToTheSideLaneAndHoldsItBeforeANewMerge) {
+  Scenario s;
+  s.road.side_lane_end_x_m = 300.0;
+  s.ego.x_m = 100.0;
+  s.ego.speed_mps = 25.0;
+  MainVehicle leader;
+  leader.id = 1;
+  leader.x_m = 160.0;
+  leader.speed_mps = 25.0;
+  s.vehicles = {leader};
+  RcppPlanner planner(false);
+  WorldSnapshot w = initial_snapshot(s);
+  const PlanOutput first = planner.plan(w);
+  ASSERT_EQ(first.mode, "def1_merge") << first.reason;
+  ASSERT_TRUE(std::holds_alternative<Merging>(planner.phase()));
+  const double dt = s.params.sim.planner_cycle_s;
+  w.time_s = dt;
+  w.ego.x_m += w.ego.vx_mps * dt;
+  w.others[0].state.x_m += w.others[0].state.vx_mps * dt;
+  w.others[0].state.accel_mps2 = -leader.limits.brake_max_mps2;
+  const PlanOutput next = planner.plan(w);
+  const auto* side = std::get_if<InSideLane>(&planner.phase());
+  ASSERT_NE(side, nullptr) << next.reason;
+  EXPECT_EQ(next.mode, "def1_halt");
+  EXPECT_EQ(next.reason.rfind("merge aborted", 0), 0u) << next.reason;
+  EXPECT_DOUBLE_EQ(side->no_merge_before_s, dt + 1.0);
+  EXPECT_FALSE(side->pending);
 }
 
 // The ego overtakes vehicles 2 (braking) and 3 (stopped) in the side lane and merges ahead of

@@ -67,7 +67,8 @@ double process_cpu_s(long pid) {
 // is the counter planner_cpu_ms, so that one core runs 1000 / (CPU ms + planner_cpu_ms)
 // scenarios per second (the counter one_core_per_s).
 void BM_Std4ScenarioExec(benchmark::State& state) {
-  const long pid = mg::make_exec_planner(kEcho)->plan(mg::initial_snapshot(std4())).annotation->to_json().at("pid").get<long>();
+  const mg::PlanOutput out = mg::make_exec_planner(kEcho)->plan(mg::initial_snapshot(std4()));
+  const long pid = out.annotation->to_json().at("pid").get<long>();
   const double planner_start_s = process_cpu_s(pid);
   const auto own_start = std::clock();
   for (auto _ : state) benchmark::DoNotOptimize(mg::check_scenario(std4(), kEcho).trace_digest);

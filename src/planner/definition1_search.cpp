@@ -96,7 +96,8 @@ std::vector<double> def1_candidate_speeds(const Def1Search& f, double lo_mps, do
 }
 
 // The cheapest comfortable sigmoid into `gap` whose merge stays clear of the lane's vehicles.
-std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, const SpeedInterval& iv, const PcBounds& b) {
+std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, const SpeedInterval& iv,
+                                         const PcBounds& b) {
   const PlannerSetup& s = f.s;
   const PlannerParams& p = s.params.planner;
   const Def1Context& ctx = f.ctx;
@@ -182,7 +183,8 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     if (!choice) { ++n_sigmoid; continue; }
     if (choice->cost >= best_cost) continue;
     best_cost = choice->cost;
-    best = def1_plan(f, Gap{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1}, iv, *bounds, *choice);
+    const Gap gid{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1};
+    best = def1_plan(f, gid, iv, *bounds, *choice);
   }
   if (!best && why)
     *why = std::to_string(n_def1) + " gap(s) violate ineq. 1.1/1.2, " + std::to_string(n_cross) +

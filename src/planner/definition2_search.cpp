@@ -143,9 +143,12 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   const double start_x = c.ego_x_m + coop_ego_travel_m(c, k);
   const double complete_by_x = pc + x.v_after_mps * 0.5 * c.merge_duration_s;
   const SpeedRamp ramp{c.ego_speed_mps, x.v_after_mps, c.ego_limits.accel_max_mps2, c.ego_limits.brake_min_mps2};
-  const auto kappa_range = [&](double pc_m) { return kappa_range_for(s, pc_m, start_x, complete_by_x, ramp, c.ego_x_m); };
-  const double base = p.cost_time_weight * x.t_c_s + p.cost_speed_change_weight * (std::abs(vo.vo_star_mps - o.speed_mps) +
-                                                                                    std::abs(x.v_after_mps - c.ego_speed_mps));
+  const auto kappa_range = [&](double pc_m) {
+    return kappa_range_for(s, pc_m, start_x, complete_by_x, ramp, c.ego_x_m);
+  };
+  const double base =
+      p.cost_time_weight * x.t_c_s +
+      p.cost_speed_change_weight * (std::abs(vo.vo_star_mps - o.speed_mps) + std::abs(x.v_after_mps - c.ego_speed_mps));
   const double rate = std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9;
   const SpeedRamp responder_ramp{o.speed_mps, vo.vo_star_mps, rate, rate};
   const GapTracks tracks = coop_tracks(x, responder_ramp);

@@ -220,8 +220,9 @@ TEST(PlannerHarness, SilentResponderFallsBackToDefinition1) {
   ASSERT_EQ(decision_of(r.outputs[0]).mode, DecisionMode::kDef2Request);
   bool fell_back = false;
   for (const PlanOutput& o : r.outputs) {
-    EXPECT_NE(decision_of(o).mode, DecisionMode::kDef2Merge);
-    fell_back = fell_back || ((decision_of(o).mode == DecisionMode::kDef1Halt || decision_of(o).mode == DecisionMode::kDef1Merge) &&
+    const DecisionMode mode = decision_of(o).mode;
+    EXPECT_NE(mode, DecisionMode::kDef2Merge);
+    fell_back = fell_back || ((mode == DecisionMode::kDef1Halt || mode == DecisionMode::kDef1Merge) &&
                               o.reason.find("Def. 2.3") != std::string::npos);
   }
   EXPECT_TRUE(fell_back);

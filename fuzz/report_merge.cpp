@@ -98,6 +98,21 @@ CampaignOptions options_of(const json& j, const std::string& source) {
   return o;
 }
 
+// An exec planner's process as a shard's summary names it (campaign_summary_json): what the
+// planner said in hello, and its stderr logs.
+json planner_process_of(const json& j, const std::string& path) {
+  const auto p = j.find("planner_process");
+  if (p == j.end() || p->is_null()) return nullptr;
+  const json& hello = field(*p, "hello", path, "/planner_process");
+  if (!field(hello, "name", path, "/planner_process/hello").is_string() ||
+      !field(hello, "version", path, "/planner_process/hello").is_string())
+    throw InputError(path, "/planner_process/hello", "expected {\"name\": string, \"version\": string}");
+  const json& logs = field(*p, "logs", path, "/planner_process");
+  if (!logs.is_array() || !std::all_of(logs.begin(), logs.end(), [](const json& l) { return l.is_string(); }))
+    throw InputError(path, "/planner_process/logs", "expected an array of file names");
+  return json{{"hello", hello}, {"logs", logs}};
+}
+
 Shard read_shard(const std::string& path) {
   const json j = parse_json_file(path);
   Shard s{path, options_of(j, path), {}};
@@ -125,6 +140,7 @@ Shard read_shard(const std::string& path) {
   }
   for (const auto& [rule, m] : field(j, "margins", path, "").items()) r.margins[rule] = margin_of(m, path, "/margins/" + rule);
   for (const json& c : field(j, "new_cases", path, "")) r.new_cases.push_back(c.get<std::string>());
+  r.planner_process = planner_process_of(j, path);
   return s;
 }
 
@@ -140,6 +156,13 @@ void check_same_campaign(const std::vector<Shard>& shards, bool partial) {
       throw InputError(s.path, "", "not a shard of the campaign of " + shards.front().path +
                                        " (planner, seed, --runs/--time, --families, --search and N of --shard K/N must match)");
     if (!seen.insert(o.shard_index).second) throw InputError(s.path, "/shard", "shard " + std::to_string(o.shard_index) + " given twice");
+    const json& hello = s.result.planner_process.is_object() ? s.result.planner_process["hello"] : json();
+    const json& first_hello = shards.front().result.planner_process.is_object()
+                                  ? shards.front().result.planner_process["hello"]
+                                  : json();
+    if (hello != first_hello)
+      throw InputError(s.path, "/planner_process/hello", "its planner process is not the one of " + shards.front().path +
+                                                             " (name and version from hello must match)");
   }
   if (!partial && static_cast<int>(seen.size()) != first.shard_count)
     throw InputError(shards.front().path, "/shard", std::to_string(first.shard_count - static_cast<int>(seen.size())) + " of " +
@@ -173,6 +196,10 @@ void add_into(CampaignResult& into, const CampaignResult& r) {
   }
   for (const auto& [rule, m] : r.margins) into.margins[rule].merge(m);
   into.new_cases.insert(into.new_cases.end(), r.new_cases.begin(), r.new_cases.end());
+  if (r.planner_process.is_object()) {  // the same process everywhere (check_same_campaign); every shard's logs
+    if (!into.planner_process.is_object()) into.planner_process = {{"hello", r.planner_process["hello"]}, {"logs", json::array()}};
+    for (const json& log : r.planner_process["logs"]) into.planner_process["logs"].push_back(log);
+  }
 }
 
 }  // namespace
@@ -182,6 +209,8 @@ MergedReport merge_reports(const std::vector<std::string>& report_paths, bool pa
   std::vector<Shard> shards;
   for (const std::string& p : report_paths) shards.push_back(read_shard(p));
   check_same_campaign(shards, partial);
+  std::stable_sort(shards.begin(), shards.end(),
+                   [](const Shard& a, const Shard& b) { return a.options.shard_index < b.options.shard_index; });
   MergedReport m;
   m.options = shards.front().options;
   m.options.jobs = 0;

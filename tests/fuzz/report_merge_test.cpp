@@ -33,8 +33,10 @@ CampaignOptions options(int shard, int shards, std::uint64_t seed = 11) {
   return o;
 }
 
-std::string write_summary(const fs::path& dir, const std::string& name, const CampaignOptions& o) {
-  const CampaignResult r = run_campaign(o, [] { return CheckFn(test::fake_check); });
+std::string write_summary(const fs::path& dir, const std::string& name, const CampaignOptions& o,
+                          const nlohmann::json& planner_process = nullptr) {
+  CampaignResult r = run_campaign(o, [] { return CheckFn(test::fake_check); });
+  r.planner_process = planner_process;
   const std::string path = (dir / name).string();
   std::ofstream(path) << campaign_summary_json(o, r).dump(2);
   return path;
@@ -82,6 +84,30 @@ TEST(ReportMerge, GuidedShardsSumTheirGuidedRunsAndAShardOfAnotherSearchIsRefuse
   random_shard.search = SearchMode::kRandom;
   const std::string r = write_summary(dir, "r1.json", random_shard);
   EXPECT_THROW(merge_reports({s0, r}, false), InputError);
+  fs::remove_all(dir);
+}
+
+// An exec planner's shards: the merged report names the planner process once, with every shard's
+// stderr logs in shard order; shards of different planner builds (hello) are not one campaign.
+TEST(ReportMerge, AnExecPlannersShardsKeepItsProcessAndEveryShardsLogs) {
+  const auto dir = scratch_dir("process");
+  const auto process = [](const std::string& version, const std::string& log) {
+    return nlohmann::json{{"hello", {{"name", "py"}, {"version", version}}}, {"logs", {log}}};
+  };
+  const std::string s1 = write_summary(dir, "s1.json", options(1, 2), process("1", "w1.log"));
+  const std::string s0 = write_summary(dir, "s0.json", options(0, 2), process("1", "w0.log"));
+  const MergedReport m = merge_reports({s1, s0}, false);
+  EXPECT_EQ(m.result.planner_process,
+            (nlohmann::json{{"hello", {{"name", "py"}, {"version", "1"}}}, {"logs", {"w0.log", "w1.log"}}}));
+  EXPECT_EQ(campaign_summary_json(m.options, m.result).at("planner_process"), m.result.planner_process);
+
+  const std::string other = write_summary(dir, "other.json", options(1, 2), process("2", "w1.log"));
+  try {
+    merge_reports({s0, other}, false);
+    ADD_FAILURE() << "shards of two planner versions merged";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/planner_process/hello"), std::string::npos) << e.what();
+  }
   fs::remove_all(dir);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/fatal_signals.h"
 
 namespace mg {
 namespace {
@@ -31,6 +32,7 @@ int cli_main(int argc, char** argv) {
   // Beyond a file-size limit (ulimit -f) a write then fails with EFBIG, reported like any other
   // I/O error, instead of the signal killing the process mid-file.
   std::signal(SIGXFSZ, SIG_IGN);
+  cli::install_fatal_signal_handlers();
   if (argc < 2) return usage(std::cerr);
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {

@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command.h"
+#include "cli/fatal_signals.h"
 #include "cli/planner_option.h"
 #include "core/atomic_file.h"
 #include "core/output_path.h"
@@ -37,15 +38,16 @@ namespace {
 std::atomic<bool> g_stop{false};
 std::atomic<int> g_stop_signal{0};
 
-extern "C" void on_stop_signal(int sig) {  // lock-free atomics only: async-signal-safe
+extern "C" void on_stop_signal(int sig) {  // lock-free atomics and kill(2) only: async-signal-safe
+  if (g_stop.load()) end_planners_and_die(sig);  // the second: no more waiting
   g_stop_signal.store(sig);
   g_stop.store(true);
 }
 
 // SIGINT (Ctrl-C), SIGTERM (what Kubernetes, Slurm and CI runners send on preemption or
 // time-out) and SIGHUP (a closed terminal) stop the campaign after the runs in flight (shrinking
-// keeps its best so far); the same signal a second time kills as usual (SA_RESETHAND). The
-// previous handlers are restored on scope exit.
+// keeps its best so far); a second one kills mergeguard at once, and its planner processes with
+// it (cli/fatal_signals.h). The previous handlers are restored on scope exit.
 class StopSignalGuard {
  public:
   static constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
@@ -55,7 +57,6 @@ class StopSignalGuard {
     struct sigaction sa {};
     sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND;
     for (std::size_t k = 0; k < std::size(kSignals); ++k) sigaction(kSignals[k], &sa, &previous_[k]);
   }
   ~StopSignalGuard() {

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -83,6 +84,27 @@ Clock::time_point deadline_after(double timeout_s) {
   return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s));
 }
 
+// The process groups of the children not yet ended, for kill_all_child_groups (0: a free slot).
+// More live children than slots (one per worker: --jobs is far below) are ended as usual but
+// not by the signal path.
+constexpr std::size_t kGroupSlots = 1024;
+std::atomic<pid_t> g_live_groups[kGroupSlots];
+static_assert(std::atomic<pid_t>::is_always_lock_free);
+
+void remember_group(pid_t pgid) {
+  for (std::atomic<pid_t>& slot : g_live_groups) {
+    pid_t free = 0;
+    if (slot.compare_exchange_strong(free, pgid)) return;
+  }
+}
+
+void forget_group(pid_t pgid) {
+  for (std::atomic<pid_t>& slot : g_live_groups) {
+    pid_t mine = pgid;
+    if (slot.compare_exchange_strong(mine, 0)) return;
+  }
+}
+
 // poll() for `events` until the deadline; EINTR (a signal handled by mergeguard) retries.
 IoStatus wait_for(int fd, short events, Clock::time_point deadline) {
   for (;;) {
@@ -123,11 +145,17 @@ ChildProcess::ChildProcess(const std::string& command, const std::string& stderr
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attr);
   if (err != 0) throw ChildStartError(errno_text("cannot start /bin/sh -c '" + command + "'", err));
+  remember_group(pid_);
   fd_ = fds.ours;
   fds.ours = -1;
 }
 
 ChildProcess::~ChildProcess() { end(); }
+
+void kill_all_child_groups() noexcept {
+  for (std::atomic<pid_t>& slot : g_live_groups)
+    if (const pid_t pgid = slot.load(); pgid > 0) ::kill(-pgid, SIGKILL);
+}
 
 IoStatus ChildProcess::write_line(std::string_view line, double timeout_s) {
   if (fd_ < 0) return IoStatus::kClosed;
@@ -201,6 +229,7 @@ void ChildProcess::end(double grace_s) {
   if (fd_ >= 0) ::shutdown(fd_, SHUT_WR);  // end of input: a well-behaved planner exits now
   exited(grace_s);
   ::kill(-pid_, SIGKILL);  // the group: whatever the shell or the planner started
+  forget_group(pid_);      // before the reap frees the group id for reuse
   int status = 0;
   while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }

@@ -20,6 +20,11 @@ struct ChildStartError : std::runtime_error {
 
 enum class IoStatus { kDone, kTimeout, kClosed };
 
+// SIGKILLs the process group of every child not yet ended. Async-signal-safe (kill(2) over a
+// fixed table of atomics): for a signal handler that is about to end mergeguard at once, which
+// would otherwise leave a child that ignores the end of its input running.
+void kill_all_child_groups() noexcept;
+
 class ChildProcess {
  public:
   // Starts `command` through /bin/sh (exec'd into when it is a single simple command) in a new

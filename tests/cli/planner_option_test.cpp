@@ -178,5 +178,37 @@ TEST(ExecPlannerCli, CtrlCLeavesNoPlannerProcess) {
   fs::remove_all(dir);
 }
 
+// A second Ctrl-C while the first waits for the calls in flight ends mergeguard at once, and the
+// planner processes with it, even one that ignores the end of its input (stubborn).
+TEST(ExecPlannerCli, ASecondCtrlCEndsEvenAPlannerThatIgnoresTheEndOfItsInput) {
+  const fs::path dir = scratch("sigint2");
+  const std::string err_path = (dir / "err").string();
+  const std::string planner = fake("stubborn", "c6");
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::dup2(::open((dir / "out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
+    ::dup2(::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 2);
+    const char* cli = std::getenv("MG_CLI");
+    ::execl(cli, cli, "fuzz", "--planner", planner.c_str(), "--time", "600", "--jobs", "2", "--planner-timeout", "5",
+            "--corpus", "", nullptr);
+    ::_exit(127);
+  }
+  auto started = [&] {
+    std::ifstream in(err_path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str().find("fuzz: ") != std::string::npos;
+  };
+  for (int i = 0; i < 30000 && !started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ::kill(pid, SIGINT);  // the campaign now waits for its calls in flight, each 0.3 s
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  for (int i = 0; i < 30000 && ::waitpid(pid, &status, WNOHANG) != pid; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
+  EXPECT_TRUE(marked_processes_gone("c6"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace mg

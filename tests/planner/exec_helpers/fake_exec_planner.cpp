@@ -8,6 +8,9 @@
 //   nan        answers observe with NaN in the command (as Python's json.dumps writes it)
 //   no-hello   exits with status 3 before answering hello
 //   bad-path   answers observe with a path whose x decreases
+//   stubborn   as echo, but takes 0.3 s per observe and ignores the end of its input (it stays
+//              until killed)
+#include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -49,6 +52,7 @@ std::string reply_to(const std::string& mode, const std::string& line) {
   if (mode == "hang") pause();
   if (mode == "garbage") return "this is not JSON";
   if (mode == "nan") return R"({"type":"command","path":[[0,0],[100,0]],"target_speed_mps":NaN,"accel_limit_mps2":2})";
+  if (mode == "stubborn") usleep(300 * 1000);
   if (mode == "bad-path") return R"({"type":"command","path":[[100,0],[0,0]],"target_speed_mps":10,"accel_limit_mps2":2})";
   return command_for(line);
 }
@@ -58,6 +62,7 @@ std::string reply_to(const std::string& mode, const std::string& line) {
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "echo";
   if (mode == "no-hello") return 3;
+  if (mode == "stubborn") signal(SIGPIPE, SIG_IGN);  // not even a write to a closed socket ends it
   std::ios::sync_with_stdio(false);
   std::string line;
   while (std::getline(std::cin, line)) {
@@ -65,5 +70,6 @@ int main(int argc, char** argv) {
     if (reply.empty()) return 0;  // bye
     std::cout << reply << '\n' << std::flush;
   }
+  while (mode == "stubborn") pause();
   return 0;
 }

@@ -181,6 +181,37 @@ std::vector<GapIndices> with_neighbours(const ObservedTrace& t, std::size_t step
   return out;
 }
 
+// Whether a vehicle of `gap` broke its declared limits (the declared_limits rule's criterion) at
+// a step of [from, to].
+bool gap_vehicle_broke_limits(const ObservedTrace& t, const RuleParams& p, const GapIndices& gap, std::size_t from,
+                              std::size_t to) {
+  for (const int k : {gap.follower, gap.leader}) {
+    if (k < 0) continue;
+    const Limits& lim = limits_of(t, static_cast<std::size_t>(k));
+    for (std::size_t i = from; i <= to && i < t.steps.size(); ++i) {
+      const double a = state_of(t.steps[i], static_cast<std::size_t>(k)).accel_mps2;
+      if (a > lim.accel_max_mps2 + p.accel_tolerance_mps2 || -a > lim.brake_max_mps2 + p.accel_tolerance_mps2)
+        return true;
+    }
+  }
+  return false;
+}
+
+// The gaps read at step i. Before the ego's body enters the main lane: the one around it and its
+// neighbours (where it is going is not known yet). After: the one around it, and a neighbour only
+// if a vehicle of that neighbour broke its declared limits between i and the entry: a vehicle
+// the ego was overtaking for the gap ahead of it, which then raced past the ego beyond its
+// a_accel^max, changed the ego's gap by its breach, and the gap the ego decided on still counts
+// (a campaign finding, docs/rules.md).
+std::vector<GapIndices> gaps_at(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, std::size_t i) {
+  const GapIndices around = gap_around_ego(t, i);
+  if (!a.entry_step) return with_neighbours(t, i, around);
+  std::vector<GapIndices> out = {around};
+  for (const GapIndices& g : with_neighbours(t, i, around))
+    if (!(g == around) && gap_vehicle_broke_limits(t, p, g, i, *a.entry_step)) out.push_back(g);
+  return out;
+}
+
 // From a feasible reading, back while the same gap stays feasible, as far as the end of the
 // previous attempt (not only to the window's start): the ego holds the right of way from the
 // start of that run (a planner that decided when the gap opened is credited from then, and its
@@ -223,17 +254,16 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
     i = i >= first + kScanStride ? i - kScanStride : first;
     // The gap the ego entered, then the one around it at i (a follower may have raced past it
     // since, changing the gap it entered). Never a gap the ego was neither in nor entered, except
-    // for an attempt whose body has not entered the main lane yet: the gap it will enter is not
-    // known, and it may be the one behind the vehicle just behind the ego, which it lets pass, or
-    // ahead of the vehicle just ahead, which it overtakes (a planner that decided either was
-    // otherwise never credited when its visible start came while that vehicle was alongside).
+    // for an attempt whose body has not entered the main lane yet (gaps_at): the gap it will enter
+    // is not known, and it may be the one behind the vehicle just behind the ego, which it lets
+    // pass, or ahead of the vehicle just ahead, which it overtakes (a planner that decided either
+    // was otherwise never credited when its visible start came while that vehicle was alongside);
+    // or for a gap a vehicle changed by breaking its declared limits.
     // Each inequality must hold under the bounded-rate model too, so "behind a vehicle alongside
     // at v_e* = 0 at once" is not granted (docs/spec.md §8).
     std::vector<GapIndices> gaps = {a.entered_gap};
     const GapIndices around = gap_around_ego(t, i);
-    const std::vector<GapIndices> candidates =
-        a.entry_step ? std::vector<GapIndices>{around} : with_neighbours(t, i, around);
-    for (const GapIndices& g : candidates)
+    for (const GapIndices& g : gaps_at(t, p, a, i))
       if (std::find(gaps.begin(), gaps.end(), g) == gaps.end()) gaps.push_back(g);
     for (const GapIndices& gap : gaps) {
       const Def1Reading r = read_def1(t, p, a, gap, i);

@@ -273,5 +273,44 @@ TEST(MergeAttempts, NoLateralMotionNoAttempt) {
   EXPECT_TRUE(test::judge(s, constant_accel_trace(s, 4.0))->attempts.attempts.empty());
 }
 
+// Vehicle 1 stands 100 m ahead; the ego, at 30 m/s, heads for the gap ahead of it (feasible at
+// t = 0 over the observed 12 s merge). From t = 1 s vehicle 1 accelerates at 7 m/s2 and stays
+// just ahead of the ego (5.7 m at the closest), so the ego's body enters the main lane behind it.
+//
+//   t = 0    side lane [ego] 30 m/s ---------------> P_c
+//            main lane                 [1] stopped, then 7 m/s2 from t = 1 s
+//
+// Declared a_accel^max 2 m/s2: vehicle 1 changed the ego's gap by breaking its limits, and the
+// gap the ego headed for still counts. Declared 8 m/s2: no breach, and the ego is judged by the
+// gap it entered, behind vehicle 1, which it never had.
+TEST(MergeAttempts, AGapChangedByAVehicleBreakingItsLimitsStillGrantsTheRightOfWay) {
+  const auto judged_with = [](double declared_accel_max_mps2) {
+    Scenario s = base_scenario();
+    s.ego.speed_mps = 30.0;
+    s.vehicles = {vehicle(1, 100.0, 0.0)};
+    s.vehicles[0].limits.accel_max_mps2 = declared_accel_max_mps2;
+    Trace t = test::with_lateral_move(constant_accel_trace(s, 12.0), 3.7, 0.7);
+    for (TraceStep& st : t.steps) {
+      const double racing_s = std::max(0.0, st.time_s - 1.0);
+      st.others[0].x_m = 100.0 + 3.5 * racing_s * racing_s;
+      st.others[0].vx_mps = 7.0 * racing_s;
+      st.others[0].accel_mps2 = st.time_s >= 1.0 ? 7.0 : 0.0;
+    }
+    return test::judge(s, t);
+  };
+  const auto breach = judged_with(2.0);
+  const MergeAttempt& a = only_attempt(*breach);
+  ASSERT_TRUE(a.entry_step.has_value());
+  EXPECT_EQ(a.entered_gap, (GapIndices{-1, 1}));  // behind vehicle 1
+  EXPECT_EQ(a.basis, RowBasis::kDef1);
+  EXPECT_EQ(a.gap, (GapIndices{1, -1}));  // ahead of it, as decided
+  EXPECT_EQ(a.decision_time_s, 0.0);
+
+  const auto compliant = judged_with(8.0);
+  const MergeAttempt& b = only_attempt(*compliant);
+  EXPECT_EQ(b.entered_gap, (GapIndices{-1, 1}));
+  EXPECT_EQ(b.basis, RowBasis::kNone);
+}
+
 }  // namespace
 }  // namespace mg

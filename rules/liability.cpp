@@ -49,6 +49,14 @@ RightOfWay compute_right_of_way(const ObservedTrace& t, const MergeAttempts& att
   return row;
 }
 
+// Obligations of comfort and progress: broken, they are the ego's, but no danger follows from
+// them, so they are never a collision's cause (the ego's path oscillating in the side lane was
+// blamed for two main-lane vehicles colliding 0.08 s later, one of them racing beyond its
+// declared limits since t = 1 s; a campaign finding, docs/rules.md).
+bool can_cause_collision(const RuleResult& rule) {
+  return rule.rule_id != "smoothness_oscillation" && rule.rule_id != "progress";
+}
+
 void assign_liability(CheckResult& r) {
   const RuleResult* first = nullptr;
   const RuleResult* collision = nullptr;
@@ -63,7 +71,7 @@ void assign_liability(CheckResult& r) {
     // The obligation broken last at or before the collision: the danger that led to it.
     const RuleResult* cause = nullptr;
     for (const auto& rule : r.rules) {
-      if (rule.holds || rule.liable_id == kNobody ||
+      if (rule.holds || rule.liable_id == kNobody || !can_cause_collision(rule) ||
           *rule.first_violation_time_s > *collision->first_violation_time_s + 1e-9)
         continue;
       if (!cause || *rule.first_violation_time_s > *cause->first_violation_time_s) cause = &rule;

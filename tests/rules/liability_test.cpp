@@ -128,5 +128,28 @@ TEST(Liability, EarliestBrokenObligationIsTheOverallLiableParty) {
   EXPECT_FALSE(r.collision);
 }
 
+// A collision between vehicles 2 and 3 at t = 5.82 s, vehicle 2 beyond its declared limits since
+// t = 1.02 s, and the ego's side-lane path oscillating from t = 5.74 s: the collision is blamed on
+// the last danger before it, vehicle 2's, not on the ego's comfort rule (nor on its progress).
+TEST(Liability, AComfortOrProgressRuleIsNeverACollisionsCause) {
+  const auto broken = [](const char* id, double time_s, int liable_id) {
+    RuleResult x;
+    x.rule_id = id;
+    x.holds = false;
+    x.first_violation_time_s = time_s;
+    x.liable_id = liable_id;
+    return x;
+  };
+  CheckResult r;
+  r.rules = {broken("rss_longitudinal", 1.68, 2), broken("collision", 5.82, kNobody),
+             broken("smoothness_oscillation", 5.74, kEgoId), broken("progress", 5.8, kEgoId),
+             broken("declared_limits", 1.02, 2)};
+  r.holds = false;
+  assign_liability(r);
+  EXPECT_TRUE(r.collision);
+  EXPECT_EQ(r.collision_liable_id, 2);
+  EXPECT_EQ(r.liable_id, 2);
+}
+
 }  // namespace
 }  // namespace mg

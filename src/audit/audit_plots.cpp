@@ -41,7 +41,7 @@ void equal_aspect(svg::Plot& p) {
 
 std::string road_shape_svg(const RecordingAudit& a, const MergeAudit& m) {
   svg::Plot p;
-  p.title = "The road in its own shape (file coordinates); paths over the audited window";
+  p.title = "The road in its own shape (file x, y), paths over the window";
   p.x_label = "x [m]";
   p.y_label = "y [m]";
   p.width_px = 720;
@@ -72,7 +72,7 @@ std::string road_shape_svg(const RecordingAudit& a, const MergeAudit& m) {
 
 std::string curvilinear_svg(const MergeAudit& m) {
   svg::Plot p;
-  p.title = "Curvilinear frame (what the rules judge): target lane centre Y = 0, side lane centre Y = -W";
+  p.title = "Curvilinear frame (judged): target lane at Y = 0, side lane at Y = -W";
   p.x_label = "X = s along the reference line [m]";
   p.y_label = "Y across the road [m]";
   p.width_px = 720;

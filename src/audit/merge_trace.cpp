@@ -46,6 +46,20 @@ bool near_ego(const RecordingView& v, std::size_t i, std::size_t ego, const Lane
   return false;
 }
 
+// Neighbours recorded for only part of the window still take part when they are there from a
+// second before the lane change to a second after it: the window shrinks to their record.
+void shrink_to_neighbours(const RecordingView& v, std::size_t ego, const LaneChange& c, const AuditProfile& p, int& first, int& last) {
+  const int margin = static_cast<int>(std::lround(1.0 / v.recording->time_step_s));
+  for (std::size_t i = 0; i < v.tracks.size(); ++i) {
+    if (i == ego || !near_ego(v, i, ego, c, first, last, p.neighbour_range_m)) continue;
+    const int from = v.tracks[i].states.front().time_step, to = v.tracks[i].states.back().time_step;
+    if (from <= std::max(first, c.time_step - margin) && to >= std::min(last, c.time_step + margin)) {
+      first = std::max(first, from);
+      last = std::min(last, to);
+    }
+  }
+}
+
 std::string step_time(const RecordingView& v, int step) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.1f s", step * v.recording->time_step_s);
@@ -160,6 +174,7 @@ MergeTrace build_merge_trace(const RecordingView& v, const LaneChange& c, const 
   m.change = c;
   const std::size_t ego = track_index(v, c.vehicle_id);
   auto [first, last] = ego_window(v, c, p);
+  shrink_to_neighbours(v, ego, c, p, first, last);
   std::vector<std::size_t> members{ego};
   for (std::size_t i = 0; i < v.tracks.size(); ++i) {
     if (i == ego || !near_ego(v, i, ego, c, first, last, p.neighbour_range_m)) continue;

@@ -44,7 +44,7 @@ TEST(MergeFinder, StayingInALaneIsNoMergeAndShortExcursionsAreNoise) {
 TEST(MergeFinder, AuditsAVehicleHaltedAtTheRampsEnd) {
   test::SyntheticVehicle halted;
   halted.id = 9;
-  for (int i = 0; i < 40; ++i) halted.xyv.push_back({180.0, -1.75, 0.0});
+  for (int i = 0; i < 40; ++i) halted.xyv.push_back({180.0, -1.75, 0.0, 0.0});
   const auto c = changes_of({halted});
   ASSERT_EQ(c.size(), 1u);
   EXPECT_EQ(c[0].kind, LaneChangeKind::kRampHalt);

@@ -1,8 +1,9 @@
 // Small CommonRoad recordings made in the tests (shared by tests/recording and tests/audit): a
 // straight road along +x with an on-ramp (lanelet 1, y in [-3.5, 0], ending at x = 200) and two
-// main lanes (lanelets 2 and 3, up to x = 400), and vehicles given as (x, y, speed) per step.
+// main lanes (lanelets 2 and 3, up to x = 400), and vehicles given as (x, y, speed, heading) per step.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -13,7 +14,7 @@ namespace mg::test {
 
 struct SyntheticVehicle {
   int id = 1;
-  std::vector<std::array<double, 3>> xyv;  // x_m, y_m, speed_mps per time step from 0
+  std::vector<std::array<double, 4>> xyv;  // x_m, y_m, speed_mps, orientation_rad per time step from 0
   std::string type = "car";
 };
 
@@ -33,9 +34,9 @@ inline std::string lanelet_xml(int id, double y_right, double x_end, const std::
          bound_xml("rightBound", y_right, x_end) + extra + "</lanelet>\n";
 }
 
-inline std::string state_xml(const char* tag, const std::array<double, 3>& s, int step) {
+inline std::string state_xml(const char* tag, const std::array<double, 4>& s, int step) {
   return std::string("<") + tag + "><position><point><x>" + num_text(s[0]) + "</x><y>" + num_text(s[1]) +
-         "</y></point></position><orientation><exact>0</exact></orientation><time><exact>" + std::to_string(step) +
+         "</y></point></position><orientation><exact>" + num_text(s[3]) + "</exact></orientation><time><exact>" + std::to_string(step) +
          "</exact></time><velocity><exact>" + num_text(s[2]) + "</exact></velocity></" + tag + ">";
 }
 
@@ -60,7 +61,7 @@ inline std::string synthetic_recording_xml(const std::vector<SyntheticVehicle>& 
   return x + "</commonRoad>\n";
 }
 
-// A vehicle at constant speed from x0, its y moving from y_from to y_to by a smooth step
+// A vehicle at constant longitudinal speed from x0, its y moving from y_from to y_to by a smooth step
 // centred at t_change_s (1 s either side); `steps` states, 0.1 s apart.
 inline SyntheticVehicle lane_changer(int id, double x0, double speed, double y_from, double y_to, double t_change_s, int steps) {
   SyntheticVehicle v;
@@ -69,7 +70,8 @@ inline SyntheticVehicle lane_changer(int id, double x0, double speed, double y_f
     const double t = 0.1 * i;
     const double u = std::clamp((t - t_change_s + 1.0) / 2.0, 0.0, 1.0);
     const double blend = u * u * (3 - 2 * u);
-    v.xyv.push_back({x0 + speed * t, y_from + (y_to - y_from) * blend, speed});
+    const double lateral_mps = (y_to - y_from) * 6 * u * (1 - u) / 2.0;
+    v.xyv.push_back({x0 + speed * t, y_from + (y_to - y_from) * blend, std::hypot(speed, lateral_mps), std::atan2(lateral_mps, speed)});
   }
   return v;
 }

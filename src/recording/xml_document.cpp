@@ -1,5 +1,6 @@
 #include "recording/xml_document.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -72,7 +73,10 @@ XmlElement parse_xml_strict(std::string_view text, const std::string& source) {
   pugi::xml_document doc;
   const pugi::xml_parse_result r = doc.load_buffer(text.data(), text.size(), pugi::parse_default);
   if (!r) {
-    throw InputError(source, "offset " + std::to_string(r.offset), std::string("malformed XML: ") + r.description());
+    const auto upto = text.substr(0, std::min<std::size_t>(static_cast<std::size_t>(r.offset), text.size()));
+    const long line = 1 + std::count(upto.begin(), upto.end(), '\n');
+    throw InputError(source, "line " + std::to_string(line) + " (offset " + std::to_string(r.offset) + ")",
+                     std::string("malformed XML: ") + r.description());
   }
   const pugi::xml_node root = doc.document_element();
   if (!root) throw InputError(source, "document", "no root element");

@@ -41,7 +41,8 @@ double polyline_length_m(const std::vector<Point2>& pts) {
 
 std::vector<Point2> resample_polyline(const std::vector<Point2>& pts, double spacing_m) {
   const double total = polyline_length_m(pts);
-  const int n = std::max(2, static_cast<int>(std::ceil(total / spacing_m)) + 1);
+  // The small allowance keeps an exact multiple from rounding up to one sample more.
+  const int n = std::max(2, static_cast<int>(std::ceil(total / spacing_m - 1e-9)) + 1);
   std::vector<Point2> out;
   out.reserve(n);
   std::size_t seg = 0;
@@ -92,10 +93,15 @@ ReferenceLine::ReferenceLine(const std::vector<Point2>& centre, double spacing_m
     s_.push_back(s_.back() + std::hypot(pts_[i].x_m - pts_[i - 1].x_m, pts_[i].y_m - pts_[i - 1].y_m));
     heading_.push_back(std::atan2(pts_[i].y_m - pts_[i - 1].y_m, pts_[i].x_m - pts_[i - 1].x_m));
   }
+  // Curvature over a baseline of +-kCurvatureBase segments: the change of heading between single
+  // segments of a polyline drawn from coarse lanelet points is mostly the kinks of the drawing.
+  constexpr std::size_t kCurvatureBase = 5;
   curvature_.assign(pts_.size(), 0.0);
   for (std::size_t i = 1; i + 1 < pts_.size(); ++i) {
-    const double ds = 0.5 * (s_[i + 1] - s_[i - 1]);
-    curvature_[i] = ds > 0 ? wrap_angle(heading_[i] - heading_[i - 1]) / ds : 0.0;
+    const std::size_t a = i > kCurvatureBase ? i - kCurvatureBase : 0;
+    const std::size_t b = std::min(heading_.size() - 1, i + kCurvatureBase - 1);
+    const double ds = 0.5 * (s_[b + 1] + s_[b]) - 0.5 * (s_[a + 1] + s_[a]);
+    curvature_[i] = ds > 0 ? wrap_angle(heading_[b] - heading_[a]) / ds : 0.0;
     shape_.max_abs_curvature_per_m = std::max(shape_.max_abs_curvature_per_m, std::abs(curvature_[i]));
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace mg {
 
@@ -33,21 +34,23 @@ int lane_at(const RoadLayout& road, double s_m, double d_m) {
 std::vector<int> lane_sequence(const FrenetTrack& t, const RoadLayout& road, int min_steps) {
   std::vector<int> lanes;
   for (const TrackState& s : t.states) lanes.push_back(lane_at(road, s.s_m, s.d_m));
-  // Drop short runs (noise at a lane line): each becomes the lane before it (or after it, at the start).
-  std::size_t i = 0;
-  while (i < lanes.size()) {
+  // Short runs (noise at a lane line) take the lane of the last long run (at the start: of the
+  // first long one). One pass, so that a hostile track flipping lanes every step costs O(n).
+  std::vector<std::pair<std::size_t, std::size_t>> runs;  // [begin, end)
+  for (std::size_t i = 0; i < lanes.size();) {
     std::size_t j = i;
     while (j < lanes.size() && lanes[j] == lanes[i]) ++j;
-    const bool short_run = static_cast<int>(j - i) < min_steps;
-    if (short_run && (i > 0 || j < lanes.size())) {
-      const int fill = i > 0 ? lanes[i - 1] : lanes[j];
-      std::fill(lanes.begin() + static_cast<long>(i), lanes.begin() + static_cast<long>(j), fill);
-      if (i > 0) {
-        i = 0;  // runs may have joined: scan again (rare, short series)
-        continue;
-      }
-    }
+    runs.emplace_back(i, j);
     i = j;
+  }
+  std::optional<int> accepted;
+  for (const auto& [b, e] : runs) {
+    if (static_cast<int>(e - b) >= min_steps) {
+      if (!accepted) std::fill(lanes.begin(), lanes.begin() + static_cast<long>(b), lanes[b]);
+      accepted = lanes[b];
+    } else if (accepted) {
+      std::fill(lanes.begin() + static_cast<long>(b), lanes.begin() + static_cast<long>(e), *accepted);
+    }
   }
   return lanes;
 }

@@ -72,10 +72,15 @@ std::vector<Point2> joined(const std::vector<int>& ids, const LaneletMap& by_id,
   return out;
 }
 
-Lane make_lane(const std::vector<int>& ids, const LaneletMap& by_id) {
+Lane make_lane(const std::vector<int>& ids, const LaneletMap& by_id, const std::string& source) {
   Lane lane;
   lane.lanelet_ids = ids;
   lane.centre = joined(ids, by_id, lanelet_centre);
+  // The road is resampled every metre and every position projected onto it: bound the work.
+  if (polyline_length_m(lane.centre) > kMaxLaneLengthM) {
+    throw InputError(source, "lanelet " + std::to_string(ids.front()),
+                     "a lane of " + std::to_string(polyline_length_m(lane.centre)) + " m is longer than a recording covers (at most 20 km)");
+  }
   lane.left_bound = joined(ids, by_id, [](const Lanelet& l) { return l.left_bound; });
   lane.right_bound = joined(ids, by_id, [](const Lanelet& l) { return l.right_bound; });
   double width = 0.0;
@@ -203,10 +208,10 @@ RoadLayout build_road_layout(const Recording& r) {
   if (!rc) rc = ramp_by_topology(ch, by_id);
   if (!rc) throw InputError(r.source, "lanelets", "no ramp found (no accessRamp lanelet, no lane joining another, no rightmost lane ending beside a main lane)");
   const std::vector<std::size_t> order = main_lane_order(ch, *rc, by_id);
-  RoadLayout road{ReferenceLine(make_lane(ch.lanes[rc->joins], by_id).centre), {}, make_lane(ch.lanes[rc->ramp], by_id), rc->side, 0, 0, 0, rc->found_by};
+  RoadLayout road{ReferenceLine(make_lane(ch.lanes[rc->joins], by_id, r.source).centre), {}, make_lane(ch.lanes[rc->ramp], by_id, r.source), rc->side, 0, 0, 0, rc->found_by};
   double width = 0.0;
   for (const std::size_t c : order) {
-    road.main_lanes.push_back(make_lane(ch.lanes[c], by_id));
+    road.main_lanes.push_back(make_lane(ch.lanes[c], by_id, r.source));
     locate_lane(road.main_lanes.back(), road.reference);
     width += road.main_lanes.back().mean_width_m / order.size();
   }

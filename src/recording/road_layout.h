@@ -27,6 +27,8 @@ struct Lane {
   std::string name() const;  // "lanelets 12-13"
 };
 
+inline constexpr double kMaxLaneLengthM = 20000.0;  // longer lanes are refused (work bound)
+
 enum class RampSide { kRight, kLeft };  // the side of the main carriageway the ramp is on
 
 struct RoadLayout {

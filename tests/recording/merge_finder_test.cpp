@@ -83,3 +83,20 @@ TEST(MergeFinder, LaneChangesOfThePublicRecordings) {
 
 }  // namespace
 }  // namespace mg
+
+namespace mg {
+namespace {
+
+TEST(LaneSequence, ShortRunsTakeTheLaneOfTheLastLongRun) {
+  // Lanes drawn directly: main lane 0 at y 1.75, main lane 1 at 5.25.
+  test::SyntheticVehicle v = test::lane_changer(1, 0, 20, 1.75, 1.75, 50, 40);
+  for (int i = 0; i < 3; ++i) v.xyv[static_cast<std::size_t>(i)][1] = 5.25;            // a short first run: lane 1
+  for (int i = 20; i < 40; i += 2) v.xyv[static_cast<std::size_t>(i)][1] = 5.25;       // flipping every step
+  const Recording r = parse_recording(test::synthetic_recording_xml({v}), "rec.xml");
+  const RoadLayout road = build_road_layout(r);
+  const std::vector<int> lanes = lane_sequence(project_track(r.vehicles[0], road.reference, 0.1, 3), road, 5);
+  EXPECT_EQ(lanes, std::vector<int>(40, 0));
+}
+
+}  // namespace
+}  // namespace mg

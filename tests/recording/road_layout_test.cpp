@@ -68,3 +68,20 @@ TEST(RoadLayout, RefusesARoadWithoutARamp) {
 
 }  // namespace
 }  // namespace mg
+
+namespace mg {
+namespace {
+
+TEST(RoadLayout, RefusesALaneLongerThanARecordingCovers) {
+  std::string xml = test::synthetic_recording_xml({test::lane_changer(1, 0, 10, 1.75, 1.75, 50, 10)});
+  xml = std::regex_replace(xml, std::regex("<x>400.000000</x>"), "<x>30000</x>");
+  try {
+    build_road_layout(parse_recording(xml, "rec.xml"));
+    ADD_FAILURE() << "a 30 km lane was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("longer than a recording covers (at most 20 km)"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace mg

@@ -66,7 +66,7 @@ AuditProfile audit_profile_from_json(const nlohmann::json& j, const std::string&
   if (!j.is_object()) throw InputError(source, "/", "an audit profile must be a JSON object");
   const ObjectReader r(j, source, "");
   r.only_keys({"name", "rss", "rules", "classes", "smoothing_half_window_steps", "window_before_s", "window_after_s",
-               "neighbour_range_m", "min_lane_time_s", "halted_speed_mps", "default_speed_limit_mps", "sensitivity"});
+               "neighbour_range_m", "min_lane_time_s", "halted_speed_mps", "halt_near_end_m", "default_speed_limit_mps", "sensitivity"});
   p.name = r.string_or("name", p.name);
   if (r.has("rss")) p.rss = rss_params_from_json(j.at("rss"), source, "/rss");
   if (r.has("rules")) p.rules = rule_params_from_json(j.at("rules"), source, "/rules");
@@ -78,6 +78,7 @@ AuditProfile audit_profile_from_json(const nlohmann::json& j, const std::string&
   p.neighbour_range_m = r.number_or("neighbour_range_m", p.neighbour_range_m, 10.0, 1000.0);
   p.min_lane_time_s = r.number_or("min_lane_time_s", p.min_lane_time_s, 0.0, 5.0);
   p.halted_speed_mps = r.number_or("halted_speed_mps", p.halted_speed_mps, 0.0, 5.0);
+  p.halt_near_end_m = r.number_or("halt_near_end_m", p.halt_near_end_m, 0.0, 1000.0);
   p.default_speed_limit_mps = r.number_or("default_speed_limit_mps", p.default_speed_limit_mps, 0.1, 100.0);
   if (r.has("sensitivity")) read_sensitivity(r, p);
   return p;
@@ -100,6 +101,7 @@ nlohmann::json audit_profile_to_json(const AuditProfile& p) {
           {"neighbour_range_m", p.neighbour_range_m},
           {"min_lane_time_s", p.min_lane_time_s},
           {"halted_speed_mps", p.halted_speed_mps},
+          {"halt_near_end_m", p.halt_near_end_m},
           {"default_speed_limit_mps", p.default_speed_limit_mps},
           {"sensitivity", {{"response_time_s", p.sensitivity.response_times_s}, {"brake_scale", p.sensitivity.brake_scales}}}};
 }

@@ -33,6 +33,7 @@ struct AuditProfile {
   double neighbour_range_m = 80.0;         // others within this along the road take part, [10, 1000]
   double min_lane_time_s = 0.5;            // shorter stays in a lane are noise, [0, 5]
   double halted_speed_mps = 0.5;           // Definition 1.3: halted on the ramp below this, [0, 5]
+  double halt_near_end_m = 50.0;           // ... within this of the ramp's end, [0, 1000]
   double default_speed_limit_mps = 33.34;  // when the lanelets give none, (0, 100]
   SensitivityRanges sensitivity;
   bool operator==(const AuditProfile&) const = default;

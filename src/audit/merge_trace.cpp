@@ -154,7 +154,7 @@ RecordingView view_recording(const Recording& r, const RoadLayout& road, const A
     v.tracks.push_back(project_track(veh, road.reference, r.time_step_s, p.smoothing_half_window_steps));
     v.lanes.push_back(lane_sequence(v.tracks.back(), road, min_steps));
   }
-  v.changes = find_lane_changes(v.tracks, road, {min_steps, p.halted_speed_mps, 50.0});
+  v.changes = find_lane_changes(v.tracks, road, {min_steps, p.halted_speed_mps, p.halt_near_end_m});
   return v;
 }
 

@@ -41,7 +41,10 @@ bool near_ego(const RecordingView& v, std::size_t i, std::size_t ego, const Lane
     const TrackState* e = v.tracks[ego].at_step(step);
     if (s == nullptr || e == nullptr) continue;
     const int lane = v.lanes[i][static_cast<std::size_t>(step - t.states.front().time_step)];
-    if ((lane == c.from_lane || lane == c.to_lane) && std::abs(s->s_m - e->s_m) <= range_m) return true;
+    if (lane != c.from_lane && lane != c.to_lane) continue;
+    // In the lane, not merely nearest to it (a vehicle far off the road is nearest to some lane).
+    const bool in_lane = std::abs(s->d_m - lane_of(*v.road, lane).centre_d_at(s->s_m)) < v.road->lane_width_m;
+    if (in_lane && std::abs(s->s_m - e->s_m) <= range_m) return true;
   }
   return false;
 }
@@ -58,6 +61,22 @@ void shrink_to_neighbours(const RecordingView& v, std::size_t ego, const LaneCha
       last = std::min(last, to);
     }
   }
+}
+
+// A trace holds at most kMaxVehicles: the nearest to the ego at the lane change stay.
+void keep_nearest(const RecordingView& v, std::size_t ego, int step, std::vector<std::size_t>& members, std::vector<std::string>& left_out) {
+  if (members.size() <= kMaxVehicles) return;
+  const double ego_s = v.tracks[ego].at_step(step)->s_m;
+  const auto gap = [&](std::size_t i) {
+    const TrackState* s = v.tracks[i].at_step(step);
+    return s != nullptr ? std::abs(s->s_m - ego_s) : 1e300;
+  };
+  std::stable_sort(members.begin() + 1, members.end(), [&](std::size_t a, std::size_t b) { return gap(a) < gap(b); });
+  for (std::size_t k = kMaxVehicles; k < members.size(); ++k) {
+    left_out.push_back("vehicle " + std::to_string(v.tracks[members[k]].vehicle_id) + ": beyond the " + std::to_string(kMaxVehicles) +
+                       " vehicles a trace holds (the nearest are kept)");
+  }
+  members.resize(kMaxVehicles);
 }
 
 std::string step_time(const RecordingView& v, int step) {
@@ -186,6 +205,7 @@ MergeTrace build_merge_trace(const RecordingView& v, const LaneChange& c, const 
                            " to " + step_time(v, t.states.back().time_step) + ", not throughout the window");
     }
   }
+  keep_nearest(v, ego, c.time_step, members, m.left_out);
   m.first_step = first;
   m.last_step = last;
   const std::vector<int> ids = trace_ids(v, members);

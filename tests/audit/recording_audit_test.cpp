@@ -115,3 +115,21 @@ TEST(RecordingAudit, AVerdictThatFlipsInsideThePlausibleRangeIsFlagged) {
 
 }  // namespace
 }  // namespace mg
+
+namespace mg {
+namespace {
+
+TEST(RecordingAudit, ATraceHoldsAtMost64VehiclesTheNearestOnes) {
+  std::vector<test::SyntheticVehicle> vs{test::lane_changer(1, 100, 20, -1.75, 1.75, 3.0, 80)};
+  for (int k = 0; k < 70; ++k) vs.push_back(test::lane_changer(10 + k, 90 + k, 20, 1.75, 1.75, 99, 80));  // a dense jam
+  const auto a = audit_of(parse_recording(test::synthetic_recording_xml(vs), "rec.xml"));
+  ASSERT_EQ(a->audit.merges.size(), 1u);
+  const MergeTrace& m = a->audit.merges[0].merge;
+  EXPECT_EQ(m.trace.vehicles.size(), kMaxVehicles);
+  EXPECT_EQ(m.left_out.size(), 71u - kMaxVehicles);
+  EXPECT_NE(m.left_out[0].find("beyond the 64 vehicles a trace holds"), std::string::npos) << m.left_out[0];
+  EXPECT_EQ(m.recording_ids[1], 20);  // x = 100, beside the ego, is the nearest
+}
+
+}  // namespace
+}  // namespace mg

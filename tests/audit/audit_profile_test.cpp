@@ -56,3 +56,15 @@ TEST(AuditProfile, RefusesBadProfilesInOneLine) {
 
 }  // namespace
 }  // namespace mg
+
+namespace mg {
+namespace {
+
+// docs/audit_profile.default.json is the built-in profile, written out: a starting point for
+// --params, kept equal to the code by this test.
+TEST(AuditProfile, TheDocumentedDefaultFileIsTheBuiltInProfile) {
+  EXPECT_EQ(load_audit_profile(std::string(MG_SOURCE_DIR) + "/docs/audit_profile.default.json"), default_audit_profile());
+}
+
+}  // namespace
+}  // namespace mg

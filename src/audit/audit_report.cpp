@@ -6,6 +6,7 @@
 #include "audit/audit_html.h"
 #include "audit/audit_plots.h"
 #include "core/atomic_file.h"
+#include "core/observed_trace_json.h"
 #include "core/svg_plot.h"
 #include "rules/report_json.h"
 #include "rules/report_markdown.h"
@@ -128,7 +129,8 @@ std::string merge_audit_markdown(const RecordingAudit& a, std::size_t i) {
   for (const std::string& s : m.merge.left_out) md += "- Left out: " + s + "\n";
   for (const std::string& s : m.merge.notes) md += "- Note: " + s + "\n";
   if (m.sensitivity) md += "- Sensitivity: " + m.sensitivity->summary + "\n";
-  md += "\n![road](road.svg)\n\n![curvilinear frame](frenet.svg)\n\nFull liability report (every rule): [report.md](report.md), [report.html](report.html), [report.json](report.json)\n";
+  md += "\n![road](road.svg)\n\n![curvilinear frame](frenet.svg)\n\nFull liability report (every rule): [report.md](report.md), [report.html](report.html), [report.json](report.json); "
+        "the judged trace: [trace.json](trace.json) (`mergeguard check-trace trace.json` gives the same verdict)\n";
   return md;
 }
 
@@ -158,7 +160,8 @@ void write_audit_reports(const std::string& dir, const RecordingAudit& a) {
                         {sub + "/audit.md", merge_audit_markdown(a, i)},
                         {sub + "/audit.html", merge_audit_html(a, i)},
                         {sub + "/road.svg", road_shape_svg(a, a.merges[i])},
-                        {sub + "/frenet.svg", curvilinear_svg(a.merges[i])}});
+                        {sub + "/frenet.svg", curvilinear_svg(a.merges[i])},
+                        {sub + "/trace.json", observed_trace_to_json(a.merges[i].merge.trace).dump() + "\n"}});
   }
   write_files_atomic({{dir + "/index.json", audit_index_json(a).dump(2) + "\n"},
                       {dir + "/index.md", audit_index_markdown(a)},

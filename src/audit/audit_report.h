@@ -3,7 +3,8 @@
 // code as `check-trace --report`) and the audit's own page (audit.{json,md,html}: the recording,
 // the profile, who is who, the frame, how far the road deviates from straight, the verdict with
 // its smallest margins and sensitivity, and the plots in the road's own shape and in the
-// curvilinear frame); and DIR/index.{json,md,html} listing every merge.
+// curvilinear frame), and the merge's observable trace (trace.json, docs/trace_format.md: what
+// `check-trace` judges to the same verdict); and DIR/index.{json,md,html} listing every merge.
 #pragma once
 
 #include <string>

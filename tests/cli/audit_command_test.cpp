@@ -115,3 +115,24 @@ TEST(AuditCommand, RefusesAMissingFile) {
 
 }  // namespace
 }  // namespace mg::test
+
+namespace mg::test {
+namespace {
+
+// Each merge's trace is written beside its report, and check-trace judges it as the audit did.
+TEST(AuditCommand, CheckTraceJudgesAMergesTraceAsTheAuditDid) {
+  const fs::path out = scratch("us101_3");
+  const CliResult a = run_cli({"audit", (kShared / "USA_US101-3_3_T-1.xml").string(), "--report", out.string()});
+  ASSERT_EQ(a.exit_code, 1) << a.err;
+  const CliResult c = run_cli({"check-trace", (out / "01-vehicle-394" / "trace.json").string(), "--json"});
+  EXPECT_EQ(c.exit_code, 1) << c.err;
+  const nlohmann::json audited = nlohmann::json::parse(slurp(out / "01-vehicle-394" / "report.json"));
+  const nlohmann::json rejudged = nlohmann::json::parse(c.out);
+  EXPECT_EQ(rejudged["liable"], audited["liable"]);
+  EXPECT_EQ(rejudged["liability_detail"], audited["liability_detail"]);
+  EXPECT_EQ(rejudged["trace_digest"], audited["trace_digest"]);
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace mg::test

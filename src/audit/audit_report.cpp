@@ -1,5 +1,6 @@
 #include "audit/audit_report.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -27,7 +28,11 @@ const RuleResult* rule(const CheckResult& r, const std::string& id) {
 std::string smallest_margins(const CheckResult& r) {
   std::string out;
   for (const char* id : {"rss_longitudinal", "rss_lateral"}) {
-    if (const RuleResult* x = rule(r, id)) out += std::string(out.empty() ? "" : ", ") + id + " " + num(x->min_margin) + " " + x->unit;
+    const RuleResult* x = rule(r, id);
+    if (x == nullptr) continue;
+    // An infinite margin: no pair of vehicles came near enough to be judged.
+    const std::string margin = std::isfinite(x->min_margin) ? num(x->min_margin) + " " + x->unit : "no pair near enough to judge";
+    out += std::string(out.empty() ? "" : ", ") + id + " " + margin;
   }
   for (const RuleResult& x : r.rules) {
     if (!x.holds && x.rule_id != "rss_longitudinal" && x.rule_id != "rss_lateral") out += ", " + x.rule_id + " " + num(x.min_margin) + " " + x.unit;
@@ -139,7 +144,7 @@ std::string audit_index_markdown(const RecordingAudit& a) {
   md += "Recording `" + a.source + "` (CommonRoad " + a.recording->version + ", " + std::to_string(a.recording->vehicles.size()) +
         " vehicles). Profile: " + a.profile.name + ". Road: ramp " + a.road->ramp.name() + " found by " + a.road->found_by + "; " +
         road_shape_text(*a.road) + ".\n\n";
-  md += "Overall: **" + std::string(a.holds() ? "every merge holds" : "violated") + "**, " + std::to_string(a.merges.size()) + " merges found.\n\n";
+  md += "Overall: **" + std::string(a.holds() ? "every merge holds" : "violated") + "**, " + std::to_string(a.merges.size()) + (a.merges.size() == 1 ? " merge" : " merges") + " found.\n\n";
   md += "| # | vehicle | kind | t [s] | verdict | liable | smallest margins | sensitivity | report |\n|---|---|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < a.merges.size(); ++i) {
     const MergeAudit& m = a.merges[i];

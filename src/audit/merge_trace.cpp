@@ -124,7 +124,7 @@ std::vector<int> trace_ids(const RecordingView& v, const std::vector<std::size_t
   return ids;
 }
 
-void fill_steps(const RecordingView& v, const std::vector<std::size_t>& members, const LaneChange& c, MergeTrace& m) {
+void fill_steps(const RecordingView& v, const std::vector<std::size_t>& members, const LaneChange& c, int half_window, MergeTrace& m) {
   const RoadLayout& road = *v.road;
   const double sign = merge_frame_y(road, c.from_lane, c.to_lane, 0.0, 1.0) >= merge_frame_y(road, c.from_lane, c.to_lane, 0.0, 0.0) ? 1.0 : -1.0;
   std::vector<std::vector<double>> ys(members.size());
@@ -141,7 +141,7 @@ void fill_steps(const RecordingView& v, const std::vector<std::size_t>& members,
     const std::size_t i = static_cast<std::size_t>(step - m.first_step);
     for (std::size_t k = 0; k < members.size(); ++k) {
       const TrackState& s = *v.tracks[members[k]].at_step(step);
-      o.vehicles.push_back({s.s_m, ys[k][i], sign * s.yaw_rad, s.vs_mps, local_slope(ys[k], dt, i, 3), s.accel_mps2});
+      o.vehicles.push_back({s.s_m, ys[k][i], sign * s.yaw_rad, s.vs_mps, local_slope(ys[k], dt, i, half_window), s.accel_mps2});
     }
     m.trace.steps.push_back(std::move(o));
   }
@@ -219,7 +219,7 @@ MergeTrace build_merge_trace(const RecordingView& v, const LaneChange& c, const 
   m.trace.source = "CommonRoad " + v.recording->version + " recording " + v.recording->benchmark_id + " (mergeguard audit)";
   m.trace.road = trace_road(v, c, p, max_s);
   m.trace.params = {p.rss, p.rules};
-  fill_steps(v, members, c, m);
+  fill_steps(v, members, c, p.smoothing_half_window_steps, m);
   add_notes(v, members, m);
   return m;
 }

@@ -3,6 +3,7 @@
 // as check-trace judges a trace, and report. Exit 0 when every merge holds, 1 when any is
 // violated, 2 for bad input (one line naming the file, the element and the problem; nothing is
 // written: everything is read and validated before the report directory is touched).
+#include <algorithm>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 #include "audit/audit_report.h"
 #include "audit/recording_audit.h"
 #include "cli/command.h"
+#include "core/input_error.h"
 #include "core/output_path.h"
 #include "recording/commonroad_reader.h"
 #include "recording/road_layout.h"
@@ -52,6 +54,9 @@ int run_audit(const std::vector<std::string>& args) {
   const AuditProfile profile = params_path.empty() ? default_audit_profile() : load_audit_profile(params_path);
   const Recording recording = load_recording(path);
   const RoadLayout road = build_road_layout(recording);
+  if (vehicle && std::none_of(recording.vehicles.begin(), recording.vehicles.end(), [&](const RecordedVehicle& v) { return v.id == *vehicle; })) {
+    throw InputError(path, "--vehicle", "no dynamic obstacle " + std::to_string(*vehicle) + " in the recording");
+  }
   if (!report_dir.empty()) prepare_output_dir("--report", report_dir);
   const RecordingAudit a = audit_recording(recording, road, profile, vehicle);
   if (!report_dir.empty()) write_audit_reports(report_dir, a);

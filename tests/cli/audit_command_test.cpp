@@ -107,6 +107,12 @@ TEST(AuditCommand, RefusesEveryHostileRecordingInOneLineWritingNothing) {
   EXPECT_EQ(hostile, 12);
 }
 
+TEST(AuditCommand, RefusesAVehicleThatIsNotInTheRecording) {
+  const CliResult r = run_cli({"audit", (kHostile / "valid.xml").string(), "--vehicle", "99"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("valid.xml: --vehicle: no dynamic obstacle 99 in the recording"), std::string::npos) << r.err;
+}
+
 TEST(AuditCommand, RefusesAMissingFile) {
   const CliResult r = run_cli({"audit", "/nonexistent/recording.xml"});
   EXPECT_EQ(r.exit_code, 2);

@@ -26,7 +26,7 @@ namespace {
 void print_summary(const RecordingAudit& a, const std::string& report_dir) {
   std::cout << "recording: " << a.recording->benchmark_id << " (CommonRoad " << a.recording->version << ", "
             << a.recording->vehicles.size() << " vehicles)\n"
-            << "road:      ramp " << a.road->ramp.name() << ", " << a.road->main_lanes.size() << " main lanes ("
+            << "road:      ramp " << a.road->ramp.name() << ", " << a.road->main_lanes.size() << (a.road->main_lanes.size() == 1 ? " main lane (" : " main lanes (")
             << a.road->found_by << ")\n"
             << "profile:   " << a.profile.name << "\n"
             << "merges:    " << a.merges.size() << "\n";

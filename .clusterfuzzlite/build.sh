@@ -20,5 +20,5 @@ cp "$build_dir/scenario_fuzzer" "$OUT/"
 if command -v zip > /dev/null; then
   rm -f "$OUT/scenario_fuzzer_seed_corpus.zip"
   zip -q -j "$OUT/scenario_fuzzer_seed_corpus.zip" "$repo"/corpus/scenarios/*.json "$repo"/tests/hostile/*.json \
-    "$repo"/corpus/cases/*.json
+    "$repo"/corpus/cases/*.json "$repo"/tests/hostile/recordings/*.xml
 fi

@@ -10,7 +10,7 @@ include(CMakePackageConfigHelpers)
 # mergeguard::mergeguard: every module, and the umbrella header <mergeguard/mergeguard.h>.
 # (The target is mg_all in this tree: `mergeguard` is the binary.)
 add_library(mg_all INTERFACE)
-target_link_libraries(mg_all INTERFACE mg_cli mg_fuzz mg_rules mg_sim mg_planner mg_core)
+target_link_libraries(mg_all INTERFACE mg_cli mg_audit mg_recording mg_fuzz mg_rules mg_sim mg_planner mg_core)
 target_include_directories(mg_all INTERFACE $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
                                             $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 set_target_properties(mg_all PROPERTIES EXPORT_NAME mergeguard)

@@ -1,16 +1,18 @@
 // libFuzzer entry point (issue #6 item 6; docs/fuzzing.md "Coverage-guided fuzzing"): bytes ->
 // scenario -> check -> abort on a property failure. Inputs that start with '{' are JSON and go
 // through the strict loaders instead (a scenario, a corpus case when it has a "scenario" key, an
-// observable trace when it has a "format" key):
+// observable trace when it has a "format" key), and inputs that start with '<' are CommonRoad XML
+// recordings for the audit's loader, road reconstruction and audit (issue #17):
 // rejected input is fine, a crash or sanitizer report is not (issue #7 item 4).
 // Environment: MG_FUZZ_PLANNER (default rcpp); MG_FUZZ_CASE_DIR: write each failure there as a
 // corpus case (found_by "libFuzzer", not shrunk) before aborting; MG_FUZZ_LOADERS_ONLY=1: every
-// input is JSON text for the loaders (no simulation), for fuzzing the input boundary alone.
+// input is JSON or XML text for the loaders (no simulation), for fuzzing the input boundary alone.
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <string>
 
+#include "audit/recording_audit.h"
 #include "core/input_error.h"
 #include "core/json_reader.h"
 #include "core/observed_trace_json.h"
@@ -18,6 +20,8 @@
 #include "fuzz/corpus_case.h"
 #include "fuzz/properties.h"
 #include "planner/planner.h"
+#include "recording/commonroad_reader.h"
+#include "recording/road_layout.h"
 #include "rules/check.h"
 #include "sim/checked_run.h"
 
@@ -43,6 +47,16 @@ void load_json(const std::uint8_t* data, std::size_t size) {
     if (j.is_object() && j.contains("scenario")) mg::fuzz::case_from_json(j, "fuzz input");
     else if (j.is_object() && j.contains("format")) mg::observed_trace_from_json(j, "fuzz input");
     else mg::scenario_from_json(j, "fuzz input");
+  } catch (const mg::InputError&) {
+  }
+}
+
+// Recording fuzzing: a recording the loader accepts is audited; only InputError may come out.
+void load_xml(const std::uint8_t* data, std::size_t size) {
+  try {
+    const mg::Recording r = mg::parse_recording(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz input");
+    const mg::RoadLayout road = mg::build_road_layout(r);
+    mg::audit_recording(r, road, mg::default_audit_profile());
   } catch (const mg::InputError&) {
   }
 }
@@ -79,6 +93,10 @@ bool loaders_only() {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size > 0 && data[0] == '<') {
+    load_xml(data, size);
+    return 0;
+  }
   if (loaders_only() || (size > 0 && data[0] == '{')) {
     load_json(data, size);
     return 0;

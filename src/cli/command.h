@@ -31,6 +31,7 @@ struct Command {
 // linker drops an object file that nothing references, its static initialisers with it.
 const std::map<std::string, Command>& commands();
 
+Command audit_command();
 Command check_command();
 Command check_trace_command();
 Command corpus_command();

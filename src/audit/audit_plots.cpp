@@ -1,0 +1,112 @@
+#include "audit/audit_plots.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/svg_plot.h"
+
+namespace mg {
+namespace {
+
+svg::Series polyline(const std::vector<Point2>& pts, const std::string& label, const std::string& colour, const std::string& dash) {
+  svg::Series s;
+  s.label = label;
+  s.colour = colour;
+  s.dash = dash;
+  s.width_px = 1.0;
+  for (const Point2& p : pts) s.x.push_back(p.x_m), s.y.push_back(p.y_m);
+  return s;
+}
+
+std::string colour_of(std::size_t i) {
+  static const char* kColours[] = {"#1f77b4", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+  return i == 0 ? "#d62728" : kColours[(i - 1) % 8];
+}
+
+// Equal scales on both axes, so that the road keeps its shape.
+void equal_aspect(svg::Plot& p) {
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const svg::Series& s : p.series) {
+    for (std::size_t i = 0; i < s.x.size(); ++i) x0 = std::min(x0, s.x[i]), x1 = std::max(x1, s.x[i]), y0 = std::min(y0, s.y[i]), y1 = std::max(y1, s.y[i]);
+  }
+  const double ratio = static_cast<double>(p.height_px) / p.width_px;
+  double w = x1 - x0, h = y1 - y0;
+  if (h / std::max(w, 1e-9) > ratio) w = h / ratio; else h = w * ratio;
+  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+  p.x_range = svg::Range{cx - 0.55 * w, cx + 0.55 * w};
+  p.y_range = svg::Range{cy - 0.55 * h, cy + 0.55 * h};
+}
+
+}  // namespace
+
+std::string road_shape_svg(const RecordingAudit& a, const MergeAudit& m) {
+  svg::Plot p;
+  p.title = "The road in its own shape (file x, y), paths over the window";
+  p.x_label = "x [m]";
+  p.y_label = "y [m]";
+  p.width_px = 720;
+  p.height_px = 480;
+  for (std::size_t k = 0; k < a.road->main_lanes.size(); ++k) {
+    const Lane& l = a.road->main_lanes[k];
+    p.series.push_back(polyline(l.left_bound, k == 0 ? "main lanes" : "", "#999999", ""));
+    p.series.push_back(polyline(l.right_bound, "", "#999999", ""));
+  }
+  p.series.push_back(polyline(a.road->ramp.left_bound, "ramp", "#ff7f0e", "5 3"));
+  p.series.push_back(polyline(a.road->ramp.right_bound, "", "#ff7f0e", "5 3"));
+  for (std::size_t i = 0; i < m.merge.recording_ids.size(); ++i) {
+    const RecordedVehicle* v = nullptr;
+    for (const RecordedVehicle& rv : a.recording->vehicles) {
+      if (rv.id == m.merge.recording_ids[i]) v = &rv;
+    }
+    std::vector<Point2> path;
+    for (const RecordedState& s : v->states) {
+      if (s.time_step >= m.merge.first_step && s.time_step <= m.merge.last_step) path.push_back({s.x_m, s.y_m});
+    }
+    svg::Series s = polyline(path, (i == 0 ? "ego " : "") + std::to_string(m.merge.recording_ids[i]), colour_of(i), "");
+    s.width_px = i == 0 ? 2.4 : 1.6;
+    p.series.push_back(s);
+  }
+  equal_aspect(p);
+  return svg::render(p);
+}
+
+std::string curvilinear_svg(const MergeAudit& m) {
+  svg::Plot p;
+  p.title = "Curvilinear frame (judged): target lane at Y = 0, side lane at Y = -W";
+  p.x_label = "X = s along the reference line [m]";
+  p.y_label = "Y across the road [m]";
+  p.width_px = 720;
+  p.height_px = 360;
+  const ObservedTrace& t = m.merge.trace;
+  double x0 = 1e300, x1 = -1e300;
+  for (std::size_t i = 0; i < t.vehicles.size(); ++i) {
+    svg::Series s;
+    s.label = (i == 0 ? "ego " : "") + std::to_string(m.merge.recording_ids[i]);
+    s.colour = colour_of(i);
+    s.width_px = i == 0 ? 2.4 : 1.6;
+    for (const ObservedStep& st : t.steps) {
+      s.x.push_back(st.vehicles[i].x_m), s.y.push_back(st.vehicles[i].y_m);
+      x0 = std::min(x0, st.vehicles[i].x_m), x1 = std::max(x1, st.vehicles[i].x_m);
+    }
+    p.series.push_back(s);
+  }
+  const double w = t.road.lane_width_m;
+  for (const double y : {-1.5 * w, -0.5 * w, 0.5 * w}) {
+    svg::Series line;
+    line.label = y == -0.5 * w ? "lane lines" : "";
+    line.colour = "#999999";
+    line.dash = "4 3";
+    line.width_px = 1.0;
+    line.x = {x0, std::min(x1, t.road.side_lane_end_x_m)};
+    line.y = {y, y};
+    if (y == -1.5 * w || y == -0.5 * w) p.series.push_back(line);
+    if (y == 0.5 * w) line.x = {x0, x1}, p.series.push_back(line);
+  }
+  if (t.road.side_lane_end_x_m <= x1 + 1.0) {
+    p.bands.push_back({t.road.side_lane_end_x_m, t.road.side_lane_end_x_m + 0.5, "side lane ends", "#f4b183", svg::Range{-1.5 * w, -0.5 * w}});
+  }
+  p.legend = svg::LegendCorner::kBottomRight;
+  return svg::render(p);
+}
+
+}  // namespace mg

@@ -1,0 +1,51 @@
+// The road of a recording (issue #17; docs/audit.md "Road"): the lanelet network's lanes (chains
+// of lanelets along their successors), the main carriageway and the on-ramp, found by
+// laneletType (mainCarriageWay, accessRamp) where the file has them and otherwise from the
+// topology, and the reference line along the main lane the ramp joins, in whose Frenet frame
+// every lane's centre is known as a function of s.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "recording/commonroad_recording.h"
+#include "recording/reference_line.h"
+
+namespace mg {
+
+struct Lane {
+  std::vector<int> lanelet_ids;        // along the driving direction
+  std::vector<Point2> centre;          // world frame
+  std::vector<Point2> left_bound, right_bound;
+  std::vector<FrenetPoint> centre_sd;  // the centre in the Frenet frame, by increasing s
+  double start_s_m = 0.0, end_s_m = 0.0;
+  double mean_width_m = 0.0;
+
+  // The centre's d at s, interpolated (held beyond the lane's ends).
+  double centre_d_at(double s_m) const;
+  bool covers(double s_m, double margin_m = 0.0) const { return s_m >= start_s_m - margin_m && s_m <= end_s_m + margin_m; }
+  std::string name() const;  // "lanelets 12-13"
+};
+
+inline constexpr double kMaxLaneLengthM = 20000.0;  // longer lanes are refused (work bound)
+
+enum class RampSide { kRight, kLeft };  // the side of the main carriageway the ramp is on
+
+struct RoadLayout {
+  ReferenceLine reference;
+  std::vector<Lane> main_lanes;  // ordered from the ramp side outwards
+  Lane ramp;
+  RampSide ramp_side = RampSide::kRight;
+  double lane_width_m = 3.5;     // mean width of the main lanes
+  double ramp_end_s_m = 0.0;     // where the ramp ends, along the reference line
+  double speed_limit_mps = 0.0;  // from the lanelets, 0 when none is given
+  std::string found_by;          // how the ramp was identified, for the report
+};
+
+// Raises InputError (file, lanelet, problem) when no ramp is found or the lanes are unusable.
+RoadLayout build_road_layout(const Recording& r);
+
+// The centre line of a lanelet: its bounds resampled to a common count and averaged.
+std::vector<Point2> lanelet_centre(const Lanelet& l);
+
+}  // namespace mg

@@ -1,0 +1,135 @@
+// Auditing recordings (src/audit/recording_audit.h): the reviewed results of the three public
+// recordings (docs/audit.md "Reviewed results"), merges on a synthetic road judged as Definition 1
+// and RSS would, the sensitivity sweep flagging a verdict that flips, and the trace of a merge.
+#include <gtest/gtest.h>
+
+#include "audit/recording_audit.h"
+#include "recording/commonroad_reader.h"
+#include "recording/road_layout.h"
+#include "tests/recording/recording_files.h"
+#include "tests/recording/synthetic_recording.h"
+
+namespace mg {
+namespace {
+
+// The audit points into the recording and its road: they live beside it.
+struct Audited {
+  explicit Audited(Recording r) : recording(std::move(r)), road(build_road_layout(recording)) {
+    audit = audit_recording(recording, road, default_audit_profile());
+  }
+  Recording recording;
+  RoadLayout road;
+  RecordingAudit audit;
+};
+
+std::unique_ptr<Audited> audit_of(Recording r) { return std::make_unique<Audited>(std::move(r)); }
+
+std::unique_ptr<Audited> audit_file(const std::string& file) { return audit_of(load_recording(test::recording_path(file))); }
+
+// Ego on the ramp changing lanes at t = 4 s at 20 m/s; a follower `gap` m behind and a leader 150 m ahead in the main lane.
+std::unique_ptr<Audited> audit_synthetic(double gap_m) {
+  return audit_of(parse_recording(test::synthetic_recording_xml({test::lane_changer(1, 50, 20, -1.75, 1.75, 4.0, 100),
+                                                                  test::lane_changer(2, 50 - gap_m, 20, 1.75, 1.75, 99, 100),
+                                                                  test::lane_changer(3, 200, 20, 1.75, 1.75, 99, 100)}),
+                                  "rec.xml"));
+}
+
+TEST(RecordingAudit, US101_4_1_OneChangeIntoTheRampWithNobodyAroundHolds) {
+  const auto a = audit_file("USA_US101-4_1_T-1.xml");
+  ASSERT_EQ(a->audit.merges.size(), 1u);
+  const MergeAudit& m = a->audit.merges[0];
+  EXPECT_EQ(m.merge.change.vehicle_id, 389);
+  EXPECT_TRUE(m.result.holds);
+  EXPECT_EQ(m.liable_name(), "none");
+  EXPECT_EQ(m.merge.recording_ids, std::vector<int>{389});
+  EXPECT_EQ(m.merge.left_out.size(), 2u);  // 375 and 381 leave the recording before the change
+  EXPECT_TRUE(a->audit.holds());
+}
+
+TEST(RecordingAudit, US101_3_3_TheCutInOf394IsViolatedByIt) {
+  const auto a = audit_file("USA_US101-3_3_T-1.xml");
+  ASSERT_EQ(a->audit.merges.size(), 1u);
+  const MergeAudit& m = a->audit.merges[0];
+  EXPECT_EQ(m.merge.change.vehicle_id, 394);
+  EXPECT_FALSE(m.result.holds);
+  EXPECT_EQ(m.liable_name(), "ego (vehicle 394)");
+  EXPECT_NE(m.result.liability_detail.find("def1_1_gap"), std::string::npos);
+  EXPECT_NE(m.result.liability_detail.find("vehicle 395"), std::string::npos);  // the follower it cut in front of
+  ASSERT_TRUE(m.sensitivity.has_value());
+  EXPECT_FALSE(m.sensitivity->flips);
+}
+
+TEST(RecordingAudit, ZipperMergeThreeMergesAllViolated) {
+  const auto a = audit_file("ZAM_Zip-1_56_T-1.xml");
+  ASSERT_EQ(a->audit.merges.size(), 3u);
+  EXPECT_EQ(a->audit.merges[0].merge.change.kind, LaneChangeKind::kIntoRamp);
+  EXPECT_EQ(a->audit.merges[0].liable_name(), "ego (vehicle 2)");
+  EXPECT_EQ(a->audit.merges[1].merge.change.vehicle_id, 1);
+  EXPECT_EQ(a->audit.merges[1].liable_name(), "vehicle 2");  // closing in behind 1 without braking
+  EXPECT_EQ(a->audit.merges[2].merge.change.vehicle_id, 2);
+  EXPECT_EQ(a->audit.merges[2].liable_name(), "ego (vehicle 2)");
+  for (const MergeAudit& m : a->audit.merges) {
+    EXPECT_FALSE(m.result.holds);
+    ASSERT_TRUE(m.sensitivity.has_value());
+    EXPECT_FALSE(m.sensitivity->flips);
+  }
+}
+
+TEST(RecordingAudit, AMergeWellClearOfTrafficHolds) {
+  const auto a = audit_synthetic(120);
+  ASSERT_EQ(a->audit.merges.size(), 1u);
+  EXPECT_TRUE(a->audit.merges[0].result.holds);
+  EXPECT_FALSE(a->audit.merges[0].sensitivity.has_value());
+  // The frame: the ego starts at the side lane's centre, -W, and ends in the target lane's, 0.
+  const ObservedTrace& t = a->audit.merges[0].merge.trace;
+  EXPECT_NEAR(t.steps.front().vehicles[0].y_m, -3.5, 1e-6);
+  EXPECT_NEAR(t.steps.back().vehicles[0].y_m, 0.0, 1e-6);
+  EXPECT_DOUBLE_EQ(t.road.side_lane_end_x_m, 200.0);
+  EXPECT_EQ(t.road.main_lanes, 2);
+}
+
+TEST(RecordingAudit, AMergeInFrontOfACloseFollowerIsTheEgosFault) {
+  const auto a = audit_synthetic(20);
+  const MergeAudit& m = a->audit.merges.at(0);
+  EXPECT_FALSE(m.result.holds);
+  EXPECT_EQ(m.liable_name(), "ego (vehicle 1)");
+  ASSERT_TRUE(m.sensitivity.has_value());
+  EXPECT_FALSE(m.sensitivity->flips);  // violated at every response time and braking limit swept
+  EXPECT_EQ(m.sensitivity->points.size(), 12u);
+}
+
+TEST(RecordingAudit, AVerdictThatFlipsInsideThePlausibleRangeIsFlagged) {
+  const auto a = audit_synthetic(70);
+  const MergeAudit& m = a->audit.merges.at(0);
+  EXPECT_FALSE(m.result.holds);
+  ASSERT_TRUE(m.sensitivity.has_value());
+  EXPECT_TRUE(m.sensitivity->flips);
+  EXPECT_NE(m.sensitivity->summary.find("not certain"), std::string::npos);
+  // Faster response holds: the only variations that hold have the shortest response time.
+  for (const SensitivityPoint& p : m.sensitivity->points) {
+    if (p.holds) {
+      EXPECT_DOUBLE_EQ(p.response_time_s, 0.5);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mg
+
+namespace mg {
+namespace {
+
+TEST(RecordingAudit, ATraceHoldsAtMost64VehiclesTheNearestOnes) {
+  std::vector<test::SyntheticVehicle> vs{test::lane_changer(1, 100, 20, -1.75, 1.75, 3.0, 80)};
+  for (int k = 0; k < 70; ++k) vs.push_back(test::lane_changer(10 + k, 90 + k, 20, 1.75, 1.75, 99, 80));  // a dense jam
+  const auto a = audit_of(parse_recording(test::synthetic_recording_xml(vs), "rec.xml"));
+  ASSERT_EQ(a->audit.merges.size(), 1u);
+  const MergeTrace& m = a->audit.merges[0].merge;
+  EXPECT_EQ(m.trace.vehicles.size(), kMaxVehicles);
+  EXPECT_EQ(m.left_out.size(), 71u - kMaxVehicles);
+  EXPECT_NE(m.left_out[0].find("beyond the 64 vehicles a trace holds"), std::string::npos) << m.left_out[0];
+  EXPECT_EQ(m.recording_ids[1], 20);  // x = 100, beside the ego, is the nearest
+}
+
+}  // namespace
+}  // namespace mg

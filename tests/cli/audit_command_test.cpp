@@ -1,0 +1,144 @@
+// `mergeguard audit` (issue #17; src/cli/cmd_audit.cpp): exit 0 when every merge holds, 1 when
+// one is violated, 2 for bad input with one line naming the file and element, nothing on stdout
+// and nothing written; the index and one report directory per merge; --json, --vehicle, --params.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+
+namespace mg::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kHostile = fs::path(MG_SOURCE_DIR) / "tests" / "hostile" / "recordings";
+const fs::path kShared = fs::path(MG_SOURCE_DIR) / ".." / "shared" / "data" / "commonroad";
+
+fs::path scratch(const std::string& tag) {
+  static int counter = 0;
+  const auto dir = fs::temp_directory_path() / ("mg_audit_" + std::to_string(::getpid()) + "_" + tag + "_" + std::to_string(counter++));
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(AuditCommand, WritesAnIndexAndOneReportPerMerge) {
+  const fs::path out = scratch("us101_4");
+  const CliResult r = run_cli({"audit", (kShared / "USA_US101-4_1_T-1.xml").string(), "--report", out.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("vehicle 389 into the ramp at t = 4.1 s: holds, liable none"), std::string::npos) << r.out;
+  for (const char* f : {"index.json", "index.md", "index.html"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+  for (const char* f : {"report.json", "report.md", "report.html", "audit.json", "audit.md", "audit.html", "road.svg", "frenet.svg"}) {
+    EXPECT_TRUE(fs::exists(out / "01-vehicle-389" / f)) << f;
+  }
+  const nlohmann::json index = nlohmann::json::parse(slurp(out / "index.json"));
+  EXPECT_EQ(index["merges"].size(), 1u);
+  EXPECT_EQ(index["profile"]["name"], "mergeguard default recorded-traffic profile (v1)");
+  EXPECT_EQ(index["road"]["ramp"], "lanelets 15-16");
+  fs::remove_all(out);
+}
+
+TEST(AuditCommand, ExitsOneWhenAMergeIsViolated) {
+  const CliResult r = run_cli({"audit", (kShared / "USA_US101-3_3_T-1.xml").string()});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.out.find("vehicle 394 cut-in at t = 1.9 s: violated, liable ego (vehicle 394)"), std::string::npos) << r.out;
+}
+
+TEST(AuditCommand, JsonIndexAndOneVehicle) {
+  const CliResult r = run_cli({"audit", (kShared / "ZAM_Zip-1_56_T-1.xml").string(), "--json", "--vehicle", "1"});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["merges"].size(), 1u);
+  EXPECT_EQ(j["merges"][0]["vehicle"], 1);
+  EXPECT_EQ(j["merges"][0]["liable"], "vehicle 2");
+  EXPECT_EQ(j["merges"][0]["kind"], "ramp merge");
+}
+
+TEST(AuditCommand, StatesGivenAsSetsAreReadAsTheirCentresAndSaidSo) {
+  const CliResult r = run_cli({"audit", (kHostile / "set_valued.xml").string(), "--json"});
+  EXPECT_LE(r.exit_code, 1) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["set_valued_states"], 1);
+  EXPECT_NE(j["merges"][0]["notes"][0].get<std::string>().find("uses each set's centre"), std::string::npos);
+}
+
+TEST(AuditCommand, TheProfileComesFromParams) {
+  const fs::path dir = scratch("params");
+  fs::create_directories(dir);
+  std::ofstream(dir / "p.json") << R"({"name": "slow drivers", "rss": {"response_time_s": 2.0}})";
+  const CliResult r = run_cli({"audit", (kHostile / "valid.xml").string(), "--params", (dir / "p.json").string(), "--json"});
+  EXPECT_LE(r.exit_code, 1) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["profile"]["name"], "slow drivers");
+  EXPECT_EQ(j["profile"]["rss"]["response_time_s"], 2.0);
+  std::ofstream(dir / "bad.json") << R"({"rss": {"response_time_s": -1}})";
+  const CliResult bad = run_cli({"audit", (kHostile / "valid.xml").string(), "--params", (dir / "bad.json").string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("/rss/response_time_s"), std::string::npos) << bad.err;
+  fs::remove_all(dir);
+}
+
+TEST(AuditCommand, RefusesEveryHostileRecordingInOneLineWritingNothing) {
+  int hostile = 0;
+  for (const auto& entry : fs::directory_iterator(kHostile)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".xml" || name == "valid.xml" || name == "set_valued.xml") continue;
+    ++hostile;
+    const fs::path out = scratch("hostile");
+    const CliResult r = run_cli({"audit", entry.path().string(), "--report", out.string()});
+    EXPECT_EQ(r.exit_code, 2) << name;
+    EXPECT_EQ(r.out, "") << name;
+    EXPECT_EQ(r.err.rfind("mergeguard audit: " + entry.path().string() + ": ", 0), 0u) << name << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << name << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << name << ": something was written";
+  }
+  EXPECT_EQ(hostile, 12);
+}
+
+TEST(AuditCommand, RefusesAVehicleThatIsNotInTheRecording) {
+  const CliResult r = run_cli({"audit", (kHostile / "valid.xml").string(), "--vehicle", "99"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("valid.xml: --vehicle: no dynamic obstacle 99 in the recording"), std::string::npos) << r.err;
+}
+
+TEST(AuditCommand, RefusesAMissingFile) {
+  const CliResult r = run_cli({"audit", "/nonexistent/recording.xml"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("/nonexistent/recording.xml: file: cannot read"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace mg::test
+
+namespace mg::test {
+namespace {
+
+// Each merge's trace is written beside its report, and check-trace judges it as the audit did.
+TEST(AuditCommand, CheckTraceJudgesAMergesTraceAsTheAuditDid) {
+  const fs::path out = scratch("us101_3");
+  const CliResult a = run_cli({"audit", (kShared / "USA_US101-3_3_T-1.xml").string(), "--report", out.string()});
+  ASSERT_EQ(a.exit_code, 1) << a.err;
+  const CliResult c = run_cli({"check-trace", (out / "01-vehicle-394" / "trace.json").string(), "--json"});
+  EXPECT_EQ(c.exit_code, 1) << c.err;
+  const nlohmann::json audited = nlohmann::json::parse(slurp(out / "01-vehicle-394" / "report.json"));
+  const nlohmann::json rejudged = nlohmann::json::parse(c.out);
+  EXPECT_EQ(rejudged["liable"], audited["liable"]);
+  EXPECT_EQ(rejudged["liability_detail"], audited["liability_detail"]);
+  EXPECT_EQ(rejudged["trace_digest"], audited["trace_digest"]);
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace mg::test

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -151,16 +152,22 @@ TEST(ExecPlannerCli, CampaignsAreDeterministicAcrossJobs) {
   EXPECT_TRUE(marked_processes_gone("c4"));
 }
 
-TEST(ExecPlannerCli, CtrlCLeavesNoPlannerProcess) {
-  const fs::path dir = scratch("sigint");
+// `mergeguard fuzz --planner PLANNER --time 600 --jobs 2 EXTRA... --corpus ""` as a child process
+// (stdout and stderr to files in `dir`), returned once its campaign has started.
+pid_t start_campaign(const fs::path& dir, const std::string& planner, const std::vector<std::string>& extra) {
   const std::string err_path = (dir / "err").string();
-  const std::string planner = fake("echo", "c5");
+  std::vector<std::string> args = {"fuzz", "--planner", planner, "--time", "600", "--jobs", "2"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  args.insert(args.end(), {"--corpus", ""});
   const pid_t pid = ::fork();
   if (pid == 0) {
     ::dup2(::open((dir / "out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
     ::dup2(::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 2);
     const char* cli = std::getenv("MG_CLI");
-    ::execl(cli, cli, "fuzz", "--planner", planner.c_str(), "--time", "600", "--jobs", "2", "--corpus", "", nullptr);
+    std::vector<char*> argv = {const_cast<char*>(cli)};
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(cli, argv.data());
     ::_exit(127);
   }
   auto started = [&] {
@@ -170,9 +177,20 @@ TEST(ExecPlannerCli, CtrlCLeavesNoPlannerProcess) {
     return s.str().find("fuzz: ") != std::string::npos;
   };
   for (int i = 0; i < 30000 && !started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  ::kill(pid, SIGINT);
+  return pid;
+}
+
+int wait_for_exit(pid_t pid) {
   int status = 0;
   for (int i = 0; i < 30000 && ::waitpid(pid, &status, WNOHANG) != pid; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  return status;
+}
+
+TEST(ExecPlannerCli, CtrlCLeavesNoPlannerProcess) {
+  const fs::path dir = scratch("sigint");
+  const pid_t pid = start_campaign(dir, fake("echo", "c5"), {});
+  ::kill(pid, SIGINT);
+  const int status = wait_for_exit(pid);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 3) << status;
   EXPECT_TRUE(marked_processes_gone("c5"));
   fs::remove_all(dir);
@@ -182,29 +200,11 @@ TEST(ExecPlannerCli, CtrlCLeavesNoPlannerProcess) {
 // planner processes with it, even one that ignores the end of its input (stubborn).
 TEST(ExecPlannerCli, ASecondCtrlCEndsEvenAPlannerThatIgnoresTheEndOfItsInput) {
   const fs::path dir = scratch("sigint2");
-  const std::string err_path = (dir / "err").string();
-  const std::string planner = fake("stubborn", "c6");
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::dup2(::open((dir / "out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
-    ::dup2(::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 2);
-    const char* cli = std::getenv("MG_CLI");
-    ::execl(cli, cli, "fuzz", "--planner", planner.c_str(), "--time", "600", "--jobs", "2", "--planner-timeout", "5",
-            "--corpus", "", nullptr);
-    ::_exit(127);
-  }
-  auto started = [&] {
-    std::ifstream in(err_path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str().find("fuzz: ") != std::string::npos;
-  };
-  for (int i = 0; i < 30000 && !started(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const pid_t pid = start_campaign(dir, fake("stubborn", "c6"), {"--planner-timeout", "5"});
   ::kill(pid, SIGINT);  // the campaign now waits for its calls in flight, each 0.3 s
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ::kill(pid, SIGINT);
-  int status = 0;
-  for (int i = 0; i < 30000 && ::waitpid(pid, &status, WNOHANG) != pid; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const int status = wait_for_exit(pid);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
   EXPECT_TRUE(marked_processes_gone("c6"));
   fs::remove_all(dir);

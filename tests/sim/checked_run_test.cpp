@@ -137,12 +137,18 @@ RC_GTEST_PROP(CheckedRun, TheVerdictIgnoresWhatThePlannerSaysAboutItself, ()) {
 
 // The annotations really are the planner's (the property above would hold trivially otherwise),
 // and a falsified account really differs from them.
-TEST(CheckedRun, TheAnnotationsHoldThePlannersDecisions) {
+// The default ego and one vehicle 60 m ahead of it.
+Scenario one_vehicle_ahead() {
   Scenario s;
   MainVehicle v;
   v.id = 1;
   v.x_m = 60.0;
   s.vehicles.push_back(v);
+  return s;
+}
+
+TEST(CheckedRun, TheAnnotationsHoldThePlannersDecisions) {
+  const Scenario s = one_vehicle_ahead();
   const CheckResult r = check_scenario(s, "rcpp", PlannerAccount::kDecisions);
   const json& a = r.trace.planner_annotations;
   ASSERT_TRUE(a.is_object());
@@ -154,11 +160,7 @@ TEST(CheckedRun, TheAnnotationsHoldThePlannersDecisions) {
 // check_scenario takes a planner object as well as a registry name: a planner under test needs no
 // registration, and one object is judged exactly as the registry's planner of the same kind.
 TEST(CheckedRun, APlannerObjectOutsideTheRegistryIsJudgedLikeARegisteredOne) {
-  Scenario s;
-  MainVehicle v;
-  v.id = 1;
-  v.x_m = 60.0;
-  s.vehicles.push_back(v);
+  const Scenario s = one_vehicle_ahead();
   RcppPlanner rcpp(false);
   const CheckResult by_object = check_scenario(s, rcpp);
   const CheckResult by_name = check_scenario(s, "rcpp");

@@ -13,10 +13,10 @@
 
 namespace {
 
-std::string shared_recording(const char* file) { return std::string(MG_SOURCE_DIR) + "/../shared/data/commonroad/" + file; }
+std::string public_recording(const char* file) { return std::string(MG_SOURCE_DIR) + "/tests/data/commonroad/" + file; }
 
 void audit_file(benchmark::State& state, const char* file) {
-  const std::string path = shared_recording(file);
+  const std::string path = public_recording(file);
   std::size_t merges = 0;
   for (auto _ : state) {
     const mg::Recording r = mg::load_recording(path);

@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kHostile = fs::path(MG_SOURCE_DIR) / "tests" / "hostile" / "recordings";
-const fs::path kShared = fs::path(MG_SOURCE_DIR) / ".." / "shared" / "data" / "commonroad";
+const fs::path kShared = fs::path(MG_SOURCE_DIR) / "tests" / "data" / "commonroad";  // the public recordings
 
 fs::path scratch(const std::string& tag) {
   static int counter = 0;

@@ -1,5 +1,5 @@
-// The three public CommonRoad recordings of the project's shared data
-// (../shared/data/commonroad/ beside the repository: see docs/audit.md for their sources).
+// The three public CommonRoad recordings, kept in the repository (tests/data/commonroad/, with
+// their sources and licence) so that the tests run on a clean clone.
 #pragma once
 
 #include <string>
@@ -7,7 +7,7 @@
 namespace mg::test {
 
 inline std::string recording_path(const std::string& file) {
-  return std::string(MG_SOURCE_DIR) + "/../shared/data/commonroad/" + file;
+  return std::string(MG_SOURCE_DIR) + "/tests/data/commonroad/" + file;
 }
 
 }  // namespace mg::test

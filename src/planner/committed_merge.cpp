@@ -19,9 +19,8 @@ constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committ
 // An abort returns to the side lane, which is only sound while the ego can still stop (braking at
 // b_min) before the side lane's end (Def. 1.3); otherwise the merge completes under the RSS override.
 // One planner cycle of travel is kept in hand for the speed controller, whose proportional tail
-// stops the ego a little later than constant braking would: without it an abort decided with
-// 0.07 m to spare halted 0.07 m past the end (seed-700 campaign of session 5, weak brakes:
-// b_min = b_max = 3 m/s2 at 15.4 m/s).
+// stops the ego a little later than constant braking would (by centimetres with weak brakes at
+// speed: an abort decided with less to spare halts past the end).
 bool can_still_halt(const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
   const double v = ego_speed_mps(w);

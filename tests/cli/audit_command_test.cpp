@@ -27,12 +27,6 @@ fs::path scratch(const std::string& tag) {
   return dir;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 TEST(AuditCommand, WritesAnIndexAndOneReportPerMerge) {
   const fs::path out = scratch("us101_4");

@@ -2,6 +2,7 @@
 // captures exit code, stdout and stderr. Shared by all CLI tests.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -15,5 +16,8 @@ struct CliResult {
 
 // args are passed through /bin/sh quoted; stdin_text is fed on standard input.
 CliResult run_cli(const std::vector<std::string>& args, const std::string& stdin_text = "");
+
+// The whole content of a file (empty when it cannot be read).
+std::string slurp(const std::filesystem::path& p);
 
 }  // namespace mg::test

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "core/rss.h"
 
@@ -90,17 +91,63 @@ double def1_2_margin_m(const ObservedTrace& t, std::size_t step, int leader, dou
 
 namespace {
 
+constexpr double kBisectionTolerance = 1e-6;
+
 // The smallest v in [lo, hi] with pred(v) true, pred being false then true (monotone); hi + 1
-// when pred(hi) is false.
+// when pred(hi) is false. Found by bisection to within kBisectionTolerance, one halving per
+// refine(), so that a caller comparing it with another stops as soon as the comparison is
+// decided; value() is the same number however it was reached (the same midpoints in order).
+template <class Pred>
+class FirstTrue {
+ public:
+  FirstTrue(double lo, double hi, Pred pred) : pred_(std::move(pred)) {
+    if (pred_(lo)) {
+      lo_ = hi_ = lo;
+    } else if (!pred_(hi)) {
+      lo_ = hi_ = hi + 1.0;
+    } else {
+      lo_ = lo;
+      hi_ = hi;
+      done_ = !(hi_ - lo_ > kBisectionTolerance);
+    }
+  }
+  bool done() const { return done_; }
+  // The result is in (lower(), upper()] until done(), then upper().
+  double lower() const { return lo_; }
+  double upper() const { return hi_; }
+  void refine() {
+    const double mid = 0.5 * (lo_ + hi_);
+    (pred_(mid) ? hi_ : lo_) = mid;
+    done_ = !(hi_ - lo_ > kBisectionTolerance);
+  }
+  double value() {
+    while (!done_) refine();
+    return hi_;
+  }
+
+ private:
+  Pred pred_;
+  double lo_ = 0.0, hi_ = 0.0;
+  bool done_ = true;
+};
+
 template <class Pred>
 double first_true(double lo, double hi, Pred pred) {
-  if (pred(lo)) return lo;
-  if (!pred(hi)) return hi + 1.0;
-  while (hi - lo > 1e-6) {
-    const double mid = 0.5 * (lo + hi);
-    (pred(mid) ? hi : lo) = mid;
-  }
-  return hi;
+  return FirstTrue(lo, hi, std::move(pred)).value();
+}
+
+// v_e*'s upper end from the first speed at which (1.2) fails: `over` is within the tolerance
+// above the last speed that holds, so step back for ve_hi itself to hold.
+double ve_hi_of(double over, double v_max) {
+  return over > v_max ? v_max : over == 0.0 ? -1.0 : over - kBisectionTolerance;
+}
+
+auto holds_11(const ObservedTrace& t, std::size_t step, const GapIndices& gap, double rho, double margin_m) {
+  return [&t, step, gap, rho, margin_m](double v) { return def1_1_margin_m(t, step, gap.follower, v, rho) >= margin_m; };
+}
+
+auto fails_12(const ObservedTrace& t, std::size_t step, const GapIndices& gap, double rho, double margin_m) {
+  return [&t, step, gap, rho, margin_m](double v) { return def1_2_margin_m(t, step, gap.leader, v, rho) < margin_m; };
 }
 
 }  // namespace
@@ -109,13 +156,27 @@ Def1Interval def1_interval(const ObservedTrace& t, std::size_t step, const GapIn
                            double margin_m) {
   const double v_max = t.road.speed_limit_mps;
   Def1Interval out;
-  out.ve_lo_mps =
-      first_true(0.0, v_max, [&](double v) { return def1_1_margin_m(t, step, gap.follower, v, rho) >= margin_m; });
-  const double over =
-      first_true(0.0, v_max, [&](double v) { return def1_2_margin_m(t, step, gap.leader, v, rho) < margin_m; });
-  // `over` is within 1e-6 above the last speed that holds; step back so that ve_hi itself holds.
-  out.ve_hi_mps = over > v_max ? v_max : over == 0.0 ? -1.0 : over - 1e-6;
+  out.ve_lo_mps = first_true(0.0, v_max, holds_11(t, step, gap, rho, margin_m));
+  out.ve_hi_mps = ve_hi_of(first_true(0.0, v_max, fails_12(t, step, gap, rho, margin_m)), v_max);
   return out;
+}
+
+// Both bisections advance only until ve_lo <= ve_hi is decided. Before it is done, a bisection's
+// result lies in (lower, upper]; `over` is then within (0, v_max], so ve_hi = over - tolerance,
+// and rounding is monotone: ve_hi lies in [lower - tol, upper - tol] as computed.
+bool def1_feasible(const ObservedTrace& t, std::size_t step, const GapIndices& gap, double rho, double margin_m) {
+  const double v_max = t.road.speed_limit_mps;
+  FirstTrue lo(0.0, v_max, holds_11(t, step, gap, rho, margin_m));
+  FirstTrue over(0.0, v_max, fails_12(t, step, gap, rho, margin_m));
+  for (;;) {
+    if (lo.done() && over.done()) return lo.upper() <= ve_hi_of(over.upper(), v_max);
+    const double hi_least = over.done() ? ve_hi_of(over.upper(), v_max) : over.lower() - kBisectionTolerance;
+    const double hi_most = over.done() ? hi_least : over.upper() - kBisectionTolerance;
+    if (lo.upper() <= hi_least) return true;                        // ve_lo <= lo.upper()
+    if (lo.done() ? lo.upper() > hi_most : lo.lower() >= hi_most) return false;  // ve_lo > lo.lower()
+    if (!lo.done()) lo.refine();
+    if (!over.done()) over.refine();
+  }
 }
 
 double def1_best_speed_mps(const ObservedTrace& t, std::size_t step, const GapIndices& gap, double rho) {

@@ -43,6 +43,10 @@ struct Def1Interval {
 // that much.
 Def1Interval def1_interval(const ObservedTrace& t, std::size_t step, const GapIndices& gap, double rho_s,
                            double margin_m = 0.0);
+// def1_interval(...).feasible(), exactly, with each bisection stopped as soon as the comparison of
+// its ends is decided (the rules ask this of every gap at every step of some runs).
+bool def1_feasible(const ObservedTrace& t, std::size_t step, const GapIndices& gap, double rho_s,
+                   double margin_m = 0.0);
 // The v_e* that maximises min((1.1), (1.2)): where the two margins cross, or an end of the domain.
 double def1_best_speed_mps(const ObservedTrace& t, std::size_t step, const GapIndices& gap, double rho_s);
 

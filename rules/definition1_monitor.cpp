@@ -77,7 +77,7 @@ MonitorOutput monitor_window_limit(const MonitorContext& ctx, LimitKind kind) {
 
 bool any_def1_gap_feasible(const ObservedTrace& t, std::size_t step, double rho_s) {
   for (const GapIndices& gap : lane_gaps(t, step))
-    if (def1_interval(t, step, gap, rho_s).feasible()) return true;
+    if (def1_feasible(t, step, gap, rho_s)) return true;
   return false;
 }
 

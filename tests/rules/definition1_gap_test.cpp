@@ -104,6 +104,41 @@ RC_GTEST_PROP(Def1Gap, Ineq11GrowsAndIneq12FallsWithVeStar, ()) {
   }
 }
 
+// def1_feasible stops its bisections early; its answer must be def1_interval's, including gaps
+// that are feasible by less than the bisection's tolerance and open sides.
+RC_GTEST_PROP(Def1Gap, TheEarlyFeasibilityAnswerIsTheFullIntervals, ()) {
+  Scenario s = base_scenario();
+  s.road.speed_limit_mps = *rc::gen::element(22.0, 33.34);
+  s.ego.speed_mps = *rc::gen::inRange(0, 3000) / 100.0;
+  s.vehicles = {vehicle(1, -*rc::gen::inRange(0, 15000) / 100.0, *rc::gen::inRange(0, 3000) / 100.0),
+                vehicle(2, *rc::gen::inRange(0, 15000) / 100.0, *rc::gen::inRange(0, 3000) / 100.0)};
+  const ObservedTrace t = test::observed(s, constant_accel_trace(s, 0.0));
+  const GapIndices gap{*rc::gen::element(-1, 1), *rc::gen::element(-1, 2)};
+  const double rho = *rc::gen::element(2.0, 4.0, 6.0, 9.5);
+  const double margin_m = *rc::gen::element(0.0, 0.5, 2.0);
+  RC_ASSERT(def1_feasible(t, 0, gap, rho, margin_m) == def1_interval(t, 0, gap, rho, margin_m).feasible());
+}
+
+TEST(Def1Gap, TheEarlyFeasibilityAnswerAgreesAtTheEdgeOfFeasibility) {
+  // Leader positions around the one where the gap (1, 2) closes, in steps of 1e-7 m: the interval
+  // shrinks to nothing within a few bisection tolerances.
+  const double rho = 4.0;
+  double lo = 0.0, hi = 200.0;  // leader X: infeasible at lo, feasible at hi
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (def1_interval(gap_trace(-80.0, mid), 0, {1, 2}, rho).feasible() ? hi : lo) = mid;
+  }
+  int feasible = 0, infeasible = 0;
+  for (int k = -50; k <= 50; ++k) {
+    const ObservedTrace t = gap_trace(-80.0, hi + k * 1e-7);
+    const bool full = def1_interval(t, 0, {1, 2}, rho).feasible();
+    EXPECT_EQ(def1_feasible(t, 0, {1, 2}, rho), full) << k;
+    (full ? feasible : infeasible)++;
+  }
+  EXPECT_GT(feasible, 0);
+  EXPECT_GT(infeasible, 0);
+}
+
 TEST(Def1Gap, GapsAreReadInTheRightmostMainLaneOnly) {
   // Vehicles 1 (X = -30) and 3 (X = 50) in lane 0, vehicle 2 (X = 10) in lane 1: around the ego at
   // X = 0 the gap is (1, 3); the lane's gaps are (open, 1), (1, 3), (3, open).

@@ -2,9 +2,9 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <pthread.h>
 #include <signal.h>
 #include <spawn.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -27,11 +27,44 @@ std::string errno_text(const std::string& what, int err) { return what + ": " + 
 
 // Closes its file descriptors on every path out of the constructor.
 struct Fds {
-  int ours = -1, theirs = -1, log = -1;
+  int to_child[2] = {-1, -1}, from_child[2] = {-1, -1}, log = -1;
   ~Fds() {
-    for (int fd : {ours, theirs, log})
+    for (int fd : {to_child[0], to_child[1], from_child[0], from_child[1], log})
       if (fd >= 0) ::close(fd);
   }
+};
+
+// A write to a pipe whose reader is gone raises SIGPIPE, which would end mergeguard (or the
+// program that links it) unless it ignores SIGPIPE, and the disposition is not ours to change.
+// As libpq does (pq_block_sigpipe / pq_reset_sigpipe): SIGPIPE is blocked in this thread around
+// the write, and one the write raised is taken back before the thread's mask is restored, unless
+// one was already pending (then it is the program's).
+class SigpipeBlock {
+ public:
+  SigpipeBlock() {
+    sigemptyset(&pipe_);
+    sigaddset(&pipe_, SIGPIPE);
+    pthread_sigmask(SIG_BLOCK, &pipe_, &old_);
+    sigset_t pending;
+    sigpending(&pending);
+    was_pending_ = sigismember(&pending, SIGPIPE) == 1;
+  }
+  ~SigpipeBlock() {
+    sigset_t pending;
+    if (broke_ && !was_pending_ && sigpending(&pending) == 0 && sigismember(&pending, SIGPIPE) == 1) {
+      const timespec now{0, 0};
+      while (sigtimedwait(&pipe_, nullptr, &now) < 0 && errno == EINTR) {
+      }
+    }
+    pthread_sigmask(SIG_SETMASK, &old_, nullptr);
+  }
+  SigpipeBlock(const SigpipeBlock&) = delete;
+  SigpipeBlock& operator=(const SigpipeBlock&) = delete;
+  void broke() { broke_ = true; }  // the write failed with EPIPE
+
+ private:
+  sigset_t pipe_, old_;
+  bool was_pending_ = false, broke_ = false;
 };
 
 // The child starts with default signal handling and an empty mask: mergeguard ignores SIGXFSZ
@@ -120,21 +153,21 @@ IoStatus wait_for(int fd, short events, Clock::time_point deadline) {
 
 ChildProcess::ChildProcess(const std::string& command, const std::string& stderr_path) {
   Fds fds;
-  int pair[2];
-  // A socket pair, not pipes: send() with MSG_NOSIGNAL reports a dead child as EPIPE instead of
-  // raising SIGPIPE in mergeguard.
-  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0) throw ChildStartError(errno_text("socketpair", errno));
-  fds.ours = pair[0];
-  fds.theirs = pair[1];
-  if (::fcntl(fds.ours, F_SETFL, O_NONBLOCK) != 0) throw ChildStartError(errno_text("fcntl", errno));
+  // Pipes, not a socket pair: a request and its reply cost half the time through pipes (a call
+  // is two wake-ups of processes that often share a core; docs/performance.md).
+  if (::pipe2(fds.to_child, O_CLOEXEC) != 0 || ::pipe2(fds.from_child, O_CLOEXEC) != 0)
+    throw ChildStartError(errno_text("pipe", errno));
+  // Our ends only: each end of a pipe is a file description of its own.
+  if (::fcntl(fds.to_child[1], F_SETFL, O_NONBLOCK) != 0 || ::fcntl(fds.from_child[0], F_SETFL, O_NONBLOCK) != 0)
+    throw ChildStartError(errno_text("fcntl", errno));
   if (!stderr_path.empty()) {
     fds.log = ::open(stderr_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
     if (fds.log < 0) throw ChildStartError(errno_text("cannot open the planner log " + stderr_path, errno));
   }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, fds.theirs, STDIN_FILENO);  // dup2 clears FD_CLOEXEC
-  posix_spawn_file_actions_adddup2(&actions, fds.theirs, STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, fds.to_child[0], STDIN_FILENO);  // dup2 clears FD_CLOEXEC
+  posix_spawn_file_actions_adddup2(&actions, fds.from_child[1], STDOUT_FILENO);
   if (fds.log >= 0) posix_spawn_file_actions_adddup2(&actions, fds.log, STDERR_FILENO);
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
@@ -146,8 +179,8 @@ ChildProcess::ChildProcess(const std::string& command, const std::string& stderr
   posix_spawnattr_destroy(&attr);
   if (err != 0) throw ChildStartError(errno_text("cannot start /bin/sh -c '" + command + "'", err));
   remember_group(pid_);
-  fd_ = fds.ours;
-  fds.ours = -1;
+  std::swap(in_fd_, fds.to_child[1]);
+  std::swap(out_fd_, fds.from_child[0]);
 }
 
 ChildProcess::~ChildProcess() { end(); }
@@ -158,21 +191,23 @@ void kill_all_child_groups() noexcept {
 }
 
 IoStatus ChildProcess::write_line(std::string_view line, double timeout_s) {
-  if (fd_ < 0) return IoStatus::kClosed;
+  if (in_fd_ < 0) return IoStatus::kClosed;
   std::string data(line);
   data.push_back('\n');
   const Clock::time_point deadline = deadline_after(timeout_s);
+  SigpipeBlock block;
   std::size_t sent = 0;
   while (sent < data.size()) {
-    const ssize_t n = ::send(fd_, data.data() + sent, data.size() - sent, MSG_NOSIGNAL);
+    const ssize_t n = ::write(in_fd_, data.data() + sent, data.size() - sent);
     if (n > 0) {
       sent += static_cast<std::size_t>(n);
     } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-      const IoStatus s = wait_for(fd_, POLLOUT, deadline);
+      const IoStatus s = wait_for(in_fd_, POLLOUT, deadline);
       if (s != IoStatus::kDone) return s;
     } else if (n < 0 && errno == EINTR) {
       continue;
     } else {
+      if (n < 0 && errno == EPIPE) block.broke();
       return IoStatus::kClosed;
     }
   }
@@ -190,15 +225,15 @@ IoStatus ChildProcess::read_line(std::string& line, double timeout_s) {
       return IoStatus::kDone;
     }
     scanned = buffer_.size();
-    if (fd_ < 0 || buffer_.size() > kMaxLineBytes) return IoStatus::kClosed;
+    if (out_fd_ < 0 || buffer_.size() > kMaxLineBytes) return IoStatus::kClosed;
     char chunk[65536];
-    const ssize_t n = ::read(fd_, chunk, sizeof chunk);
+    const ssize_t n = ::read(out_fd_, chunk, sizeof chunk);
     if (n > 0) {
       buffer_.append(chunk, static_cast<std::size_t>(n));
     } else if (n == 0) {
       return IoStatus::kClosed;
     } else if (errno == EAGAIN || errno == EWOULDBLOCK) {
-      const IoStatus s = wait_for(fd_, POLLIN, deadline);
+      const IoStatus s = wait_for(out_fd_, POLLIN, deadline);
       if (s != IoStatus::kDone) return s;
     } else if (errno != EINTR) {
       return IoStatus::kClosed;
@@ -226,7 +261,7 @@ bool ChildProcess::exited(double wait_s) {
 
 void ChildProcess::end(double grace_s) {
   if (pid_ <= 0 || reaped_) return;
-  if (fd_ >= 0) ::shutdown(fd_, SHUT_WR);  // end of input: a well-behaved planner exits now
+  close_input();  // end of input: a well-behaved planner exits now
   exited(grace_s);
   ::kill(-pid_, SIGKILL);  // the group: whatever the shell or the planner started
   forget_group(pid_);      // before the reap frees the group id for reuse
@@ -239,8 +274,13 @@ void ChildProcess::end(double grace_s) {
     exit_status_ = WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status);
   }
   reaped_ = true;
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
+  if (out_fd_ >= 0) ::close(out_fd_);
+  out_fd_ = -1;
+}
+
+void ChildProcess::close_input() {
+  if (in_fd_ >= 0) ::close(in_fd_);
+  in_fd_ = -1;
 }
 
 std::string ChildProcess::exit_description() {

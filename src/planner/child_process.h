@@ -1,6 +1,6 @@
 // The one adapter over POSIX child processes (issue #16 item 4): an exec planner runs as
-// `/bin/sh -c COMMAND` in a process group of its own, talks JSON Lines over a socket pair bound
-// to its stdin and stdout, and writes its stderr to a log file. Everything else of mergeguard
+// `/bin/sh -c COMMAND` in a process group of its own, talks JSON Lines over pipes bound to its
+// stdin and stdout, and writes its stderr to a log file. Everything else of mergeguard
 // sees lines, timeouts and a one-line account of how the child ended; nothing else spawns,
 // polls or kills.
 #pragma once
@@ -36,7 +36,7 @@ class ChildProcess {
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;
 
-  // Sends `line` and a newline within timeout_s (a child that stops reading fills the socket);
+  // Sends `line` and a newline within timeout_s (a child that stops reading fills the pipe);
   // kClosed when the child no longer reads (it exited or closed its stdin).
   IoStatus write_line(std::string_view line, double timeout_s);
   // The next line (without its newline) into `line` within timeout_s; kClosed when the child closed
@@ -56,9 +56,11 @@ class ChildProcess {
   // Waits up to wait_s for the child to exit, without reaping it (its zombie keeps the process
   // group id from being reused until end() has killed the group). True once it has exited.
   bool exited(double wait_s);
+  void close_input();
 
   pid_t pid_ = -1;
-  int fd_ = -1;            // our end of the socket pair (non-blocking)
+  int in_fd_ = -1;         // our ends of the pipes to its stdin and from its stdout (non-blocking)
+  int out_fd_ = -1;
   bool exited_ = false;
   bool reaped_ = false;
   int exit_code_ = 0;      // siginfo si_code (CLD_EXITED, CLD_KILLED, ...) once exited_

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include "planner/child_process.h"
+
+#include <pthread.h>
+#include <signal.h>
 #include "process_probe.h"
 
 namespace mg {
@@ -57,9 +60,37 @@ TEST(ChildProcess, WritingToAChildThatExitedIsNoSigpipe) {
   ChildProcess child("exit 0", "");
   std::string line;
   ASSERT_EQ(child.read_line(line, 5.0), IoStatus::kClosed);
-  IoStatus status = IoStatus::kDone;
-  for (int i = 0; i < 100 && status == IoStatus::kDone; ++i) status = child.write_line(std::string(4096, 'x'), 5.0);
-  EXPECT_EQ(status, IoStatus::kClosed);  // and this process is still alive to say so
+  ASSERT_EQ(child.exit_description(), "exited with status 0");  // its stdin is closed by now
+  EXPECT_EQ(child.write_line(std::string(4096, 'x'), 5.0), IoStatus::kClosed);  // and this process is alive
+  // Nothing of the write's SIGPIPE is left: the thread's mask is as it was, no signal pending.
+  sigset_t mask, pending;
+  pthread_sigmask(SIG_BLOCK, nullptr, &mask);
+  sigpending(&pending);
+  EXPECT_EQ(sigismember(&mask, SIGPIPE), 0);
+  EXPECT_EQ(sigismember(&pending, SIGPIPE), 0);
+}
+
+TEST(ChildProcess, ASigpipeAlreadyPendingForTheProgramStaysPending) {
+  sigset_t pipe, old;
+  sigemptyset(&pipe);
+  sigaddset(&pipe, SIGPIPE);
+  pthread_sigmask(SIG_BLOCK, &pipe, &old);
+  pthread_kill(pthread_self(), SIGPIPE);  // the program's own, blocked and pending
+  {
+    ChildProcess child("exit 0", "");
+    std::string line;
+    ASSERT_EQ(child.read_line(line, 5.0), IoStatus::kClosed);
+    ASSERT_EQ(child.exit_description(), "exited with status 0");  // its stdin is closed by now
+    EXPECT_EQ(child.write_line("x", 5.0), IoStatus::kClosed);
+  }
+  sigset_t mask, pending;
+  pthread_sigmask(SIG_BLOCK, nullptr, &mask);
+  sigpending(&pending);
+  EXPECT_EQ(sigismember(&mask, SIGPIPE), 1);
+  EXPECT_EQ(sigismember(&pending, SIGPIPE), 1);
+  const timespec now{0, 0};
+  EXPECT_EQ(sigtimedwait(&pipe, nullptr, &now), SIGPIPE);
+  pthread_sigmask(SIG_SETMASK, &old, nullptr);
 }
 
 TEST(ChildProcess, StderrGoesToTheLogFile) {

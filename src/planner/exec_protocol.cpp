@@ -57,10 +57,17 @@ std::vector<PathPoint> path_of(const json& command) {
   std::vector<PathPoint> out;
   out.reserve(path.size());
   for (std::size_t i = 0; i < path.size(); ++i) {
-    const std::string where = "command: path[" + std::to_string(i) + "]";
-    if (!path[i].is_array() || path[i].size() != 2) throw ProtocolError(where + " is not an [x_m, y_m] pair");
-    const PathPoint p{finite_number(path[i][0], where + "[0]"), finite_number(path[i][1], where + "[1]")};
-    if (!out.empty() && !(p.x_m > out.back().x_m)) throw ProtocolError(where + ": x does not increase");
+    // Named only when something is wrong: a reply is read on every planner cycle.
+    const auto where = [i] { return "command: path[" + std::to_string(i) + "]"; };
+    const json& point = path[i];
+    if (!point.is_array() || point.size() != 2) throw ProtocolError(where() + " is not an [x_m, y_m] pair");
+    const auto coordinate = [&](std::size_t k) {
+      const json& v = point[k];
+      if (v.is_number() && std::isfinite(v.get<double>())) return v.get<double>();
+      return finite_number(v, where() + "[" + std::to_string(k) + "]");  // throws, saying why
+    };
+    const PathPoint p{coordinate(0), coordinate(1)};
+    if (!out.empty() && !(p.x_m > out.back().x_m)) throw ProtocolError(where() + ": x does not increase");
     out.push_back(p);
   }
   return out;
@@ -183,7 +190,7 @@ PlannerIdentity parse_hello_reply(const std::string& line) {
 void parse_ready_reply(const std::string& line) { parse_reply(line, "ready"); }
 
 PlanOutput parse_command_reply(const std::string& line, const WorldSnapshot& world) {
-  const json j = parse_reply(line, "command");
+  json j = parse_reply(line, "command");
   PlanOutput out;
   out.path = path_of(j);
   out.target_speed_mps = finite_number(member(j, "target_speed_mps", "command"), "command: target_speed_mps");
@@ -202,7 +209,7 @@ PlanOutput parse_command_reply(const std::string& line, const WorldSnapshot& wor
       out.mode = mode->get<std::string>();
     if (const auto reason = annotation->find("reason"); reason != annotation->end() && reason->is_string())
       out.reason = reason->get<std::string>();
-    out.annotation = std::make_shared<const JsonAnnotation>(*annotation);
+    out.annotation = std::make_shared<const JsonAnnotation>(std::move(*annotation));
   }
   return out;
 }

@@ -29,6 +29,11 @@ ExecOptions options() {
   return shared().options;
 }
 
+double call_timeout_s() {  // read on every call: without copying the options
+  const std::lock_guard lock(shared().mutex);
+  return shared().options.timeout_s;
+}
+
 std::string seconds_text(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g s", s);
@@ -48,7 +53,7 @@ class ExecSession {
 
   // Starts the child and exchanges hello; ExecStartError otherwise.
   void start() {
-    const double timeout_s = options().timeout_s;
+    const double timeout_s = call_timeout_s();
     try {
       child_ = std::make_unique<ChildProcess>(name_.substr(kExecPlannerPrefix.size()), log_path_);
     } catch (const ChildStartError& e) {
@@ -81,7 +86,7 @@ class ExecSession {
 
   // One request and its reply. Any fault ends the child and throws PlannerFault.
   std::string call(const std::string& request, const char* what, double time_s) {
-    const double timeout_s = options().timeout_s;
+    const double timeout_s = call_timeout_s();
     std::string reply;
     IoStatus status = child_->write_line(request, timeout_s);
     if (status == IoStatus::kDone) status = child_->read_line(reply, timeout_s);

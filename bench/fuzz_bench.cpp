@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/collision.h"
 #include "core/rss.h"
 #include "core/scenario.h"
 #include "fuzz/properties.h"
@@ -14,17 +15,12 @@
 #include "fuzz/shrink.h"
 #include "rules/check.h"
 #include "sim/checked_run.h"
-#include "core/collision.h"
+#include "tests/support/std4_scenario.h"  // the benchmarks' scenario, shared with the tests
 
 namespace {
 
-const mg::Scenario& std4() {
-  static const mg::Scenario s = mg::load_scenario(std::string(MG_SOURCE_DIR) + "/corpus/scenarios/bench_std4.json");
-  return s;
-}
-
 void BM_Std4Scenario(benchmark::State& state, const std::string& planner) {
-  const mg::Scenario& s = std4();
+  const mg::Scenario& s = mg::test::std4();
   for (auto _ : state) {
     mg::CheckResult r = mg::check_scenario(s, planner);
     benchmark::DoNotOptimize(r.trace_digest);

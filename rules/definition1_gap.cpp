@@ -12,13 +12,11 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double speed_of(const ObservedState& s) { return s.vx_mps; }
-
 // X of the ego after tau under the bounded-rate model, expressed as the X at which the paper's
 // model ("X + v_e* tau") puts it there.
 double real_position_x_m(const ObservedTrace& t, const ObservedState& ego, double ve_star, double tau) {
   const Limits& lim = t.vehicles[0].limits;
-  return ego.x_m + speed_change_distance_m(std::max(speed_of(ego), 0.0), ve_star, lim.accel_max_mps2,
+  return ego.x_m + speed_change_distance_m(std::max(ego.vx_mps, 0.0), ve_star, lim.accel_max_mps2,
                                            lim.brake_min_mps2, tau) -
          ve_star * tau;
 }
@@ -26,7 +24,7 @@ double real_position_x_m(const ObservedTrace& t, const ObservedState& ego, doubl
 // The ego's speed after tau under the bounded-rate model.
 double real_speed_mps(const ObservedTrace& t, const ObservedState& ego, double ve_star, double tau) {
   const Limits& lim = t.vehicles[0].limits;
-  const double v = std::max(speed_of(ego), 0.0);
+  const double v = std::max(ego.vx_mps, 0.0);
   const double rate = ve_star >= v ? lim.accel_max_mps2 : lim.brake_min_mps2;
   return ve_star >= v ? std::min(ve_star, v + rate * tau) : std::max(ve_star, v - rate * tau);
 }
@@ -37,7 +35,7 @@ double real_speed_mps(const ObservedTrace& t, const ObservedState& ego, double v
 double ineq1_m(const ObservedTrace& t, double ego_x_m, const ObservedState& fo, int k, double ve, double rho,
                double v_ego) {
   const Limits& lim = t.vehicles[k].limits;
-  const double v_o = std::max(speed_of(fo), 0.0);
+  const double v_o = std::max(fo.vx_mps, 0.0);
   const double d_lon = rss_longitudinal_m({v_o + lim.accel_max_mps2 * rho / 2.0, std::max(v_ego, 0.0),
                                            t.vehicles[k].size.length_m, t.vehicles[0].size.length_m,
                                            t.params.rss.response_time_s, lim.accel_max_mps2, lim.brake_min_mps2,
@@ -50,7 +48,7 @@ double ineq1_m(const ObservedTrace& t, double ego_x_m, const ObservedState& fo, 
 // v_ego (as in ineq1_m).
 double ineq2_m(const ObservedTrace& t, double ego_x_m, const ObservedState& lo, int k, double ve, double tau,
                double v_ego) {
-  const double v_o = std::max(speed_of(lo), 0.0);
+  const double v_o = std::max(lo.vx_mps, 0.0);
   const Limits& ego = t.vehicles[0].limits;
   const double d_lon = rss_longitudinal_m({std::max(v_ego, 0.0), v_o, t.vehicles[0].size.length_m,
                                            t.vehicles[k].size.length_m, t.params.rss.response_time_s,

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <charconv>
-#include <system_error>
+#include <cmath>
+#include <optional>
 #include <string>
+#include <system_error>
 
 namespace mg {
 
@@ -13,6 +15,14 @@ inline std::string fixed_text(double v, int decimals) {
   const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
   if (r.ec != std::errc()) return "?";  // more decimals than any caller asks for
   return std::string(buf, r.ptr);
+}
+
+// A report's number: "n/a" where it is missing or not finite.
+inline std::string fixed_or_na(double v, int decimals = 2) {
+  return std::isfinite(v) ? fixed_text(v, decimals) : "n/a";
+}
+inline std::string fixed_or_na(const std::optional<double>& v, int decimals = 2) {
+  return v ? fixed_or_na(*v, decimals) : "n/a";
 }
 
 }  // namespace mg

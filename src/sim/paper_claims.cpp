@@ -11,9 +11,6 @@
 namespace mg {
 namespace {
 
-std::string fmt(double v, int decimals) { return std::isfinite(v) ? fixed_text(v, decimals) : "n/a"; }
-std::string fmt(const std::optional<double>& v, int decimals) { return v ? fmt(*v, decimals) : "n/a"; }
-
 constexpr double kAccelerationShownMps = 2.0;
 
 bool within(const std::optional<double>& v, double target, double tol) { return v && std::abs(*v - target) <= tol; }
@@ -25,7 +22,7 @@ const PaperRun& run_of(const std::vector<PaperRun>& runs, const std::string& pla
 }
 
 std::string pct_pair(const std::optional<double>& a, const std::optional<double>& b) {
-  return "non-coop " + fmt(a, 1) + " %, coop " + fmt(b, 1) + " %";
+  return "non-coop " + fixed_or_na(a, 1) + " %, coop " + fixed_or_na(b, 1) + " %";
 }
 
 PaperClaim claim(std::string what, std::string paper, std::string ours, bool reproduced, std::string criterion) {
@@ -33,7 +30,7 @@ PaperClaim claim(std::string what, std::string paper, std::string ours, bool rep
 }
 
 std::string range_text(double lo, double hi, int decimals, const char* unit) {
-  return fmt(lo, decimals) + " … " + fmt(hi, decimals) + " " + unit;
+  return fixed_or_na(lo, decimals) + " … " + fixed_or_na(hi, decimals) + " " + unit;
 }
 
 // Rows 1-9: the headline numbers and the TriPField-style baseline's behaviour (Fig. 4, 5).
@@ -54,16 +51,17 @@ void baseline_claims(const PaperMetrics& tf, const PaperMetrics& nc, const Paper
                  nc.lateral_reversals == 0 && co.lateral_reversals == 0, "0 reversals each"));
   out.push_back(claim("TriPField weaves before merging", "weaving", "lateral reversals " + std::to_string(tf.lateral_reversals),
                  tf.lateral_reversals > 0, "at least 1 reversal"));
-  out.push_back(claim("TriPField merge point", "X ≈ 226 m", "X = " + fmt(tf.merge_x_m, 1) + " m",
-                 within(tf.merge_x_m, 226.0, 25.0), "within 25 m (centre crossing the lane marking)"));
+  out.push_back(claim("TriPField merge point", "X ≈ 226 m", "X = " + fixed_or_na(tf.merge_x_m, 1) + " m",
+                      within(tf.merge_x_m, 226.0, 25.0), "within 25 m (centre crossing the lane marking)"));
   out.push_back(claim("TriPField sideslip", "oscillates within ±0.02 rad (7.6–9.7 s)",
                  range_text(tf.sideslip_min_rad, tf.sideslip_max_rad, 4, "rad"),
                  tf.sideslip_max_rad <= 0.02 && tf.sideslip_min_rad >= -0.02 && tf.lateral_reversals > 0,
                  "within ±0.02 rad and weaving"));
-  out.push_back(claim("TriPField: obstacle speed minimum", "below 10 m/s", fmt(tf.obstacle_speed_min_mps, 1) + " m/s",
-                 tf.obstacle_speed_min_mps < 10.0, "below 10 m/s"));
-  out.push_back(claim("TriPField: ego speed minimum", "below 9 m/s", fmt(tf.ego_speed_min_mps, 1) + " m/s",
-                 tf.ego_speed_min_mps < 9.0, "below 9 m/s"));
+  out.push_back(claim("TriPField: obstacle speed minimum", "below 10 m/s",
+                      fixed_or_na(tf.obstacle_speed_min_mps, 1) + " m/s", tf.obstacle_speed_min_mps < 10.0,
+                      "below 10 m/s"));
+  out.push_back(claim("TriPField: ego speed minimum", "below 9 m/s", fixed_or_na(tf.ego_speed_min_mps, 1) + " m/s",
+                      tf.ego_speed_min_mps < 9.0, "below 9 m/s"));
 }
 
 // Rows 10-15: the two RCPP variants (Fig. 5 a, c, d).
@@ -80,16 +78,20 @@ void rcpp_claims(const Scenario& s, const PaperRun& nc_run, const PaperRun& co_r
   // "Briefly accelerates": the peak must be reached by accelerating, not by starting there.
   const double nc_start_mps = nc_run.trace.steps.empty() ? 0.0 : nc_run.trace.steps.front().ego.vx_mps;
   out.push_back(claim("Non-coop RCPP ego speed", "briefly 30 m/s, then 20 m/s",
-                 range_text(nc.ego_speed_min_mps, nc.ego_speed_max_mps, 1, "m/s") + " (start " + fmt(nc_start_mps, 1) + ")",
-                 nc.ego_speed_max_mps > 27.0 && nc.ego_speed_max_mps >= nc_start_mps + kAccelerationShownMps,
-                 "peak above 27 m/s, at least 2 m/s above its start speed"));
+                      range_text(nc.ego_speed_min_mps, nc.ego_speed_max_mps, 1, "m/s") + " (start " +
+                          fixed_or_na(nc_start_mps, 1) + ")",
+                      nc.ego_speed_max_mps > 27.0 && nc.ego_speed_max_mps >= nc_start_mps + kAccelerationShownMps,
+                      "peak above 27 m/s, at least 2 m/s above its start speed"));
   out.push_back(claim("Non-coop RCPP: obstacle slows gradually", "to about 16 m/s",
-                 "minimum " + fmt(nc.obstacle_speed_min_mps, 1) + " m/s, first braking at " + fmt(nc_brake_s, 1) + " s",
-                 nc_brake_s.has_value() && within(nc.obstacle_speed_min_mps, 16.0, 2.0),
-                 "brakes, minimum within 2 m/s of 16"));
+                      "minimum " + fixed_or_na(nc.obstacle_speed_min_mps, 1) + " m/s, first braking at " +
+                          fixed_or_na(nc_brake_s, 1) + " s",
+                      nc_brake_s.has_value() && within(nc.obstacle_speed_min_mps, 16.0, 2.0),
+                      "brakes, minimum within 2 m/s of 16"));
   const double nc_peak = std::max(std::abs(nc.sideslip_min_rad), std::abs(nc.sideslip_max_rad));
-  out.push_back(claim("Coop RCPP sideslip peak", "0.024 rad at 7.1 s", fmt(co_peak, 4) + " rad at " + fmt(co_peak_t, 1) + " s",
-                 std::abs(co_peak) <= 0.03 && std::abs(co_peak) > nc_peak, "larger than non-coop's peak, at most 0.03 rad"));
+  out.push_back(claim("Coop RCPP sideslip peak", "0.024 rad at 7.1 s",
+                      fixed_or_na(co_peak, 4) + " rad at " + fixed_or_na(co_peak_t, 1) + " s",
+                      std::abs(co_peak) <= 0.03 && std::abs(co_peak) > nc_peak,
+                      "larger than non-coop's peak, at most 0.03 rad"));
   out.push_back(claim("Coop RCPP ego speed", "steady", range_text(co.ego_speed_min_mps, co.ego_speed_max_mps, 1, "m/s"),
                  co.ego_speed_max_mps - co.ego_speed_min_mps < 2.0, "range below 2 m/s"));
   // Cooperation really happened: a request, an acceptance, and the obstacle braking after the
@@ -98,12 +100,13 @@ void rcpp_claims(const Scenario& s, const PaperRun& nc_run, const PaperRun& co_r
                             co.merge_start_time_s && *co_brake_s <= *co.merge_start_time_s &&
                             (!nc_brake_s || *co_brake_s < *nc_brake_s);
   out.push_back(claim("Coop RCPP: obstacle slows early, after the message", "early deceleration",
-                 "request delivered at " + fmt(co_request_s, 2) + " s, accepted at " + fmt(co_accept_s, 2) +
-                     " s, obstacle brakes from " + fmt(co_brake_s, 2) + " s, ego leaves its lane at " +
-                     fmt(co.merge_start_time_s, 2) + " s, obstacle minimum " + fmt(co.obstacle_speed_min_mps, 1) + " m/s",
-                 brakes_early,
-                 "request and acceptance; the obstacle brakes after the request, before the ego moves laterally, "
-                 "earlier than in the non-coop run"));
+                      "request delivered at " + fixed_or_na(co_request_s, 2) + " s, accepted at " +
+                          fixed_or_na(co_accept_s, 2) + " s, obstacle brakes from " + fixed_or_na(co_brake_s, 2) +
+                          " s, ego leaves its lane at " + fixed_or_na(co.merge_start_time_s, 2) +
+                          " s, obstacle minimum " + fixed_or_na(co.obstacle_speed_min_mps, 1) + " m/s",
+                      brakes_early,
+                      "request and acceptance; the obstacle brakes after the request, before the ego moves laterally, "
+                      "earlier than in the non-coop run"));
 }
 
 }  // namespace
@@ -143,8 +146,8 @@ std::string def1_merge_side(const Trace& t, int vehicle_id) {
     if (!d_of || d_of->mode != DecisionMode::kDef1Merge || !d_of->gap) continue;
     const RcppDecision& d = *d_of;
     const char* side = d.gap->leader_id == vehicle_id ? "behind" : d.gap->follower_id == vehicle_id ? "ahead of" : "away from";
-    return std::string("merged ") + side + " the obstacle (Def. 1 at t = " + fmt(d.time_s, 1) + " s, v_e* = " +
-           fmt(d.ve_star_mps, 1) + " m/s, rho = " + fmt(d.merge_duration_s, 1) + " s)";
+    return std::string("merged ") + side + " the obstacle (Def. 1 at t = " + fixed_or_na(d.time_s, 1) +
+           " s, v_e* = " + fixed_or_na(d.ve_star_mps, 1) + " m/s, rho = " + fixed_or_na(d.merge_duration_s, 1) + " s)";
   }
   return "";
 }

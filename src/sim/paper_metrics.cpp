@@ -16,8 +16,6 @@ std::optional<double> first_time(const Trace& t, EventKind k) {
   return std::nullopt;
 }
 
-nlohmann::json or_null(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
-
 nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 }  // namespace

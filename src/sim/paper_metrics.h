@@ -46,4 +46,9 @@ nlohmann::json paper_metrics_to_json(const PaperMetrics& m);
 // 100 (baseline - value) / baseline: how much smaller value is than baseline, in percent.
 std::optional<double> reduction_pct(const std::optional<double>& baseline, const std::optional<double>& value);
 
+// A report's optional number in JSON: the number, or null.
+inline nlohmann::json or_null(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
 }  // namespace mg

@@ -59,15 +59,6 @@ const PaperRun& run_of(const PaperExperiment& e, const std::string& planner) {
   throw std::logic_error("no run of planner " + planner);
 }
 
-std::string fmt(double v, int decimals = 2) {
-  if (!std::isfinite(v)) return "n/a";
-  return fixed_text(v, decimals);
-}
-
-std::string fmt(const std::optional<double>& v, int decimals = 2) { return v ? fmt(*v, decimals) : "n/a"; }
-
-nlohmann::json or_null(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
-
 // Time series of one planner's run.
 std::vector<double> series(const Trace& t, double (*f)(const TraceStep&)) {
   std::vector<double> out;
@@ -361,7 +352,8 @@ Spread spread_of(std::vector<double> v) {
 
 std::string spread_text(const Spread& sp) {
   if (!sp.median) return "n/a";
-  return fmt(*sp.median, 1) + " % (" + fmt(*sp.lo, 1) + " … " + fmt(*sp.hi, 1) + ", n = " + std::to_string(sp.n) + ")";
+  return fixed_or_na(*sp.median, 1) + " % (" + fixed_or_na(*sp.lo, 1) + " … " + fixed_or_na(*sp.hi, 1) +
+         ", n = " + std::to_string(sp.n) + ")";
 }
 
 // The abstract's two headline numbers: on the chosen scenario and over the sensitivity grid.
@@ -384,7 +376,7 @@ std::string headline_spread_markdown(const PaperExperiment& e) {
         const auto x = time ? reduction_pct(b.merge_time_s, v.merge_time_s) : reduction_pct(b.path_length_m, v.path_length_m);
         if (x) grid.push_back(*x);
       }
-      md << " | " << fmt(here, 1) << " % | " << spread_text(spread_of(grid));
+      md << " | " << fixed_or_na(here, 1) << " % | " << spread_text(spread_of(grid));
     }
     md << " |\n";
   }
@@ -400,9 +392,13 @@ std::string variant_markdown(const PaperExperiment& e) {
   md << "\n## Variant, not the defaults: RCPP keeping its lane at the cruise speed\n\n"
      << "**Changed planner behaviour, shown only here** (src/sim/paper_variant.h; the fuzzer, `check` and the table "
         "above use the planners unchanged). After the merge both RCPP variants keep their lane at the ego's initial "
-        "speed (" << fmt(e.variant_scenario.ego.speed_mps, 1) << " m/s) instead of the speed limit ("
-     << fmt(e.variant_scenario.road.speed_limit_mps, 2) << " m/s), as the TriPField-style baseline does; the scenario "
-        "is ours with the obstacle only (" << e.variant_scenario.vehicles.size() << " main-lane vehicle). "
+        "speed ("
+     << fixed_or_na(e.variant_scenario.ego.speed_mps, 1) << " m/s) instead of the speed limit ("
+     << fixed_or_na(e.variant_scenario.road.speed_limit_mps, 2)
+     << " m/s), as the TriPField-style baseline does; the scenario "
+        "is ours with the obstacle only ("
+     << e.variant_scenario.vehicles.size()
+     << " main-lane vehicle). "
         "It shows what the rows that need a lead vehicle, or do not reproduce, would need from the planner.\n\n"
      << "| What | Criterion | Defaults, this scenario | Variant | Variant: ours |\n|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < variant.size(); ++i)
@@ -424,13 +420,14 @@ std::string sensitivity_markdown(const PaperExperiment& e) {
         "collision (TF/RCPP/coop) | rows |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const SensitivityCase& c : e.sensitivity) {
     const PaperMetrics &b = c.metrics[0], &r = c.metrics[1], &k = c.metrics[2];
-    md << "| " << fmt(c.dx_m, 0) << " | " << fmt(c.dv_mps, 0) << " | " << fmt(b.merge_time_s) << " | "
-       << fmt(r.merge_time_s) << " | " << fmt(k.merge_time_s) << " | "
-       << fmt(reduction_pct(b.merge_time_s, r.merge_time_s), 1) << " / "
-       << fmt(reduction_pct(b.merge_time_s, k.merge_time_s), 1) << " | "
-       << fmt(reduction_pct(b.path_length_m, r.path_length_m), 1) << " / "
-       << fmt(reduction_pct(b.path_length_m, k.path_length_m), 1) << " | " << (b.collision ? "yes" : "no") << "/"
-       << (r.collision ? "yes" : "no") << "/" << (k.collision ? "yes" : "no") << " | " << c.claims_reproduced << " |\n";
+    md << "| " << fixed_or_na(c.dx_m, 0) << " | " << fixed_or_na(c.dv_mps, 0) << " | " << fixed_or_na(b.merge_time_s)
+       << " | " << fixed_or_na(r.merge_time_s) << " | " << fixed_or_na(k.merge_time_s) << " | "
+       << fixed_or_na(reduction_pct(b.merge_time_s, r.merge_time_s), 1) << " / "
+       << fixed_or_na(reduction_pct(b.merge_time_s, k.merge_time_s), 1) << " | "
+       << fixed_or_na(reduction_pct(b.path_length_m, r.path_length_m), 1) << " / "
+       << fixed_or_na(reduction_pct(b.path_length_m, k.path_length_m), 1) << " | " << (b.collision ? "yes" : "no")
+       << "/" << (r.collision ? "yes" : "no") << "/" << (k.collision ? "yes" : "no") << " | " << c.claims_reproduced
+       << " |\n";
   }
   return md.str();
 }
@@ -446,7 +443,7 @@ std::string right_of_way_markdown(const PaperExperiment& e) {
     md << "- **" << r.planner << "**:";
     if (r.right_of_way.empty()) md << " not computed";
     for (const auto& [t, holder] : r.right_of_way)
-      md << " from " << fmt(t, 2) << " s " << holder_name(holder) << ";";
+      md << " from " << fixed_or_na(t, 2) << " s " << holder_name(holder) << ";";
     md << "\n";
   }
   return md.str();
@@ -495,7 +492,7 @@ std::string crossing_sides_markdown(const PaperExperiment& e) {
     for (const TraceStep& st : r.trace.steps)
       if (st.time_s >= *crossing - 1e-9) {
         const double ahead_m = st.ego.x_m - st.others[0].x_m;
-        md << (ahead_m >= 0.0 ? "ahead by " : "behind by ") << fmt(std::abs(ahead_m), 1) << " m;";
+        md << (ahead_m >= 0.0 ? "ahead by " : "behind by ") << fixed_or_na(std::abs(ahead_m), 1) << " m;";
         break;
       }
   }
@@ -516,21 +513,22 @@ std::string paper_report_markdown(const PaperExperiment& e) {
      << "**Scenario.** The paper gives no numbers, only \"initial positions and starting velocities of the ego and "
         "obstacle vehicles relatively close to each other\". Ours (`reproduce-paper --search` found it; "
         "docs/paper_reproduction.md): the ego starts in the on-ramp lane at X = "
-     << fmt(s.ego.x_m, 1) << " m, " << fmt(s.ego.speed_mps, 1) << " m/s";
+     << fixed_or_na(s.ego.x_m, 1) << " m, " << fixed_or_na(s.ego.speed_mps, 1) << " m/s";
   if (!s.vehicles.empty()) {
     const MainVehicle& o = s.vehicles[0];
-    md << "; the obstacle vehicle starts on the main lane at X = " << fmt(o.x_m, 1) << " m, " << fmt(o.speed_mps, 1)
-       << " m/s, behaviour `" << to_string(o.behaviour.type) << "`, V2V " << (o.v2v.capable ? "capable" : "not capable")
-       << " (latency " << fmt(o.v2v.latency_s, 2) << " s), a_accel^max " << fmt(o.limits.accel_max_mps2, 1)
-       << " m/s², a_brake^min " << fmt(o.limits.brake_min_mps2, 1) << " m/s², IDM headway "
-       << fmt(o.behaviour.time_headway_s, 1) << " s";
+    md << "; the obstacle vehicle starts on the main lane at X = " << fixed_or_na(o.x_m, 1) << " m, "
+       << fixed_or_na(o.speed_mps, 1) << " m/s, behaviour `" << to_string(o.behaviour.type) << "`, V2V "
+       << (o.v2v.capable ? "capable" : "not capable") << " (latency " << fixed_or_na(o.v2v.latency_s, 2)
+       << " s), a_accel^max " << fixed_or_na(o.limits.accel_max_mps2, 1) << " m/s², a_brake^min "
+       << fixed_or_na(o.limits.brake_min_mps2, 1) << " m/s², IDM headway " << fixed_or_na(o.behaviour.time_headway_s, 1)
+       << " s";
     for (std::size_t i = 1; i < s.vehicles.size(); ++i)
-      md << "; main-lane vehicle " << s.vehicles[i].id << " at X = " << fmt(s.vehicles[i].x_m, 1) << " m, "
-         << fmt(s.vehicles[i].speed_mps, 1) << " m/s, `" << to_string(s.vehicles[i].behaviour.type) << "`";
-    md << "; ego V2V latency " << fmt(s.ego.v2v.latency_s, 2) << " s";
+      md << "; main-lane vehicle " << s.vehicles[i].id << " at X = " << fixed_or_na(s.vehicles[i].x_m, 1) << " m, "
+         << fixed_or_na(s.vehicles[i].speed_mps, 1) << " m/s, `" << to_string(s.vehicles[i].behaviour.type) << "`";
+    md << "; ego V2V latency " << fixed_or_na(s.ego.v2v.latency_s, 2) << " s";
   }
-  md << "; the on-ramp ends at X = " << fmt(s.road.side_lane_end_x_m, 0) << " m; lane width "
-     << fmt(s.road.lane_width_m, 1) << " m; step " << s.params.sim.step_s << " s, planner cycle "
+  md << "; the on-ramp ends at X = " << fixed_or_na(s.road.side_lane_end_x_m, 0) << " m; lane width "
+     << fixed_or_na(s.road.lane_width_m, 1) << " m; step " << s.params.sim.step_s << " s, planner cycle "
      << s.params.sim.planner_cycle_s << " s, horizon " << s.params.sim.horizon_s << " s.\n\n"
      << "**Definitions.** *Merge time*: from the moment the ego first leaves the on-ramp lane centre "
         "(|Y − Y_side| > 0.1 m) to merge completion (centre within 0.2 m of the main-lane centre and "
@@ -562,15 +560,20 @@ std::string paper_report_markdown(const PaperExperiment& e) {
   };
   row("merged", [](const PaperMetrics& m) { return std::string(m.merged ? "yes" : "no"); });
   row("collision", [](const PaperMetrics& m) { return std::string(m.collision ? "yes" : "no"); });
-  row("merge start [s]", [](const PaperMetrics& m) { return fmt(m.merge_start_time_s); });
-  row("merge time [s]", [](const PaperMetrics& m) { return fmt(m.merge_time_s); });
-  row("path length [m]", [](const PaperMetrics& m) { return fmt(m.path_length_m, 1); });
-  row("merge point X [m]", [](const PaperMetrics& m) { return fmt(m.merge_x_m, 1); });
+  row("merge start [s]", [](const PaperMetrics& m) { return fixed_or_na(m.merge_start_time_s); });
+  row("merge time [s]", [](const PaperMetrics& m) { return fixed_or_na(m.merge_time_s); });
+  row("path length [m]", [](const PaperMetrics& m) { return fixed_or_na(m.path_length_m, 1); });
+  row("merge point X [m]", [](const PaperMetrics& m) { return fixed_or_na(m.merge_x_m, 1); });
   row("lateral reversals", [](const PaperMetrics& m) { return std::to_string(m.lateral_reversals); });
-  row("sideslip min/max [rad]", [](const PaperMetrics& m) { return fmt(m.sideslip_min_rad, 4) + " / " + fmt(m.sideslip_max_rad, 4); });
-  row("yaw min/max [rad]", [](const PaperMetrics& m) { return fmt(m.yaw_min_rad, 4) + " / " + fmt(m.yaw_max_rad, 4); });
-  row("ego speed min/max [m/s]", [](const PaperMetrics& m) { return fmt(m.ego_speed_min_mps, 1) + " / " + fmt(m.ego_speed_max_mps, 1); });
-  row("obstacle speed min [m/s]", [](const PaperMetrics& m) { return fmt(m.obstacle_speed_min_mps, 1); });
+  row("sideslip min/max [rad]", [](const PaperMetrics& m) {
+    return fixed_or_na(m.sideslip_min_rad, 4) + " / " + fixed_or_na(m.sideslip_max_rad, 4);
+  });
+  row("yaw min/max [rad]",
+      [](const PaperMetrics& m) { return fixed_or_na(m.yaw_min_rad, 4) + " / " + fixed_or_na(m.yaw_max_rad, 4); });
+  row("ego speed min/max [m/s]", [](const PaperMetrics& m) {
+    return fixed_or_na(m.ego_speed_min_mps, 1) + " / " + fixed_or_na(m.ego_speed_max_mps, 1);
+  });
+  row("obstacle speed min [m/s]", [](const PaperMetrics& m) { return fixed_or_na(m.obstacle_speed_min_mps, 1); });
   md << headline_spread_markdown(e) << variant_markdown(e) << sensitivity_markdown(e) << right_of_way_markdown(e);
   md << figures_markdown() << "\nAll numbers: [metrics.json](metrics.json).\n\n## Planner decisions\n\n";
   for (const PaperRun& r : e.runs) {
@@ -582,7 +585,7 @@ std::string paper_report_markdown(const PaperExperiment& e) {
           md << " …";
           break;
         }
-        md << " t = " << fmt(ev.time_s, 1) << " s " << to_string(ev.kind) << " (" << ev.detail << ");";
+        md << " t = " << fixed_or_na(ev.time_s, 1) << " s " << to_string(ev.kind) << " (" << ev.detail << ");";
       }
     md << "\n";
   }

@@ -1,16 +1,16 @@
 // `mergeguard audit` (issue #17; src/cli/cmd_audit.cpp): exit 0 when every merge holds, 1 when
 // one is violated, 2 for bad input with one line naming the file and element, nothing on stdout
 // and nothing written; the index and one report directory per merge; --json, --vehicle, --params.
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include "cli_runner.h"
+#include "tests/support/scratch_files.h"
 
 namespace mg::test {
 namespace {
@@ -20,16 +20,8 @@ namespace fs = std::filesystem;
 const fs::path kHostile = fs::path(MG_SOURCE_DIR) / "tests" / "hostile" / "recordings";
 const fs::path kShared = fs::path(MG_SOURCE_DIR) / "tests" / "data" / "commonroad";  // the public recordings
 
-fs::path scratch(const std::string& tag) {
-  static int counter = 0;
-  const auto dir = fs::temp_directory_path() / ("mg_audit_" + std::to_string(::getpid()) + "_" + tag + "_" + std::to_string(counter++));
-  fs::remove_all(dir);
-  return dir;
-}
-
-
 TEST(AuditCommand, WritesAnIndexAndOneReportPerMerge) {
-  const fs::path out = scratch("us101_4");
+  const fs::path out = unused_path("audit_us101_4");
   const CliResult r = run_cli({"audit", (kShared / "USA_US101-4_1_T-1.xml").string(), "--report", out.string()});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("vehicle 389 into the ramp at t = 4.1 s: holds, liable none"), std::string::npos) << r.out;
@@ -69,7 +61,7 @@ TEST(AuditCommand, StatesGivenAsSetsAreReadAsTheirCentresAndSaidSo) {
 }
 
 TEST(AuditCommand, TheProfileComesFromParams) {
-  const fs::path dir = scratch("params");
+  const fs::path dir = unused_path("audit_params");
   fs::create_directories(dir);
   std::ofstream(dir / "p.json") << R"({"name": "slow drivers", "rss": {"response_time_s": 2.0}})";
   const CliResult r = run_cli({"audit", (kHostile / "valid.xml").string(), "--params", (dir / "p.json").string(), "--json"});
@@ -90,7 +82,7 @@ TEST(AuditCommand, RefusesEveryHostileRecordingInOneLineWritingNothing) {
     const std::string name = entry.path().filename().string();
     if (entry.path().extension() != ".xml" || name == "valid.xml" || name == "set_valued.xml") continue;
     ++hostile;
-    const fs::path out = scratch("hostile");
+    const fs::path out = unused_path("audit_hostile");
     const CliResult r = run_cli({"audit", entry.path().string(), "--report", out.string()});
     EXPECT_EQ(r.exit_code, 2) << name;
     EXPECT_EQ(r.out, "") << name;
@@ -121,7 +113,7 @@ namespace {
 
 // Each merge's trace is written beside its report, and check-trace judges it as the audit did.
 TEST(AuditCommand, CheckTraceJudgesAMergesTraceAsTheAuditDid) {
-  const fs::path out = scratch("us101_3");
+  const fs::path out = unused_path("audit_us101_3");
   const CliResult a = run_cli({"audit", (kShared / "USA_US101-3_3_T-1.xml").string(), "--report", out.string()});
   ASSERT_EQ(a.exit_code, 1) << a.err;
   const CliResult c = run_cli({"check-trace", (out / "01-vehicle-394" / "trace.json").string(), "--json"});

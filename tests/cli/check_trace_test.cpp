@@ -2,6 +2,7 @@
 // observable trace prints and writes exactly what `check` did for the run it was saved from, and
 // every hostile trace (tests/hostile/traces/) is refused with exit 2, one line on stderr naming the
 // file and the JSON path, nothing on stdout and nothing written.
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -9,9 +10,8 @@
 #include <set>
 #include <sstream>
 
-#include <gtest/gtest.h>
-
 #include "cli_runner.h"
+#include "tests/support/scratch_files.h"
 
 namespace mg::test {
 namespace {
@@ -21,25 +21,9 @@ namespace fs = std::filesystem;
 const fs::path kTraces = fs::path(MG_SOURCE_DIR) / "tests" / "hostile" / "traces";
 const fs::path kScenarios = fs::path(MG_SOURCE_DIR) / "corpus" / "scenarios";
 
-fs::path scratch(const std::string& tag) {
-  static int counter = 0;
-  const auto dir = fs::temp_directory_path() /
-                   ("mg_check_trace_" + std::to_string(::getpid()) + "_" + tag + "_" + std::to_string(counter++));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
-void expect_clean_rejection(const CliResult& r, const std::string& what, const std::string& file,
+void expect_trace_rejection(const CliResult& r, const std::string& what, const std::string& file,
                             const std::string& expected) {
   EXPECT_EQ(r.exit_code, 2) << what << ": " << r.err;
   ASSERT_FALSE(r.err.empty()) << what;
@@ -79,12 +63,12 @@ const std::vector<std::pair<std::string, std::string>> kHostileTraces = {
 TEST(CheckTrace, EveryHostileTraceIsRefusedWithTheFileAndTheJsonPathAndNothingWritten) {
   for (const auto& [file, expected] : kHostileTraces) {
     const std::string path = (kTraces / file).string();
-    const fs::path dir = scratch("hostile");
+    const fs::path dir = fresh_dir("check_trace_hostile");
     const fs::path report = dir / "report";  // does not exist: must not be created
-    expect_clean_rejection(run_cli({"check-trace", path, "--report", report.string()}), "check-trace --report " + file,
+    expect_trace_rejection(run_cli({"check-trace", path, "--report", report.string()}), "check-trace --report " + file,
                            path, expected);
     EXPECT_FALSE(fs::exists(report)) << file << ": the report directory was created";
-    expect_clean_rejection(run_cli({"check-trace", path, "--json"}), "check-trace --json " + file, path, expected);
+    expect_trace_rejection(run_cli({"check-trace", path, "--json"}), "check-trace --json " + file, path, expected);
     fs::remove_all(dir);
   }
 }
@@ -108,7 +92,7 @@ TEST(CheckTrace, TheControlTraceIsJudged) {
 }
 
 TEST(CheckTrace, AMissingTraceOrABadParamsFileIsBadInput) {
-  const fs::path dir = scratch("params");
+  const fs::path dir = fresh_dir("check_trace_params");
   const std::string valid = (kTraces / "valid.json").string();
   const std::string missing = (dir / "missing.json").string();
   const CliResult no_file = run_cli({"check-trace", missing});
@@ -127,7 +111,7 @@ TEST(CheckTrace, AMissingTraceOrABadParamsFileIsBadInput) {
     const fs::path params = dir / "params.json";
     write(params, text);
     const fs::path report = dir / "report";
-    expect_clean_rejection(run_cli({"check-trace", valid, "--params", params.string(), "--report", report.string()}),
+    expect_trace_rejection(run_cli({"check-trace", valid, "--params", params.string(), "--report", report.string()}),
                            "--params " + text, params.string(), expected);
     EXPECT_FALSE(fs::exists(report)) << text;
   }
@@ -135,7 +119,7 @@ TEST(CheckTrace, AMissingTraceOrABadParamsFileIsBadInput) {
 }
 
 TEST(CheckTrace, UnwritableReportDirectoryIsRefusedBeforeJudging) {
-  const fs::path dir = scratch("unwritable");
+  const fs::path dir = fresh_dir("check_trace_unwritable");
   const fs::path file = dir / "a_file";
   write(file, "not a directory\n");
   const CliResult r = run_cli({"check-trace", (kTraces / "valid.json").string(), "--report", file.string()});
@@ -148,7 +132,7 @@ TEST(CheckTrace, UnwritableReportDirectoryIsRefusedBeforeJudging) {
 // --params: the trace's own params object as a params file changes nothing; planner and sim parts
 // are validated and ignored; a stricter rule parameter changes the judgement.
 TEST(CheckTrace, ParamsFileReplacesTheTracesRuleParameters) {
-  const fs::path dir = scratch("params_effect");
+  const fs::path dir = fresh_dir("check_trace_params_effect");
   const fs::path trace = dir / "trace.json";
   const CliResult saved =
       run_cli({"check", (kScenarios / "paper_merge.json").string(), "--save-trace", trace.string(), "--json"});
@@ -180,7 +164,7 @@ TEST(CheckTrace, JudgingTheSavedTraceGivesExactlyWhatCheckGave) {
   for (const std::string planner : {"rcpp", "tripfield", "rcpp-coop"}) {
     for (const std::string& name : scenarios) {
       const std::string what = name + " with " + planner;
-      const fs::path dir = scratch("same");
+      const fs::path dir = fresh_dir("check_trace_same");
       const fs::path trace = dir / "trace.json";
       const std::string scenario = (kScenarios / name).string();
 

@@ -18,15 +18,7 @@ std::string quote(const std::string& s) {
   return q + "'";
 }
 
-
 }  // namespace
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 CliResult run_cli(const std::vector<std::string>& args, const std::string& stdin_text) {
   const char* cli = std::getenv("MG_CLI");

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/scratch_files.h"  // slurp, for the CLI tests
+
 namespace mg::test {
 
 struct CliResult {
@@ -16,8 +18,5 @@ struct CliResult {
 
 // args are passed through /bin/sh quoted; stdin_text is fed on standard input.
 CliResult run_cli(const std::vector<std::string>& args, const std::string& stdin_text = "");
-
-// The whole content of a file (empty when it cannot be read).
-std::string slurp(const std::filesystem::path& p);
 
 }  // namespace mg::test

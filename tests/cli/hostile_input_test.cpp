@@ -1,13 +1,14 @@
 // Hostile input suite (issue #7 item 2): every file of tests/hostile/ through every command that
 // reads it. Each must give exit 2 within the time bound (run_cli kills at 120 s -> 124), one line
 // on stderr naming the file and a JSON path, nothing on stdout and no output file written.
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include <gtest/gtest.h>
-
 #include "cli_runner.h"
+#include "tests/support/scratch_files.h"
 
 namespace mg::test {
 namespace {
@@ -45,16 +46,6 @@ const std::vector<Expectation> kFiles = {
     {"future_version_case.json", ": /"},
 };
 
-// A fresh, empty scratch directory per call.
-fs::path scratch(const std::string& tag) {
-  static int counter = 0;
-  const auto dir = fs::temp_directory_path() / ("mg_hostile_" + std::to_string(::getpid()) + "_" + tag + "_" +
-                                                std::to_string(counter++));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 bool dir_is_empty(const fs::path& dir) { return !fs::exists(dir) || fs::is_empty(dir); }
 
 void expect_clean_rejection(const CliResult& r, const std::string& what, const std::string& file,
@@ -67,18 +58,11 @@ void expect_clean_rejection(const CliResult& r, const std::string& what, const s
   EXPECT_TRUE(r.out.empty()) << what << " " << file << ": nothing on stdout on error";
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 TEST(HostileInput, PlanAndCheckRejectEveryFileCleanly) {
   for (const auto& e : kFiles) {
     const std::string path = (kHostileDir / e.file).string();
     expect_clean_rejection(run_cli({"plan", path}), "plan", e.file, e.scenario_error);
-    const auto report = scratch("check");
+    const auto report = fresh_dir("hostile_check");
     expect_clean_rejection(run_cli({"check", path, "--report", report.string()}), "check", e.file, e.scenario_error);
     EXPECT_TRUE(dir_is_empty(report)) << "check wrote output for " << e.file;
     fs::remove_all(report);
@@ -94,8 +78,8 @@ TEST(HostileInput, ReplayRejectsEveryFileCleanly) {
 
 TEST(HostileInput, FuzzRefusesACorpusHoldingAHostileFile) {
   for (const auto& e : kFiles) {
-    const auto corpus = scratch("corpus");
-    const auto report = scratch("report");
+    const auto corpus = fresh_dir("hostile_corpus");
+    const auto report = fresh_dir("hostile_report");
     fs::copy_file(kHostileDir / e.file, corpus / e.file);
     const auto r = run_cli({"fuzz", "--runs", "1", "--corpus", corpus.string(), "--report", report.string()});
     expect_clean_rejection(r, "fuzz --corpus", e.file, ": ");
@@ -116,7 +100,7 @@ TEST(HostileInput, RssRejectsEveryFileOnStdin) {
 }
 
 TEST(HostileInput, MillionVehiclesIsRejectedQuickly) {
-  const auto dir = scratch("million");
+  const auto dir = fresh_dir("hostile_million");
   const auto path = dir / "million_vehicles.json";
   {
     std::ofstream out(path);

@@ -1,21 +1,22 @@
 // Every command that writes checks its output paths before any work (issue 20): a path that
 // cannot be created (/proc/x), a file where a directory is expected, or a directory below a file
 // gives exit 2 and one line naming the option and the path, nothing on stdout, nothing written.
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include <gtest/gtest.h>
-
 #include "cli_runner.h"
+#include "tests/support/scratch_files.h"
+#include "tests/support/std4_scenario.h"
 
 namespace mg::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScenario = (fs::path(MG_SOURCE_DIR) / "corpus" / "scenarios" / "bench_std4.json").string();
+const std::string kScenario = kStd4Path;
 
 struct BadPath {
   std::string path;
@@ -31,14 +32,6 @@ std::vector<BadPath> bad_paths(const fs::path& scratch) {
           {(file / "below").string(), "cannot create the directory"}};
 }
 
-fs::path scratch_dir() {
-  static int counter = 0;
-  const auto dir = fs::temp_directory_path() / ("mg_output_path_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 void expect_refused(const std::vector<std::string>& args, const std::string& option, const BadPath& bad) {
   const CliResult r = run_cli(args);
   const std::string what = args[0] + " " + option + " " + bad.path;
@@ -51,13 +44,13 @@ void expect_refused(const std::vector<std::string>& args, const std::string& opt
 }
 
 TEST(OutputPaths, CheckRefusesAnUnwritableReportDirectoryBeforeSimulating) {
-  const auto dir = scratch_dir();
+  const auto dir = fresh_dir("output_path");
   for (const BadPath& bad : bad_paths(dir)) expect_refused({"check", kScenario, "--report", bad.path}, "--report", bad);
   fs::remove_all(dir);
 }
 
 TEST(OutputPaths, FuzzRefusesAnUnwritableCorpusOrReportBeforeTheCampaign) {
-  const auto dir = scratch_dir();
+  const auto dir = fresh_dir("output_path");
   for (const BadPath& bad : bad_paths(dir)) {
     expect_refused({"fuzz", "--runs", "1", "--corpus", bad.path}, "--corpus", bad);
     expect_refused({"fuzz", "--runs", "1", "--corpus", "", "--report", bad.path}, "--report", bad);
@@ -67,13 +60,13 @@ TEST(OutputPaths, FuzzRefusesAnUnwritableCorpusOrReportBeforeTheCampaign) {
 }
 
 TEST(OutputPaths, ReproducePaperRefusesAnUnwritableOutputDirectory) {
-  const auto dir = scratch_dir();
+  const auto dir = fresh_dir("output_path");
   for (const BadPath& bad : bad_paths(dir)) expect_refused({"reproduce-paper", "--out", bad.path}, "--out", bad);
   fs::remove_all(dir);
 }
 
 TEST(OutputPaths, CorpusAndReportMergeRefuseAnUnwritableTarget) {
-  const auto dir = scratch_dir();
+  const auto dir = fresh_dir("output_path");
   const std::string cases = (fs::path(MG_SOURCE_DIR) / "corpus" / "cases").string();
   const fs::path summary = dir / "report.json";
   std::ofstream(summary) << "{}";
@@ -86,7 +79,7 @@ TEST(OutputPaths, CorpusAndReportMergeRefuseAnUnwritableTarget) {
 
 TEST(OutputPaths, ReplayUpdateRefusesACaseInAReadOnlyDirectory) {
   if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only directories";
-  const auto dir = scratch_dir();
+  const auto dir = fresh_dir("output_path");
   const fs::path cases = fs::path(MG_SOURCE_DIR) / "corpus" / "cases";
   const fs::path any_case = fs::directory_iterator(cases)->path();
   const fs::path copy = dir / "ro" / any_case.filename();
@@ -99,7 +92,7 @@ TEST(OutputPaths, ReplayUpdateRefusesACaseInAReadOnlyDirectory) {
 }
 
 TEST(OutputPaths, AWritableReportDirectoryIsCreatedWithItsParents) {
-  const auto dir = scratch_dir();
+  const auto dir = fresh_dir("output_path");
   const fs::path report = dir / "new" / "nested";
   const CliResult r = run_cli({"check", kScenario, "--report", report.string()});
   EXPECT_EQ(r.exit_code, 0) << r.err;

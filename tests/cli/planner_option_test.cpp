@@ -4,6 +4,7 @@
 // a usage error (exit 2, one line), campaigns are deterministic across --jobs, and neither the
 // end of a campaign nor Ctrl-C leaves a planner process behind. Waits are bounded, never timed.
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,22 +13,22 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include "cli_runner.h"
+#include "tests/support/scratch_files.h"
+#include "tests/support/std4_scenario.h"
 
 namespace mg {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScenario = std::string(MG_SOURCE_DIR) + "/corpus/scenarios/bench_std4.json";
+const std::string kScenario = test::kStd4Path;
 
 // A marker in the command line tells this test's planner processes from any other.
 std::string marker(const std::string& tag) { return "mgmark" + std::to_string(::getpid()) + tag; }
@@ -54,13 +55,6 @@ bool marked_processes_gone(const std::string& tag) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   return false;
-}
-
-fs::path scratch(const std::string& tag) {
-  const fs::path dir = fs::temp_directory_path() / ("mg_exec_cli_" + std::to_string(::getpid()) + "_" + tag);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
 }
 
 TEST(ExecPlannerCli, CheckWithACorrectPlannerRunsTheScenario) {
@@ -96,7 +90,7 @@ TEST(ExecPlannerCli, TheTimeoutMustBeSecondsInRange) {
 }
 
 TEST(ExecPlannerCli, ACrashIsShrunkIntoACaseThatReplaysThroughTheSameCommand) {
-  const fs::path corpus = scratch("crash");
+  const fs::path corpus = test::fresh_dir("exec_cli_crash");
   const auto r = test::run_cli({"fuzz", "--planner", fake("crash", "c3"), "--runs", "3", "--jobs", "2", "--seed", "1",
                                 "--shrink-attempts", "5", "--corpus", corpus.string(), "--report", (corpus / "report").string(),
                                 "--json"});
@@ -126,7 +120,7 @@ TEST(ExecPlannerCli, ACrashIsShrunkIntoACaseThatReplaysThroughTheSameCommand) {
 // case it writes replays through the same command.
 TEST(ExecPlannerCli, ThePythonExampleIsFoundFaultyAndItsCasesReplay) {
   if (std::system("python3 -c pass > /dev/null 2>&1") != 0) GTEST_SKIP() << "no python3 (the quick start installs it)";
-  const fs::path dir = scratch("python");
+  const fs::path dir = test::fresh_dir("exec_cli_python");
   const std::string planner = "exec:python3 " + std::string(MG_SOURCE_DIR) + "/examples/python_planner/planner.py";
   const auto r = test::run_cli({"fuzz", "--planner", planner, "--runs", "12", "--jobs", "2", "--seed", "1",
                                 "--shrink-attempts", "10", "--corpus", (dir / "corpus").string(), "--json"});
@@ -187,7 +181,7 @@ int wait_for_exit(pid_t pid) {
 }
 
 TEST(ExecPlannerCli, CtrlCLeavesNoPlannerProcess) {
-  const fs::path dir = scratch("sigint");
+  const fs::path dir = test::fresh_dir("exec_cli_sigint");
   const pid_t pid = start_campaign(dir, fake("echo", "c5"), {});
   ::kill(pid, SIGINT);
   const int status = wait_for_exit(pid);
@@ -199,7 +193,7 @@ TEST(ExecPlannerCli, CtrlCLeavesNoPlannerProcess) {
 // A second Ctrl-C while the first waits for the calls in flight ends mergeguard at once, and the
 // planner processes with it, even one that ignores the end of its input (stubborn).
 TEST(ExecPlannerCli, ASecondCtrlCEndsEvenAPlannerThatIgnoresTheEndOfItsInput) {
-  const fs::path dir = scratch("sigint2");
+  const fs::path dir = test::fresh_dir("exec_cli_sigint2");
   const pid_t pid = start_campaign(dir, fake("stubborn", "c6"), {"--planner-timeout", "5"});
   ::kill(pid, SIGINT);  // the campaign now waits for its calls in flight, each 0.3 s
   std::this_thread::sleep_for(std::chrono::milliseconds(50));

@@ -2,45 +2,31 @@
 // behind; remove_stale_temporaries deletes only the leftovers of writers that no longer run.
 #include "core/atomic_file.h"
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include <gtest/gtest.h>
+#include "tests/support/scratch_files.h"
 
 namespace mg {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch() {
-  static int counter = 0;
-  const auto dir = fs::temp_directory_path() / ("mg_atomic_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::size_t entries(const fs::path& dir) {
   return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
 }
 
 TEST(AtomicFile, NewAndReplacedFilesHoldExactlyTheContentAndNothingElseIsLeft) {
-  const auto dir = scratch();
+  const auto dir = test::fresh_dir("atomic");
   const auto file = dir / "sub" / "case.json";
   write_file_atomic(file.string(), "first\n");
-  EXPECT_EQ(slurp(file), "first\n");
+  EXPECT_EQ(test::slurp(file), "first\n");
   write_file_atomic(file.string(), "second, longer\n");
-  EXPECT_EQ(slurp(file), "second, longer\n");
+  EXPECT_EQ(test::slurp(file), "second, longer\n");
   EXPECT_EQ(entries(file.parent_path()), 1u);
   fs::remove_all(dir);
 }
@@ -55,7 +41,7 @@ TEST(AtomicFile, AnUnwritableTargetIsAnErrorNamingThePath) {
 }
 
 TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemovedAndLiveOnesKept) {
-  const auto dir = scratch();
+  const auto dir = test::fresh_dir("atomic");
   // A pid above the kernel's limit (pid_max <= 2^22) never runs.
   const auto dead = dir / "a.json.tmp.99999999.0";
   const auto live = dir / ("b.json.tmp." + std::to_string(::getpid()) + ".3");

@@ -181,7 +181,7 @@ json valid_trace() {
   return json::parse(in);
 }
 
-std::string load_error(const json& j) {
+std::string trace_load_error(const json& j) {
   return test_support::input_error_of([&] { observed_trace_from_json(j, "trace.json"); });
 }
 
@@ -264,18 +264,20 @@ TEST(ObservedTraceJson, EveryDefectIsRejectedWithItsJsonPath) {
       {"not an object", [](json& j) { j = json::array(); }, "trace.json: /: must be a JSON object"},
   };
   test_support::expect_input_errors(valid_trace(), cases, [](const json& j) { observed_trace_from_json(j, "trace.json"); });
-  EXPECT_EQ(load_error(valid_trace()), "");
+  EXPECT_EQ(trace_load_error(valid_trace()), "");
 }
 
 TEST(ObservedTraceJson, TotalSizeIsBounded) {
   // Both bounds are checked before any step is read, so null steps are enough to reach them.
   json j = valid_trace();
   j["steps"].get_ref<json::array_t&>().assign(kMaxTraceSteps + 1, nullptr);
-  EXPECT_NE(load_error(j).find("/steps: at most 1000000 steps, got 1000001"), std::string::npos) << load_error(j);
+  EXPECT_NE(trace_load_error(j).find("/steps: at most 1000000 steps, got 1000001"), std::string::npos)
+      << trace_load_error(j);
   for (int k = 3; k < 64; ++k) j["vehicles"].push_back({{"id", 10 + k}, {"size", json::object()}, {"limits", json::object()}});
   j["steps"].get_ref<json::array_t&>().assign(kMaxTraceStates / 64 + 1, nullptr);
-  EXPECT_NE(load_error(j).find("/steps: at most 20000000 states (steps x vehicles), got 312501 x 64"), std::string::npos)
-      << load_error(j);
+  EXPECT_NE(trace_load_error(j).find("/steps: at most 20000000 states (steps x vehicles), got 312501 x 64"),
+            std::string::npos)
+      << trace_load_error(j);
 }
 
 TEST(ObservedTraceJson, RepeatedKeysInTheTextAreRejected) {

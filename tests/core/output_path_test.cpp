@@ -2,25 +2,18 @@
 // command makes before any work; each refusal is one line naming the option, path and reason.
 #include "core/output_path.h"
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include <gtest/gtest.h>
+#include "tests/support/scratch_files.h"
 
 namespace mg {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch() {
-  static int counter = 0;
-  const auto dir = fs::temp_directory_path() / ("mg_outpath_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 std::string refusal(const std::string& dir) {
   try {
@@ -32,7 +25,7 @@ std::string refusal(const std::string& dir) {
 }
 
 TEST(OutputPath, ACreatableDirectoryIsCreatedWithItsParentsAndLeftEmpty) {
-  const auto dir = scratch();
+  const auto dir = test::fresh_dir("outpath");
   const auto target = dir / "a" / "b";
   EXPECT_NO_THROW(prepare_output_dir("--report", target.string()));
   EXPECT_TRUE(fs::is_directory(target));
@@ -41,7 +34,7 @@ TEST(OutputPath, ACreatableDirectoryIsCreatedWithItsParentsAndLeftEmpty) {
 }
 
 TEST(OutputPath, UncreatableFileAndBelowAFilePathsAreRefusedWithTheirReason) {
-  const auto dir = scratch();
+  const auto dir = test::fresh_dir("outpath");
   const auto file = dir / "f";
   std::ofstream(file) << "x";
   EXPECT_EQ(refusal("/proc/mergeguard_x"), "--report /proc/mergeguard_x: cannot create the directory (No such file or directory)");
@@ -52,7 +45,7 @@ TEST(OutputPath, UncreatableFileAndBelowAFilePathsAreRefusedWithTheirReason) {
 }
 
 TEST(OutputPath, AFileToRewriteMustNotBeADirectory) {
-  const auto dir = scratch();
+  const auto dir = test::fresh_dir("outpath");
   EXPECT_THROW(check_output_file("--update", dir.string()), OutputPathError);
   EXPECT_NO_THROW(check_output_file("--update", (dir / "case.json").string()));
   fs::remove_all(dir);

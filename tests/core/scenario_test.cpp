@@ -31,7 +31,7 @@ json minimal_scenario() {
 }
 
 // Loads `j` and returns the error message ("" when it loads).
-std::string load_error(const json& j) {
+std::string scenario_load_error(const json& j) {
   return test_support::input_error_of([&] { scenario_from_json(j, "scenario.json"); });
 }
 
@@ -85,7 +85,7 @@ TEST(ScenarioLoader, RejectsTooManyVehicles) {
   json j = minimal_scenario();
   j["vehicles"] = json::array();
   for (int i = 0; i < 1000; ++i) j["vehicles"].push_back({{"id", i + 1}, {"x_m", 10.0 * i}, {"speed_mps", 20}});
-  EXPECT_NE(load_error(j).find("/vehicles: at most 64 vehicles"), std::string::npos);
+  EXPECT_NE(scenario_load_error(j).find("/vehicles: at most 64 vehicles"), std::string::npos);
 }
 
 TEST(JsonText, MalformedEmptyAndDeepInputsAreInputErrors) {

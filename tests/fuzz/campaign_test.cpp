@@ -1,5 +1,7 @@
 #include "fuzz/campaign.h"
 
+#include <gtest/gtest.h>
+
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -8,24 +10,17 @@
 #include <set>
 #include <thread>
 
-#include <gtest/gtest.h>
-
 #include "core/input_error.h"
 #include "fake_check.h"
 #include "fuzz/campaign_report.h"
 #include "fuzz/corpus_case.h"
 #include "fuzz/replay.h"
+#include "tests/support/scratch_files.h"
 
 namespace mg::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch_dir(const std::string& tag) {
-  const auto dir = fs::temp_directory_path() / ("mg_campaign_test_" + std::to_string(::getpid()) + "_" + tag);
-  fs::remove_all(dir);
-  return dir;
-}
 
 CheckFactory fake_factory() {
   return [] { return CheckFn(test::fake_check); };
@@ -49,7 +44,7 @@ nlohmann::json case_without_date(const std::string& path) {
 }
 
 TEST(Campaign, ResultsDoNotDependOnTheNumberOfJobs) {
-  const auto a = scratch_dir("jobs1"), b = scratch_dir("jobs3");
+  const auto a = mg::test::unused_path("campaign_test_jobs1"), b = mg::test::unused_path("campaign_test_jobs3");
   const CampaignResult one = run_campaign(options(200, 1, a), fake_factory());
   const CampaignResult three = run_campaign(options(200, 3, b), fake_factory());
   EXPECT_EQ(one.scenarios, 200u);
@@ -125,7 +120,7 @@ CampaignOptions guided(CampaignOptions o) {
 }
 
 TEST(Campaign, GuidedResultsAndScenariosDoNotDependOnTheNumberOfJobs) {
-  const auto a = scratch_dir("guided1"), b = scratch_dir("guided3");
+  const auto a = mg::test::unused_path("campaign_test_guided1"), b = mg::test::unused_path("campaign_test_guided3");
   Recorder one_seen, three_seen;
   const CampaignResult one = run_campaign(guided(options(300, 1, a)), one_seen.factory());
   const CampaignResult three = run_campaign(guided(options(300, 3, b)), three_seen.factory());
@@ -222,7 +217,7 @@ TEST(Campaign, GuidedSearchReachesANarrowFailureInFewerRunsThanRandom) {
 }
 
 TEST(Campaign, AResumedCampaignDoesNotReAddKnownSignatures) {
-  const auto dir = scratch_dir("resume");
+  const auto dir = mg::test::unused_path("campaign_test_resume");
   const auto first = run_campaign(options(100, 2, dir), fake_factory());
   ASSERT_EQ(first.new_cases.size(), 1u);
   auto o = options(100, 2, dir);
@@ -236,7 +231,7 @@ TEST(Campaign, AResumedCampaignDoesNotReAddKnownSignatures) {
 }
 
 TEST(Campaign, ACaseThatNowHoldsDoesNotHideANewFailureOfItsSignature) {
-  const auto dir = scratch_dir("fixed");
+  const auto dir = mg::test::unused_path("campaign_test_fixed");
   const auto first = run_campaign(options(100, 2, dir), fake_factory());
   ASSERT_EQ(first.new_cases.size(), 1u);
   CorpusCase fixed = load_case(first.new_cases[0]);
@@ -250,7 +245,7 @@ TEST(Campaign, ACaseThatNowHoldsDoesNotHideANewFailureOfItsSignature) {
 }
 
 TEST(Campaign, EveryNewCaseIsMinimalAndReplays) {
-  const auto dir = scratch_dir("replay");
+  const auto dir = mg::test::unused_path("campaign_test_replay");
   const auto r = run_campaign(options(60, 2, dir), fake_factory());
   ASSERT_FALSE(r.new_cases.empty());
   for (const std::string& path : r.new_cases) {
@@ -264,7 +259,7 @@ TEST(Campaign, EveryNewCaseIsMinimalAndReplays) {
 }
 
 TEST(Campaign, AStopRequestEndsTheCampaignAndKeepsWhatItFound) {
-  const auto dir = scratch_dir("stop");
+  const auto dir = mg::test::unused_path("campaign_test_stop");
   std::atomic<bool> stop{false};
   std::atomic<int> calls{0};
   const CheckFactory stopping = [&] {
@@ -284,7 +279,7 @@ TEST(Campaign, AStopRequestEndsTheCampaignAndKeepsWhatItFound) {
 }
 
 TEST(Campaign, AThrowingCheckBecomesACaseThatReplays) {
-  const auto dir = scratch_dir("throw");
+  const auto dir = mg::test::unused_path("campaign_test_throw");
   const CheckFn throwing = [](const Scenario& s) -> CheckResult {
     if (s.vehicles.size() >= 2) throw std::runtime_error("two vehicles are too many");
     return test::fake_check(s);
@@ -314,7 +309,7 @@ TEST(Campaign, ATimeBudgetEndsTheCampaign) {
 }
 
 TEST(Campaign, ACorruptCorpusIsRefusedBeforeAnythingRuns) {
-  const auto dir = scratch_dir("corrupt");
+  const auto dir = mg::test::unused_path("campaign_test_corrupt");
   fs::create_directories(dir);
   { std::ofstream(dir / "bad.json") << "{\"format_version\": 99}"; }
   std::atomic<int> calls{0};
@@ -392,7 +387,7 @@ TEST(CampaignTimeline, SamplesTheCampaignInOrderAndEndsAtItsResult) {
   }
   EXPECT_EQ(r.timeline.back().scenarios, r.scenarios);
   EXPECT_EQ(r.timeline.back().failing_scenarios, r.failing_scenarios);
-  const auto dir = scratch_dir("timeline");
+  const auto dir = mg::test::unused_path("campaign_test_timeline");
   fs::create_directories(dir);
   write_campaign_report(dir.string(), o, r, {});
   std::ifstream in(dir / "report.html");

@@ -1,6 +1,7 @@
 // `mergeguard fuzz` and `mergeguard replay` through the built binary (env MG_CLI): the JSON
 // summary contract, exit codes, determinism across --jobs, stop signals, replay and --update.
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,14 +11,13 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <thread>
 
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include "fuzz/corpus_case.h"
+#include "tests/support/scratch_files.h"
 
 namespace mg::fuzz {
 namespace {
@@ -29,20 +29,6 @@ struct CliRun {
   std::string out;
   std::string err;
 };
-
-fs::path scratch(const std::string& tag) {
-  const auto dir = fs::temp_directory_path() / ("mg_cli_fuzz_" + std::to_string(::getpid()) + "_" + tag);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // Every wait in these tests is bounded (a hung child fails the test instead of hanging CTest) and
 // none asserts a duration: signals are sent on observed events, not after fixed delays, so the
@@ -72,7 +58,7 @@ struct Interrupt {
 CliRun run_cli(const std::vector<std::string>& args, const std::optional<Interrupt>& interrupt = std::nullopt) {
   const char* cli = std::getenv("MG_CLI");
   if (cli == nullptr) throw std::runtime_error("MG_CLI is not set (run through ctest)");
-  const auto dir = scratch("io");
+  const auto dir = mg::test::fresh_dir("cli_fuzz_io");
   const std::string out_path = (dir / "out").string(), err_path = (dir / "err").string();
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -100,15 +86,17 @@ CliRun run_cli(const std::vector<std::string>& args, const std::optional<Interru
   }
   CliRun r;
   r.exit_code = !note.empty() ? -1 : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = slurp(out_path);
-  r.err = slurp(err_path) + note;
+  r.out = mg::test::slurp(out_path);
+  r.err = mg::test::slurp(err_path) + note;
   fs::remove_all(dir);
   return r;
 }
 
 // True once the campaign has started (its first progress line, printed after the SIGINT handler
 // is installed and the corpus is read).
-bool campaign_started(const fs::path& err_path) { return slurp(err_path).find("fuzz: ") != std::string::npos; }
+bool campaign_started(const fs::path& err_path) {
+  return mg::test::slurp(err_path).find("fuzz: ") != std::string::npos;
+}
 
 std::size_t finished_cases(const fs::path& corpus) {
   std::error_code ec;
@@ -121,7 +109,7 @@ std::vector<std::string> fuzz_args(const fs::path& corpus, const std::string& ru
 }
 
 TEST(CliFuzz, JsonSummaryHasTheContractKeysAndExitCodeMatches) {
-  const auto corpus = scratch("contract");
+  const auto corpus = mg::test::fresh_dir("cli_fuzz_contract");
   const CliRun r = run_cli(fuzz_args(corpus, "4", "2"));
   ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -134,7 +122,7 @@ TEST(CliFuzz, JsonSummaryHasTheContractKeysAndExitCodeMatches) {
 }
 
 TEST(CliFuzz, SameSeedAndRunsGiveTheSameSummaryWhateverTheJobs) {
-  const auto a = scratch("jobs1"), b = scratch("jobs2");
+  const auto a = mg::test::fresh_dir("cli_fuzz_jobs1"), b = mg::test::fresh_dir("cli_fuzz_jobs2");
   auto one = nlohmann::json::parse(run_cli(fuzz_args(a, "6", "1")).out);
   auto two = nlohmann::json::parse(run_cli(fuzz_args(b, "6", "2")).out);
   for (auto* j : {&one, &two})
@@ -179,7 +167,7 @@ TEST(CliFuzz, BadUsageExitsTwo) {
 TEST(CliFuzz, EveryStopSignalEndsTheCampaignCleanlyWithItsReport) {
   const std::vector<std::pair<int, std::string>> signals = {{SIGINT, "SIGINT"}, {SIGTERM, "SIGTERM"}, {SIGHUP, "SIGHUP"}};
   for (const auto& [sig, name] : signals) {
-    const auto dir = scratch("stop_" + name);
+    const auto dir = mg::test::fresh_dir("cli_fuzz_stop_" + name);
     // The signal goes once the first case is written: the campaign is then surely running and
     // has found something to report.
     const auto cases = dir / "cases";
@@ -201,7 +189,7 @@ TEST(CliFuzz, EveryStopSignalEndsTheCampaignCleanlyWithItsReport) {
 }
 
 TEST(CliFuzz, AnUninterruptedSummaryHasNoSignal) {
-  const auto corpus = scratch("nosignal");
+  const auto corpus = mg::test::fresh_dir("cli_fuzz_nosignal");
   const auto j = nlohmann::json::parse(run_cli(fuzz_args(corpus, "2", "1")).out);
   EXPECT_FALSE(j.at("interrupted").get<bool>());
   EXPECT_TRUE(j.at("signal").is_null());
@@ -209,7 +197,7 @@ TEST(CliFuzz, AnUninterruptedSummaryHasNoSignal) {
 }
 
 TEST(CliFuzz, SigkillNeverLeavesABrokenCase) {
-  const auto dir = scratch("sigkill");
+  const auto dir = mg::test::fresh_dir("cli_fuzz_sigkill");
   // Kill moments tied to events, not to the clock: right at the start of the campaign, the
   // moment the first case is finished (another is likely being shrunk or written), and a little
   // later. Small shrink budgets make writes frequent.
@@ -231,7 +219,7 @@ TEST(CliFuzz, SigkillNeverLeavesABrokenCase) {
 }
 
 TEST(CliReplay, NamesACaseThatDoesNotReproduceAndUpdateRecordsTheNewVerdict) {
-  const auto corpus = scratch("replay");
+  const auto corpus = mg::test::fresh_dir("cli_fuzz_replay");
   const auto j = nlohmann::json::parse(run_cli(fuzz_args(corpus, "6", "1")).out);
   ASSERT_FALSE(j.at("new_cases").empty()) << "the baseline should fail somewhere in 6 runs";
   const std::string path = j.at("new_cases").at(0);

@@ -1,25 +1,19 @@
 #include "fuzz/corpus_case.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "core/input_error.h"
 #include "fake_check.h"
 #include "fuzz/scenario_gen.h"
+#include "tests/support/scratch_files.h"
 
 namespace mg::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch_dir(const std::string& tag) {
-  const auto dir = fs::temp_directory_path() / ("mg_corpus_test_" + std::to_string(::getpid()) + "_" + tag);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 CorpusCase sample_case() {
   CorpusCase c;
@@ -86,7 +80,7 @@ TEST(CorpusCase, InvalidCasesAreRejectedWithTheirPath) {
 }
 
 TEST(CorpusCase, WritesAtomicallyAndListsOnlyFinishedJsonFiles) {
-  const auto dir = scratch_dir("list");
+  const auto dir = mg::test::fresh_dir("corpus_test_list");
   const CorpusCase c = sample_case();
   write_case(c, (dir / "b.json").string());
   write_case(c, (dir / "a.json").string());

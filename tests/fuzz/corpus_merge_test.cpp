@@ -1,25 +1,19 @@
 #include "fuzz/corpus_merge.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "core/input_error.h"
 #include "fake_check.h"
 #include "fuzz/scenario_gen.h"
+#include "tests/support/scratch_files.h"
 
 namespace mg::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch_dir(const std::string& tag) {
-  const auto dir = fs::temp_directory_path() / ("mg_corpus_merge_test_" + std::to_string(::getpid()) + "_" + tag);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // An open finding of the planted check (a vehicle within 30 m) with `vehicles` vehicles, the
 // first 10 m ahead of the ego, and the given horizon.
@@ -52,7 +46,8 @@ CorpusCase regression(double horizon_s) {
 }
 
 TEST(CorpusMerge, KeepsTheSmallestCaseOfEachSignatureFromOverlappingShards) {
-  const auto a = scratch_dir("a"), b = scratch_dir("b"), into = scratch_dir("into");
+  const auto a = mg::test::fresh_dir("corpus_merge_test_a"), b = mg::test::fresh_dir("corpus_merge_test_b"),
+             into = mg::test::fresh_dir("corpus_merge_test_into");
   fs::remove_all(into);
   const std::string stem = finding(1, 5, 0).signature.file_stem();
   write_case(finding(3, 5, 7), (a / (stem + ".json")).string());
@@ -66,7 +61,7 @@ TEST(CorpusMerge, KeepsTheSmallestCaseOfEachSignatureFromOverlappingShards) {
   EXPECT_EQ(load_case(case_files(into.string())[0]).scenario.vehicles.size(), 2u);
 
   // Merging a smaller one later replaces the target's file in place; a larger one is dropped.
-  const auto c = scratch_dir("c");
+  const auto c = mg::test::fresh_dir("corpus_merge_test_c");
   write_case(finding(2, 5, 9), (c / (stem + ".json")).string());  // same vehicles, shorter horizon
   const auto again = merge_corpora({a.string(), c.string()}, into.string());
   const auto replaced = std::find_if(again.begin(), again.end(), [](const auto& d) { return d.action == CorpusMergeDecision::Action::kReplaced; });
@@ -78,7 +73,8 @@ TEST(CorpusMerge, KeepsTheSmallestCaseOfEachSignatureFromOverlappingShards) {
 }
 
 TEST(CorpusMerge, KeepsEveryDistinctRegressionCaseOnceBesideTheOpenFinding) {
-  const auto a = scratch_dir("ra"), b = scratch_dir("rb"), into = scratch_dir("rinto");
+  const auto a = mg::test::fresh_dir("corpus_merge_test_ra"), b = mg::test::fresh_dir("corpus_merge_test_rb"),
+             into = mg::test::fresh_dir("corpus_merge_test_rinto");
   const std::string stem = finding(1, 5, 0).signature.file_stem();
   write_case(regression(6), (a / (stem + ".json")).string());
   write_case(regression(6), (b / (stem + ".json")).string());  // the same regression case again
@@ -94,7 +90,7 @@ TEST(CorpusMerge, KeepsEveryDistinctRegressionCaseOnceBesideTheOpenFinding) {
 }
 
 TEST(CorpusMerge, ACorruptCaseStopsTheMergeBeforeAnythingIsWritten) {
-  const auto a = scratch_dir("ca"), into = scratch_dir("cinto");
+  const auto a = mg::test::fresh_dir("corpus_merge_test_ca"), into = mg::test::fresh_dir("corpus_merge_test_cinto");
   fs::remove_all(into);
   write_case(finding(1, 5, 0), (a / "good.json").string());
   std::ofstream(a / "bad.json") << "{\"format_version\": 1,";

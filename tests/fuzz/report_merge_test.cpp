@@ -1,25 +1,19 @@
 #include "fuzz/report_merge.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "core/input_error.h"
 #include "fake_check.h"
 #include "fuzz/campaign_report.h"
+#include "tests/support/scratch_files.h"
 
 namespace mg::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path scratch_dir(const std::string& tag) {
-  const auto dir = fs::temp_directory_path() / ("mg_report_merge_test_" + std::to_string(::getpid()) + "_" + tag);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 CampaignOptions options(int shard, int shards, std::uint64_t seed = 11) {
   CampaignOptions o;
@@ -48,7 +42,7 @@ nlohmann::json without_timing(nlohmann::json j) {
 }
 
 TEST(ReportMerge, TheShardsOfACampaignMergeIntoExactlyTheUnshardedSummary) {
-  const auto dir = scratch_dir("exact");
+  const auto dir = mg::test::fresh_dir("report_merge_test_exact");
   const std::string whole = write_summary(dir, "whole.json", options(0, 1));
   const std::vector<std::string> parts = {write_summary(dir, "s2.json", options(2, 3)), write_summary(dir, "s0.json", options(0, 3)),
                                           write_summary(dir, "s1.json", options(1, 3))};
@@ -63,7 +57,7 @@ TEST(ReportMerge, TheShardsOfACampaignMergeIntoExactlyTheUnshardedSummary) {
 }
 
 TEST(ReportMerge, GuidedShardsSumTheirGuidedRunsAndAShardOfAnotherSearchIsRefused) {
-  const auto dir = scratch_dir("guided");
+  const auto dir = mg::test::fresh_dir("report_merge_test_guided");
   auto guided = [](int shard) {
     CampaignOptions o = options(shard, 2);
     o.runs = 400;
@@ -90,7 +84,7 @@ TEST(ReportMerge, GuidedShardsSumTheirGuidedRunsAndAShardOfAnotherSearchIsRefuse
 // An exec planner's shards: the merged report names the planner process once, with every shard's
 // stderr logs in shard order; shards of different planner builds (hello) are not one campaign.
 TEST(ReportMerge, AnExecPlannersShardsKeepItsProcessAndEveryShardsLogs) {
-  const auto dir = scratch_dir("process");
+  const auto dir = mg::test::fresh_dir("report_merge_test_process");
   const auto process = [](const std::string& version, const std::string& log) {
     return nlohmann::json{{"hello", {{"name", "py"}, {"version", version}}}, {"logs", {log}}};
   };
@@ -112,7 +106,7 @@ TEST(ReportMerge, AnExecPlannersShardsKeepItsProcessAndEveryShardsLogs) {
 }
 
 TEST(ReportMerge, RefusesShardsOfDifferentCampaignsAMissingShardAndADuplicate) {
-  const auto dir = scratch_dir("refuse");
+  const auto dir = mg::test::fresh_dir("report_merge_test_refuse");
   const std::string s0 = write_summary(dir, "s0.json", options(0, 2));
   const std::string s1 = write_summary(dir, "s1.json", options(1, 2));
   const std::string other_seed = write_summary(dir, "o1.json", options(1, 2, 12));

@@ -72,7 +72,7 @@ MainLaneVehicle gen_vehicle(int id, double ego_x) {
   return MainLaneVehicle{id, ego_x + *rc::gen::inRange(-1200, 1200) / 10.0, *rc::gen::inRange(0, 330) / 10.0,
                          *rc::gen::inRange(30, 120) / 10.0, 1.9, gen_limits()};
 }
-Def1Context gen_context() {
+Def1Context gen_def1_context() {
   Def1Context c;
   c.ego_x_m = *rc::gen::inRange(0, 2000) / 10.0;
   c.ego_speed_mps = *rc::gen::inRange(0, 330) / 10.0;
@@ -148,7 +148,7 @@ TEST(Definition1, HaltSpeedCapStopsAtThePoint) {
 }
 
 RC_GTEST_PROP(Definition1, ReturnedIntervalSatisfiesBothInequalities, ()) {
-  const Def1Context c = gen_context();
+  const Def1Context c = gen_def1_context();
   const LaneGap g = gen_open_gap(c.ego_x_m);
   const SpeedInterval iv = solve_def1_interval(c, g);
   RC_PRE(iv.feasible);
@@ -162,7 +162,7 @@ RC_GTEST_PROP(Definition1, ReturnedIntervalSatisfiesBothInequalities, ()) {
 }
 
 RC_GTEST_PROP(Definition1, InfeasibleGapHasNoFeasibleSpeedInDenseScan, ()) {
-  const Def1Context c = gen_context();
+  const Def1Context c = gen_def1_context();
   const LaneGap g = gen_gap(c.ego_x_m);
   const SpeedInterval iv = solve_def1_interval(c, g);
   RC_PRE(!iv.feasible);
@@ -172,7 +172,7 @@ RC_GTEST_PROP(Definition1, InfeasibleGapHasNoFeasibleSpeedInDenseScan, ()) {
 
 RC_GTEST_PROP(Definition1, IntervalEndsAreTight, ()) {
   // Exactness: just outside a bound the corresponding inequality fails.
-  const Def1Context c = gen_context();
+  const Def1Context c = gen_def1_context();
   const LaneGap g = gen_open_gap(c.ego_x_m);
   const SpeedInterval iv = solve_def1_interval(c, g);
   RC_PRE(iv.feasible);
@@ -182,7 +182,7 @@ RC_GTEST_PROP(Definition1, IntervalEndsAreTight, ()) {
 }
 
 RC_GTEST_PROP(Definition1, Margin11NonDecreasingAndMargin12NonIncreasingInSpeed, ()) {
-  const Def1Context c = gen_context();
+  const Def1Context c = gen_def1_context();
   const MainLaneVehicle o = gen_vehicle(1, c.ego_x_m);
   const double v1 = *rc::gen::inRange(0, 330) / 10.0;
   const double v2 = v1 + *rc::gen::inRange(0, 100) / 10.0;

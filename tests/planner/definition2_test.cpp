@@ -11,7 +11,7 @@
 namespace mg {
 namespace {
 
-double ref_d_lon(double vr, double vf, double lr, double lf, double t, double a, double bmin, double bmax) {
+double ref_d_lon_eq(double vr, double vf, double lr, double lf, double t, double a, double bmin, double bmax) {
   const double inner = vr * t + a * t * t / 2 + (vr + a * t) * (vr + a * t) / (2 * bmin) - vf * vf / (2 * bmax);
   return (lr + lf) / 2 + (inner > 0 ? inner : 0);
 }
@@ -19,8 +19,8 @@ double ref_d_lon(double vr, double vf, double lr, double lf, double t, double a,
 // RCPP ineq. (3): X_o + (v_o + v_o*)/2 rho_c + v_o* rho_m/2 <= P_c - D*_lon, P_c = X + v_e (rho_c + rho_m/2).
 double ref_ineq3(const CoopContext& c, const MainLaneVehicle& o, double vo) {
   const double pc = c.ego_x_m + c.ego_speed_mps * (c.comm_threshold_s + c.merge_duration_s / 2);
-  const double d = ref_d_lon(vo, c.ego_speed_mps, o.length_m, c.ego_length_m, c.response_time_s,
-                             o.limits.accel_max_mps2, o.limits.brake_min_mps2, c.ego_limits.brake_max_mps2);
+  const double d = ref_d_lon_eq(vo, c.ego_speed_mps, o.length_m, c.ego_length_m, c.response_time_s,
+                                o.limits.accel_max_mps2, o.limits.brake_min_mps2, c.ego_limits.brake_max_mps2);
   return pc - d - (o.x_m + (o.speed_mps + vo) / 2 * c.comm_threshold_s + vo * c.merge_duration_s / 2);
 }
 
@@ -29,12 +29,12 @@ double ref_ineq3(const CoopContext& c, const MainLaneVehicle& o, double vo) {
 double ref_ineq4(const CoopContext& c, const MainLaneVehicle& o, double vo) {
   const double b = c.ego_limits.brake_min_mps2, rc = c.comm_threshold_s, ve = c.ego_speed_mps;
   const double travel = ve - b * rc >= 0 ? ve * rc - b * rc * rc / 2 : ve * ve / (2 * b);
-  const double d = ref_d_lon(std::max(0.0, ve - b * rc), vo, c.ego_length_m, o.length_m, c.response_time_s,
-                             c.ego_limits.accel_max_mps2, b, o.limits.brake_max_mps2);
+  const double d = ref_d_lon_eq(std::max(0.0, ve - b * rc), vo, c.ego_length_m, o.length_m, c.response_time_s,
+                                c.ego_limits.accel_max_mps2, b, o.limits.brake_max_mps2);
   return o.x_m + (vo + o.speed_mps) / 2 * rc - d - (c.ego_x_m + travel);
 }
 
-CoopContext gen_context() {
+CoopContext gen_coop_context() {
   CoopContext c;
   c.ego_x_m = *rc::gen::inRange(0, 2000) / 10.0;
   c.ego_speed_mps = *rc::gen::inRange(0, 330) / 10.0;
@@ -86,7 +86,7 @@ TEST(Definition2, HandComputedEgoBehindSpeed) {
 }
 
 RC_GTEST_PROP(Definition2, EgoAheadSpeedSatisfiesIneq3AndBrakeLimit, ()) {
-  const CoopContext c = gen_context();
+  const CoopContext c = gen_coop_context();
   MainLaneVehicle o = gen_responder(c.ego_x_m);
   o.x_m = c.ego_x_m - *rc::gen::inRange(0, 1000) / 10.0;  // behind the ego: often feasible
   const VoStar vo = solve_vo_star(c, o, CoopCase::kEgoAhead);
@@ -98,7 +98,7 @@ RC_GTEST_PROP(Definition2, EgoAheadSpeedSatisfiesIneq3AndBrakeLimit, ()) {
 }
 
 RC_GTEST_PROP(Definition2, EgoBehindSpeedSatisfiesIneq4AndAccelLimit, ()) {
-  const CoopContext c = gen_context();
+  const CoopContext c = gen_coop_context();
   MainLaneVehicle o = gen_responder(c.ego_x_m);
   o.x_m = c.ego_x_m + *rc::gen::inRange(0, 1000) / 10.0;  // ahead of the ego: often feasible
   const VoStar vo = solve_vo_star(c, o, CoopCase::kEgoBehind);
@@ -110,7 +110,7 @@ RC_GTEST_PROP(Definition2, EgoBehindSpeedSatisfiesIneq4AndAccelLimit, ()) {
 }
 
 RC_GTEST_PROP(Definition2, InfeasibleRequestHasNoSpeedInTheRateLimitedDomain, ()) {
-  const CoopContext c = gen_context();
+  const CoopContext c = gen_coop_context();
   const MainLaneVehicle o = gen_responder(c.ego_x_m);
   const CoopCase k = *rc::gen::element(CoopCase::kEgoAhead, CoopCase::kEgoBehind);
   const VoStar vo = solve_vo_star(c, o, k);

@@ -2,28 +2,25 @@
 // process tests/planner/exec_helpers/fake_exec_planner.cpp: a correct one answers through one
 // reused child; each misbehaviour is a PlannerFault of its kind, within the timeout, with no
 // process left; a command that does not answer hello cannot start. Timing bounds are generous.
+#include "planner/exec_planner.h"
+
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <ostream>
 #include <regex>
 #include <string>
 #include <thread>
 
-#include <gtest/gtest.h>
-
 #include "core/scenario.h"
-#include "planner/exec_planner.h"
 #include "planner/planner_fault.h"
 #include "process_probe.h"
+#include "tests/support/std4_scenario.h"
 
 namespace mg {
 namespace {
 
 std::string fake(const std::string& mode) { return std::string("exec:") + MG_FAKE_EXEC_PLANNER + " " + mode; }
-
-const Scenario& std4() {
-  static const Scenario s = load_scenario(std::string(MG_SOURCE_DIR) + "/corpus/scenarios/bench_std4.json");
-  return s;
-}
 
 long pid_in(const std::string& message) {
   std::smatch m;
@@ -31,17 +28,17 @@ long pid_in(const std::string& message) {
 }
 
 long answering_pid(const std::string& name) {
-  const PlanOutput out = make_exec_planner(name)->plan(initial_snapshot(std4()));
+  const PlanOutput out = make_exec_planner(name)->plan(initial_snapshot(test::std4()));
   return out.annotation->to_json().at("pid").get<long>();
 }
 
 TEST(ExecPlanner, ACorrectPlannerAnswersWithItsCommandAndAnnotation) {
   auto planner = make_exec_planner(fake("echo"));
   EXPECT_EQ(planner->name(), fake("echo"));
-  const PlanOutput out = planner->plan(initial_snapshot(std4()));
+  const PlanOutput out = planner->plan(initial_snapshot(test::std4()));
   ASSERT_EQ(out.path.size(), 2u);
-  EXPECT_EQ(out.path[0].x_m, std4().ego.x_m);
-  EXPECT_EQ(out.target_speed_mps, std4().ego.speed_mps);
+  EXPECT_EQ(out.path[0].x_m, test::std4().ego.x_m);
+  EXPECT_EQ(out.target_speed_mps, test::std4().ego.speed_mps);
   EXPECT_EQ(out.annotation->to_json().at("mode"), "echo");
   EXPECT_EQ(out.mode, "echo") << "an annotation's mode names the command's";
   ASSERT_TRUE(exec_planner_identity(fake("echo")));
@@ -70,7 +67,7 @@ TEST_P(ExecPlannerFault, IsAFindingOfItsKindAndLeavesNoProcess) {
   auto planner = make_exec_planner(fake(GetParam().mode));
   const auto start = std::chrono::steady_clock::now();
   try {
-    planner->plan(initial_snapshot(std4()));
+    planner->plan(initial_snapshot(test::std4()));
     FAIL() << "no fault";
   } catch (const PlannerFault& fault) {
     EXPECT_EQ(fault.kind, GetParam().kind) << fault.what();
@@ -92,7 +89,7 @@ TEST(ExecPlanner, TheChildIsRestartedForTheNextScenarioAfterAFault) {
   long pids[2] = {-1, -1};
   for (long& pid : pids) {
     try {
-      make_exec_planner(fake("crash"))->plan(initial_snapshot(std4()));
+      make_exec_planner(fake("crash"))->plan(initial_snapshot(test::std4()));
     } catch (const PlannerFault& fault) {
       EXPECT_EQ(fault.kind, kFaultExit);
       EXPECT_NE(std::string(fault.what()).find("killed by signal 6"), std::string::npos) << fault.what();

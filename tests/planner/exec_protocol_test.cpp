@@ -1,25 +1,22 @@
 // The exec planner protocol's messages (planner/exec_protocol.h, docs/planner_protocol.md): what
 // a request holds (and what it must not), and which replies are refused with what reason.
-#include <string>
+#include "planner/exec_protocol.h"
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "core/scenario.h"
-#include "planner/exec_protocol.h"
+#include "tests/support/std4_scenario.h"
 
 namespace mg {
 namespace {
 
 using nlohmann::json;
 
-const Scenario& std4() {
-  static const Scenario s = load_scenario(std::string(MG_SOURCE_DIR) + "/corpus/scenarios/bench_std4.json");
-  return s;
-}
-
 std::string refusal(const std::string& reply) {
   try {
-    parse_command_reply(reply, initial_snapshot(std4()));
+    parse_command_reply(reply, initial_snapshot(test::std4()));
   } catch (const ProtocolError& e) {
     return e.what();
   }
@@ -35,9 +32,9 @@ TEST(ExecProtocol, HelloNamesTheProtocol) {
 }
 
 TEST(ExecProtocol, ResetTellsTheRoadTheEgoAndTheParamsButNothingOfTheOthers) {
-  const json reset = json::parse(reset_request(std4()));
+  const json reset = json::parse(reset_request(test::std4()));
   EXPECT_EQ(reset.at("type"), "reset");
-  const json scenario = scenario_to_json(std4());
+  const json scenario = scenario_to_json(test::std4());
   EXPECT_EQ(reset.at("road"), scenario.at("road"));
   EXPECT_EQ(reset.at("ego"), scenario.at("ego"));
   EXPECT_EQ(reset.at("params"), scenario.at("params"));
@@ -46,17 +43,17 @@ TEST(ExecProtocol, ResetTellsTheRoadTheEgoAndTheParamsButNothingOfTheOthers) {
 }
 
 TEST(ExecProtocol, ObserveHoldsTheContractFields) {
-  const json observe = json::parse(observe_request(initial_snapshot(std4())));
+  const json observe = json::parse(observe_request(initial_snapshot(test::std4())));
   EXPECT_EQ(observe.at("type"), "observe");
   EXPECT_EQ(observe.at("time_s"), 0.0);
   for (const char* key : {"x_m", "y_m", "yaw_rad", "speed_mps", "lat_speed_mps", "accel_mps2"})
     EXPECT_TRUE(observe.at("ego").contains(key)) << key;
-  ASSERT_EQ(observe.at("others").size(), std4().vehicles.size());
+  ASSERT_EQ(observe.at("others").size(), test::std4().vehicles.size());
   for (const char* key : {"id", "x_m", "y_m", "yaw_rad", "speed_mps", "accel_mps2", "length_m", "width_m", "limits", "v2v_capable"})
     EXPECT_TRUE(observe.at("others")[0].contains(key)) << key;
-  EXPECT_EQ(observe.at("others")[0].at("limits"), limits_to_json(std4().vehicles[0].limits));
-  EXPECT_EQ(observe.at("others")[0].at("x_m"), std4().vehicles[0].x_m);  // numbers read back exactly
-  EXPECT_EQ(observe.at("ego").at("speed_mps"), std4().ego.speed_mps);
+  EXPECT_EQ(observe.at("others")[0].at("limits"), limits_to_json(test::std4().vehicles[0].limits));
+  EXPECT_EQ(observe.at("others")[0].at("x_m"), test::std4().vehicles[0].x_m);  // numbers read back exactly
+  EXPECT_EQ(observe.at("ego").at("speed_mps"), test::std4().ego.speed_mps);
   EXPECT_TRUE(observe.at("inbox").is_array());
 }
 
@@ -64,7 +61,7 @@ TEST(ExecProtocol, ACommandBecomesAPlanOutput) {
   const PlanOutput out = parse_command_reply(
       R"({"type":"command","path":[[0,-3.5],[50,0]],"target_speed_mps":20,"accel_limit_mps2":2,)"
       R"("outbox":[{"type":"request","to_id":1,"coop_case":"ego_behind","target_speed_mps":15}],"annotation":{"why":"gap"}})",
-      initial_snapshot(std4()));
+      initial_snapshot(test::std4()));
   ASSERT_EQ(out.path.size(), 2u);
   EXPECT_EQ(out.path[1].y_m, 0.0);
   EXPECT_EQ(out.target_speed_mps, 20.0);

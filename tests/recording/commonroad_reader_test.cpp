@@ -20,7 +20,7 @@ std::string valid_xml(const std::string& version = "2020a") {
   return synthetic_recording_xml({lane_changer(7, 50, 20, -1.75, 1.75, 3.0, 60)}, version);
 }
 
-std::string error_of(const std::string& xml) {
+std::string recording_error_of(const std::string& xml) {
   try {
     parse_recording(xml, "rec.xml");
   } catch (const InputError& e) {
@@ -118,14 +118,14 @@ TEST(CommonRoadReader, RefusesEachDefectWithOneLineNamingTheElement) {
     const std::string xml = std::regex_replace(valid_xml(), std::regex(d.from), d.to,
                                                d.every ? std::regex_constants::format_default : std::regex_constants::format_first_only);
     ASSERT_NE(xml, valid_xml()) << d.what << ": the mutation did not apply";
-    EXPECT_EQ(error_of(xml), std::string("rec.xml: ") + d.expected) << d.what;
+    EXPECT_EQ(recording_error_of(xml), std::string("rec.xml: ") + d.expected) << d.what;
   }
 }
 
 TEST(CommonRoadReader, RefusesTruncatedRecordings) {
   const std::string xml = valid_xml();
   for (const double cut : {0.1, 0.5, 0.9}) {
-    const std::string e = error_of(xml.substr(0, static_cast<std::size_t>(xml.size() * cut)));
+    const std::string e = recording_error_of(xml.substr(0, static_cast<std::size_t>(xml.size() * cut)));
     EXPECT_NE(e.find("malformed XML"), std::string::npos) << cut << ": " << e;
   }
 }

@@ -13,7 +13,7 @@
 namespace mg {
 namespace {
 
-std::string error_of(const std::string& text) {
+std::string xml_error_of(const std::string& text) {
   try {
     parse_xml_strict(text, "doc.xml");
   } catch (const InputError& e) {
@@ -37,12 +37,12 @@ TEST(XmlDocument, ReadsElementsAttributesAndTrimmedText) {
 TEST(XmlDocument, RefusesEntityDeclarationsBillionLaughs) {
   const std::string laughs =
       "<?xml version=\"1.0\"?><!DOCTYPE lolz [<!ENTITY lol \"lol\"><!ENTITY lol2 \"&lol;&lol;&lol;\">]><lolz>&lol2;</lolz>";
-  EXPECT_EQ(error_of(laughs), "doc.xml: document: DOCTYPE/ENTITY declarations are not accepted");
+  EXPECT_EQ(xml_error_of(laughs), "doc.xml: document: DOCTYPE/ENTITY declarations are not accepted");
 }
 
 TEST(XmlDocument, RefusesMalformedAndTruncatedXmlInOneLine) {
   for (const std::string text : {"<a><b></a>", "<a><b>1</b>", "", "not xml at all", "<a>\x01</a"}) {
-    const std::string e = error_of(text);
+    const std::string e = xml_error_of(text);
     EXPECT_EQ(e.rfind("doc.xml: ", 0), 0u) << text;
     EXPECT_EQ(e.find('\n'), std::string::npos) << text;
   }
@@ -52,7 +52,7 @@ TEST(XmlDocument, RefusesNestingDeeperThanTheLimit) {
   std::string deep;
   for (int i = 0; i < kMaxXmlDepth + 2; ++i) deep += "<a>";
   for (int i = 0; i < kMaxXmlDepth + 2; ++i) deep += "</a>";
-  EXPECT_NE(error_of(deep).find("nesting deeper than"), std::string::npos);
+  EXPECT_NE(xml_error_of(deep).find("nesting deeper than"), std::string::npos);
 }
 
 TEST(XmlDocument, RefusesAFileOverTheCapBeforeReadingIt) {

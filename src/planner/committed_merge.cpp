@@ -189,6 +189,10 @@ bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w) {
   return w.ego.x_m >= m.sigmoid.x_at_fraction_m(1.0 - kSigmoidEndFraction) || progress >= 1.0 - kSigmoidEndFraction;
 }
 
+std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m) {
+  return sample_path(x_from_m, x_to_m, step_m, [&](double x) { return std::max(m.sigmoid.y_at_m(x), m.start_y_m); });
+}
+
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
   if (m.committed(w.ego.y_m) || !can_still_halt(w)) return false;
   return m.decision.mode == DecisionMode::kDef1Merge
@@ -199,7 +203,7 @@ bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
 RcppCycle follow_merge(const CommittedMerge& m, const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
   RcppCycle out;
-  out.path = sample_sigmoid(m.sigmoid, w.ego.x_m - kPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kPathStepM);
+  out.path = merge_path_points(m, w.ego.x_m - kPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kPathStepM);
   const double target = merge_target_speed_mps(m, w);
   out.target_speed_mps = target;
   out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);

@@ -37,6 +37,14 @@ bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w);
 // is occupied).
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
 
+// The merge's reference path over [x_from_m, x_to_m]: the sigmoid, but never farther from the
+// main lane than start_y_m. A merge begun from a hold nearer the main lane than the side lane's
+// centre keeps that offset until the sigmoid passes it: steering back to the sigmoid first would
+// reverse the lateral motion, which an observer reads as an abort and a new attempt, and undo
+// what the hold was for (merge_path.cpp's occupancy check already puts the ego no farther from
+// the main lane than it is).
+std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m);
+
 // This cycle's command along the merge.
 RcppCycle follow_merge(const CommittedMerge& m, const WorldSnapshot& w);
 

@@ -96,10 +96,6 @@ double peak_lat_accel_bound_mps2(const Sigmoid& sig, const SpeedRamp& ramp) {
   return ramp.top_speed_squared_m2ps2() * sig.width_m * sig.kappa_per_m * sig.kappa_per_m * kPeakTable.max_curvature * (1.0 + kCurvatureSlack);
 }
 
-std::vector<PathPoint> sample_sigmoid(const Sigmoid& s, double x_from_m, double x_to_m, double step_m) {
-  return sample_path(x_from_m, x_to_m, step_m, [&](double x) { return s.y_at_m(x); });
-}
-
 std::vector<PathPoint> sample_straight(double y_m, double x_from_m, double x_to_m, double step_m) {
   return sample_path(x_from_m, x_to_m, step_m, [=](double) { return y_m; });
 }

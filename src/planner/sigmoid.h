@@ -57,7 +57,6 @@ double peak_lat_accel_bound_mps2(const Sigmoid& sig, const SpeedRamp& ramp);
 inline constexpr double kSigmoidEndFraction = 0.02;
 
 // Samples the path from x_from to x_to (inclusive, step_m apart), strictly increasing in X.
-std::vector<PathPoint> sample_sigmoid(const Sigmoid& s, double x_from_m, double x_to_m, double step_m);
 std::vector<PathPoint> sample_straight(double y_m, double x_from_m, double x_to_m, double step_m);
 
 // `param` is the candidate parameter that fixes the sigmoid's P_c: P_c itself (Definition 2), or

@@ -98,12 +98,5 @@ TEST(Sigmoid, NoAdmissibleKappaMeansNoChoice) {
   EXPECT_FALSE(choice.has_value());
 }
 
-TEST(Sigmoid, SampledPathIsStrictlyIncreasingAndCoversTheRange) {
-  const auto path = sample_sigmoid(Sigmoid{3.5, 0.1, 50, -3.5}, -10, 150.5, 1.0);
-  EXPECT_DOUBLE_EQ(path.front().x_m, -10);
-  EXPECT_DOUBLE_EQ(path.back().x_m, 150.5);
-  for (std::size_t i = 1; i < path.size(); ++i) EXPECT_GT(path[i].x_m, path[i - 1].x_m);
-}
-
 }  // namespace
 }  // namespace mg

@@ -3,6 +3,8 @@
 // still sound; its speed is v_e*, capped behind a braking leader.
 #pragma once
 
+#include <optional>
+
 #include "planner/rcpp_decision.h"
 #include "planner/sigmoid.h"
 
@@ -23,6 +25,9 @@ struct CommittedMerge {
   // abort is not committed from its first cycle: it would then follow, at RSS distance, the
   // gap's follower it is about to pass, and stop behind it for good; a campaign finding).
   double start_y_m = 0.0;
+  // Begun from a hold after an abort (side_lane_path): the Y held, below which the path does not
+  // go (merge_path_points).
+  std::optional<double> hold_y_m;
   bool committed(double ego_y_m) const {
     const double move_m = sigmoid.offset_m + sigmoid.width_m - start_y_m;
     return ego_y_m - start_y_m >= kAbortLateralFraction * move_m;
@@ -37,12 +42,13 @@ bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w);
 // is occupied).
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
 
-// The merge's reference path over [x_from_m, x_to_m]: the sigmoid, but never farther from the
-// main lane than start_y_m. A merge begun from a hold nearer the main lane than the side lane's
-// centre keeps that offset until the sigmoid passes it: steering back to the sigmoid first would
-// reverse the lateral motion, which an observer reads as an abort and a new attempt, and undo
-// what the hold was for (merge_path.cpp's occupancy check already puts the ego no farther from
-// the main lane than it is).
+// The merge's reference path over [x_from_m, x_to_m]: the sigmoid, but for a merge begun from a
+// hold never farther from the main lane than the Y held. The ego keeps that offset until the
+// sigmoid passes it: steering back to the sigmoid's start first would reverse the lateral motion,
+// which an observer reads as an abort and a new attempt, and undo what the hold was for
+// (merge_path.cpp's occupancy check already puts the ego no farther from the main lane than it
+// is). A merge begun on the way back to the centre follows the sigmoid: that return also takes
+// the ego away from the main lane's vehicles.
 std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m);
 
 // This cycle's command along the merge.

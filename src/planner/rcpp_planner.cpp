@@ -22,8 +22,12 @@ constexpr double kDeadlineTieS = 1e-9;
 constexpr double kMergeRetryAfterAbortS = 1.0;
 constexpr double kLongerMergeEveryS = 0.5;
 
-CommittedMerge commit(const WorldSnapshot& w, const Sigmoid& sig, double speed_mps, RcppDecision d) {
-  return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m)};
+CommittedMerge commit(const InSideLane& side, const WorldSnapshot& w, const Sigmoid& sig, double speed_mps,
+                      RcppDecision d) {
+  const double start_y_m = std::max(w.ego.y_m, sig.offset_m);
+  std::optional<double> hold_y_m;
+  if (side.lateral.hold_y_m) hold_y_m = start_y_m;
+  return CommittedMerge{sig, speed_mps, std::move(d), start_y_m, hold_y_m};
 }
 
 RcppCycle keep_main_lane(const WorldSnapshot& w) {
@@ -190,7 +194,7 @@ std::optional<CommittedMerge> RcppPlanner::read_reply(InSideLane& side, const Wo
       d.reason = "vehicle " + std::to_string(partner) + " accepted: " + d.reason;
       const Def2Plan plan = pending.plan;
       side.pending.reset();
-      return commit(w, plan.sigmoid, plan.ego_speed_after_mps, std::move(d));
+      return commit(side, w, plan.sigmoid, plan.ego_speed_after_mps, std::move(d));
     }
     if (m.type == MessageType::kRefuse) note = "Def. 2.3: vehicle " + std::to_string(partner) + " refused; ";
   }
@@ -234,7 +238,7 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
   if (auto plan = plan_definition1(w, MergeDurations::kRhoM, &why)) {
     side.pending.reset();
     plan->decision.reason = note + plan->decision.reason;
-    return {{}, commit(w, plan->sigmoid, plan->ve_star_mps, plan->decision)};
+    return {{}, commit(side, w, plan->sigmoid, plan->ve_star_mps, plan->decision)};
   }
   SideLaneStep step;
   step.out.path = side_lane_path(side.lateral, w);
@@ -245,7 +249,7 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
     side.next_longer_merge_s = w.time_s + kLongerMergeEveryS;
     if (auto plan = plan_definition1(w, MergeDurations::kLonger, &why)) {
       plan->decision.reason = note + plan->decision.reason;
-      return {{}, commit(w, plan->sigmoid, plan->ve_star_mps, plan->decision)};
+      return {{}, commit(side, w, plan->sigmoid, plan->ve_star_mps, plan->decision)};
     }
   }
   if (side.pending)

@@ -1,5 +1,5 @@
 // The reference path of a committed merge (planner/committed_merge.h, merge_path_points): the
-// sigmoid, never farther from the main lane than where the merge started.
+// sigmoid; for a merge begun from a hold, never farther from the main lane than the Y held.
 #include "planner/committed_merge.h"
 
 #include <algorithm>
@@ -10,16 +10,18 @@
 namespace mg {
 namespace {
 
-// A merge from lane centre Y = -3.5 to Y = 0 (W = 3.5 m) with P_c = 50 m, started at start_y_m.
-CommittedMerge merge_from(double start_y_m, double kappa_per_m = 0.1) {
+// A merge from lane centre Y = -3.5 to Y = 0 (W = 3.5 m) with P_c = 50 m, started at start_y_m,
+// from a hold there or not.
+CommittedMerge merge_from(double start_y_m, bool from_hold, double kappa_per_m = 0.1) {
   CommittedMerge m;
   m.sigmoid = Sigmoid{3.5, kappa_per_m, 50.0, -3.5};
   m.start_y_m = start_y_m;
+  if (from_hold) m.hold_y_m = start_y_m;
   return m;
 }
 
 TEST(CommittedMerge, FromTheSideLanesCentreThePathIsTheSigmoidOverTheWholeRange) {
-  const CommittedMerge m = merge_from(-3.5);
+  const CommittedMerge m = merge_from(-3.5, false);
   const auto path = merge_path_points(m, -10.0, 150.5, 1.0);
   EXPECT_DOUBLE_EQ(path.front().x_m, -10.0);
   EXPECT_DOUBLE_EQ(path.back().x_m, 150.5);
@@ -31,17 +33,26 @@ TEST(CommittedMerge, FromTheSideLanesCentreThePathIsTheSigmoidOverTheWholeRange)
 //   Y = -3.14 held after an abort  ==========________/     <- the path keeps -3.14 until the
 //   Y = -3.5  side lane centre     ____.---'                  sigmoid passes it, no swing back
 TEST(CommittedMerge, AMergeFromAHoldNearerTheMainLaneNeverSwingsBackToTheCentre) {
-  const CommittedMerge m = merge_from(-3.14);
+  const CommittedMerge m = merge_from(-3.14, true);
   const auto path = merge_path_points(m, 0.0, 100.0, 0.5);
   EXPECT_DOUBLE_EQ(path.front().y_m, -3.14);  // the sigmoid is at -3.48 there
   for (const PathPoint& p : path) EXPECT_GE(p.y_m, -3.14);
   EXPECT_DOUBLE_EQ(path.back().y_m, m.sigmoid.y_at_m(100.0));
 }
 
-RC_GTEST_PROP(CommittedMerge, ThePathOnlyEverMovesTowardTheMainLane, ()) {
+// An ego on its way back to the centre (not holding) when the merge begins goes on to the
+// sigmoid: that also takes it away from the main lane's vehicles it is beside.
+TEST(CommittedMerge, AMergeBegunOnTheWayBackToTheCentreFollowsTheSigmoid) {
+  const CommittedMerge m = merge_from(-3.05, false);
+  const auto path = merge_path_points(m, 0.0, 100.0, 0.5);
+  for (const PathPoint& p : path) EXPECT_DOUBLE_EQ(p.y_m, m.sigmoid.y_at_m(p.x_m));
+  EXPECT_LT(path.front().y_m, -3.4);
+}
+
+RC_GTEST_PROP(CommittedMerge, APathFromAHoldOnlyEverMovesTowardTheMainLane, ()) {
   const double start_y_m = -3.5 + *rc::gen::inRange(0, 175) / 100.0;  // up to the lane line
   const double kappa_per_m = *rc::gen::inRange(2, 50) / 100.0;
-  const CommittedMerge m = merge_from(start_y_m, kappa_per_m);
+  const CommittedMerge m = merge_from(start_y_m, true, kappa_per_m);
   const auto path = merge_path_points(m, -50.0, 200.0, 0.5);
   for (std::size_t i = 0; i < path.size(); ++i) {
     RC_ASSERT(path[i].y_m >= start_y_m);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "planner/rcpp_decision.h"
 #include "planner/sigmoid.h"
@@ -25,8 +26,8 @@ struct CommittedMerge {
   // abort is not committed from its first cycle: it would then follow, at RSS distance, the
   // gap's follower it is about to pass, and stop behind it for good; a campaign finding).
   double start_y_m = 0.0;
-  // Begun from a hold after an abort (side_lane_path): the Y held, below which the path does not
-  // go (merge_path_points).
+  // Begun from a hold after an abort (side_lane_path): the ego's Y at the decision, below which
+  // the path does not go (merge_path_points).
   std::optional<double> hold_y_m;
   bool committed(double ego_y_m) const {
     const double move_m = sigmoid.offset_m + sigmoid.width_m - start_y_m;

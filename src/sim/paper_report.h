@@ -52,10 +52,10 @@ PaperExperiment run_paper_experiment(const Scenario& s, const std::string& scena
 //  "path_length_reduction_pct": {...}, "scenario": path, "definitions": {...}}
 nlohmann::json paper_metrics_json(const PaperExperiment& e);
 
-std::string fig4_paths_svg(const PaperExperiment& e);
-std::string fig5_motion_svg(const PaperExperiment& e);
-// One strip per planner: who held the right of way over its run, the merge shaded.
-std::string right_of_way_svg(const PaperExperiment& e);
+// The run of a planner (std::logic_error when the experiment has none).
+const PaperRun& paper_run_of(const PaperExperiment& e, const std::string& planner);
+
+// report.md; the figures are sim/paper_figures.h's.
 std::string paper_report_markdown(const PaperExperiment& e);
 
 // Every planner merged without collision and both RCPP variants are no worse than the

@@ -190,7 +190,7 @@ bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w) {
 }
 
 std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m) {
-  const double floor_y_m = m.hold_y_m.value_or(m.sigmoid.offset_m);
+  const double floor_y_m = m.from_hold ? m.start_y_m : m.sigmoid.offset_m;
   return sample_path(x_from_m, x_to_m, step_m, [&](double x) { return std::max(m.sigmoid.y_at_m(x), floor_y_m); });
 }
 

@@ -3,7 +3,6 @@
 // still sound; its speed is v_e*, capped behind a braking leader.
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include "planner/rcpp_decision.h"
@@ -26,9 +25,9 @@ struct CommittedMerge {
   // abort is not committed from its first cycle: it would then follow, at RSS distance, the
   // gap's follower it is about to pass, and stop behind it for good; a campaign finding).
   double start_y_m = 0.0;
-  // Begun from a hold after an abort (side_lane_path): the ego's Y at the decision, below which
-  // the path does not go (merge_path_points).
-  std::optional<double> hold_y_m;
+  // Begun from a hold after an abort (side_lane_path): the path then stays at or above
+  // start_y_m (merge_path_points).
+  bool from_hold = false;
   bool committed(double ego_y_m) const {
     const double move_m = sigmoid.offset_m + sigmoid.width_m - start_y_m;
     return ego_y_m - start_y_m >= kAbortLateralFraction * move_m;
@@ -44,7 +43,7 @@ bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w);
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
 
 // The merge's reference path over [x_from_m, x_to_m]: the sigmoid, but for a merge begun from a
-// hold never farther from the main lane than the Y held. The ego keeps that offset until the
+// hold never farther from the main lane than start_y_m. The ego keeps that offset until the
 // sigmoid passes it: steering back to the sigmoid's start first would reverse the lateral motion,
 // which an observer reads as an abort and a new attempt, and undo what the hold was for
 // (merge_path.cpp's occupancy check already puts the ego no farther from the main lane than it

@@ -24,10 +24,8 @@ constexpr double kLongerMergeEveryS = 0.5;
 
 CommittedMerge commit(const InSideLane& side, const WorldSnapshot& w, const Sigmoid& sig, double speed_mps,
                       RcppDecision d) {
-  const double start_y_m = std::max(w.ego.y_m, sig.offset_m);
-  std::optional<double> hold_y_m;
-  if (side.lateral.hold_y_m) hold_y_m = start_y_m;
-  return CommittedMerge{sig, speed_mps, std::move(d), start_y_m, hold_y_m};
+  return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m),
+                        side.lateral.hold_y_m.has_value()};
 }
 
 RcppCycle keep_main_lane(const WorldSnapshot& w) {

@@ -2,13 +2,12 @@
 // observable trace prints and writes exactly what `check` did for the run it was saved from, and
 // every hostile trace (tests/hostile/traces/) is refused with exit 2, one line on stderr naming the
 // file and the JSON path, nothing on stdout and nothing written.
-#include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "cli_runner.h"
 #include "tests/support/scratch_files.h"

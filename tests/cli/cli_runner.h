@@ -6,8 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/scratch_files.h"  // slurp, for the CLI tests
-
 namespace mg::test {
 
 struct CliResult {

@@ -1,11 +1,12 @@
 // Every command that writes checks its output paths before any work (issue 20): a path that
 // cannot be created (/proc/x), a file where a directory is expected, or a directory below a file
 // gives exit 2 and one line naming the option and the path, nothing on stdout, nothing written.
-#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+
+#include <gtest/gtest.h>
 
 #include "cli_runner.h"
 #include "tests/support/scratch_files.h"

@@ -4,7 +4,6 @@
 // a usage error (exit 2, one line), campaigns are deterministic across --jobs, and neither the
 // end of a campaign nor Ctrl-C leaves a planner process behind. Waits are bounded, never timed.
 #include <fcntl.h>
-#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,11 +12,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
 #include "tests/support/scratch_files.h"

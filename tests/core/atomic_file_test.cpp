@@ -2,12 +2,12 @@
 // behind; remove_stale_temporaries deletes only the leftovers of writers that no longer run.
 #include "core/atomic_file.h"
 
-#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "tests/support/scratch_files.h"
 

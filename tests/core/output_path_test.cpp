@@ -2,11 +2,10 @@
 // command makes before any work; each refusal is one line naming the option, path and reason.
 #include "core/output_path.h"
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
+
+#include <gtest/gtest.h>
 
 #include "tests/support/scratch_files.h"
 

@@ -1,7 +1,5 @@
 #include "fuzz/campaign.h"
 
-#include <gtest/gtest.h>
-
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -9,6 +7,8 @@
 #include <mutex>
 #include <set>
 #include <thread>
+
+#include <gtest/gtest.h>
 
 #include "core/input_error.h"
 #include "fake_check.h"

@@ -1,7 +1,6 @@
 // `mergeguard fuzz` and `mergeguard replay` through the built binary (env MG_CLI): the JSON
 // summary contract, exit codes, determinism across --jobs, stop signals, replay and --update.
 #include <fcntl.h>
-#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,10 +10,11 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <nlohmann/json.hpp>
 #include <optional>
-#include <sstream>
 #include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "fuzz/corpus_case.h"
 #include "tests/support/scratch_files.h"

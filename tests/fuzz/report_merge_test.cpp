@@ -1,9 +1,9 @@
 #include "fuzz/report_merge.h"
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+
+#include <gtest/gtest.h>
 
 #include "core/input_error.h"
 #include "fake_check.h"

@@ -16,7 +16,7 @@ CommittedMerge merge_from(double start_y_m, bool from_hold, double kappa_per_m =
   CommittedMerge m;
   m.sigmoid = Sigmoid{3.5, kappa_per_m, 50.0, -3.5};
   m.start_y_m = start_y_m;
-  if (from_hold) m.hold_y_m = start_y_m;
+  m.from_hold = from_hold;
   return m;
 }
 

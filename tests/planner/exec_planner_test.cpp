@@ -2,17 +2,16 @@
 // process tests/planner/exec_helpers/fake_exec_planner.cpp: a correct one answers through one
 // reused child; each misbehaviour is a PlannerFault of its kind, within the timeout, with no
 // process left; a command that does not answer hello cannot start. Timing bounds are generous.
-#include "planner/exec_planner.h"
-
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <ostream>
 #include <regex>
 #include <string>
 #include <thread>
 
+#include <gtest/gtest.h>
+
 #include "core/scenario.h"
+#include "planner/exec_planner.h"
 #include "planner/planner_fault.h"
 #include "process_probe.h"
 #include "tests/support/std4_scenario.h"

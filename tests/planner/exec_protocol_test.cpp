@@ -1,12 +1,11 @@
 // The exec planner protocol's messages (planner/exec_protocol.h, docs/planner_protocol.md): what
 // a request holds (and what it must not), and which replies are refused with what reason.
-#include "planner/exec_protocol.h"
+#include <string>
 
 #include <gtest/gtest.h>
 
-#include <string>
-
 #include "core/scenario.h"
+#include "planner/exec_protocol.h"
 #include "tests/support/std4_scenario.h"
 
 namespace mg {

@@ -11,10 +11,10 @@
 #include <sstream>
 #include <string>
 
+#include "check/checked_run.h"
 #include "core/scenario.h"
 #include "planner/exec_planner.h"
 #include "planner/exec_protocol.h"
-#include "sim/checked_run.h"
 #include "tests/support/std4_scenario.h"  // the benchmarks' scenario, shared with the tests
 
 #ifdef MG_FAKE_EXEC_PLANNER

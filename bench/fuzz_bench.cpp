@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "check/checked_run.h"
 #include "core/collision.h"
 #include "core/rss.h"
 #include "core/scenario.h"
@@ -14,7 +15,6 @@
 #include "fuzz/scenario_gen.h"
 #include "fuzz/shrink.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
 #include "tests/support/std4_scenario.h"  // the benchmarks' scenario, shared with the tests
 
 namespace {

@@ -1,5 +1,4 @@
 #include "fuzz/campaign_report.h"
-#include "core/svg_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +9,8 @@
 #include "core/atomic_file.h"
 #include "fuzz/corpus_case.h"
 #include "fuzz/rule_coverage.h"
+#include "report/report_table.h"
+#include "report/svg_plot.h"
 
 namespace mg::fuzz {
 namespace {
@@ -35,57 +36,14 @@ std::string relative_to(const std::string& path, const std::string& dir) {
   return ec ? path : rel.string();
 }
 
-std::string html_escape(const std::string& s) { return svg::xml_escape(s); }
-
-// One table as rows of cells, rendered to Markdown or HTML.
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-};
-
-std::string markdown(const Table& t) {
-  std::string out = "|";
-  for (const auto& h : t.header) out += " " + h + " |";
-  out += "\n|";
-  for (std::size_t i = 0; i < t.header.size(); ++i) out += "---|";
-  out += "\n";
-  for (const auto& row : t.rows) {
-    out += "|";
-    for (const auto& cell : row) out += " " + cell + " |";
-    out += "\n";
-  }
-  return out;
-}
-
-// Cells may hold a Markdown link "[text](href)"; HTML renders it as an anchor.
-std::string html_cell(const std::string& cell) {
-  const auto mid = cell.find("](");
-  if (!cell.empty() && cell.front() == '[' && mid != std::string::npos && cell.back() == ')')
-    return "<a href=\"" + html_escape(cell.substr(mid + 2, cell.size() - mid - 3)) + "\">" +
-           html_escape(cell.substr(1, mid - 1)) + "</a>";
-  return html_escape(cell);
-}
-
-std::string html(const Table& t) {
-  std::string out = "<table>\n<tr>";
-  for (const auto& h : t.header) out += "<th>" + html_escape(h) + "</th>";
-  out += "</tr>\n";
-  for (const auto& row : t.rows) {
-    out += "<tr>";
-    for (const auto& cell : row) out += "<td>" + html_cell(cell) + "</td>";
-    out += "</tr>\n";
-  }
-  return out + "</table>\n";
-}
-
-Table count_table(const std::string& what, const std::map<std::string, std::uint64_t>& counts) {
-  Table t{{what, "failures"}, {}};
+ReportTable count_table(const std::string& what, const std::map<std::string, std::uint64_t>& counts) {
+  ReportTable t{{what, "failures"}, {}};
   for (const auto& [k, n] : counts) t.rows.push_back({k, std::to_string(n)});
   return t;
 }
 
-Table signature_table(const CampaignResult& r, const std::string& dir, const std::map<std::string, std::string>& reports) {
-  Table t{{"signature", "scenarios", "first run", "case", "vehicles", "shrink steps", "liability report"}, {}};
+ReportTable signature_table(const CampaignResult& r, const std::string& dir, const std::map<std::string, std::string>& reports) {
+  ReportTable t{{"signature", "scenarios", "first run", "case", "vehicles", "shrink steps", "liability report"}, {}};
   for (const auto& [sig, rec] : r.signatures) {
     std::string case_cell = rec.known_before ? "already in corpus" : "not written";
     if (!rec.case_path.empty()) case_cell = "[" + std::filesystem::path(rec.case_path).filename().string() + "](" + relative_to(rec.case_path, dir) + ")";
@@ -102,8 +60,8 @@ Table signature_table(const CampaignResult& r, const std::string& dir, const std
 
 // Statistics are over the scenarios that exercised the rule; a rule that never applied says so
 // instead of showing a sentinel.
-Table margin_table(const CampaignOptions& o, const CampaignResult& r) {
-  Table t{{"rule", "unit", "scenarios", "exercised", "violated", "min", "mean"}, {}};
+ReportTable margin_table(const CampaignOptions& o, const CampaignResult& r) {
+  ReportTable t{{"rule", "unit", "scenarios", "exercised", "violated", "min", "mean"}, {}};
   for (std::size_t b = 0; b < kMarginBinEdges.size() + 1; ++b) t.header.push_back(bin_label(b));
   for (const RuleCoverage& c : rule_coverage(o.planner, r)) {
     const auto it = r.margins.find(c.rule);
@@ -171,11 +129,7 @@ std::string histogram_section(const CampaignOptions& o, const CampaignResult& r)
 // samples): whether findings were still coming when the campaign stopped.
 std::string findings_over_time(const CampaignResult& r) {
   if (r.timeline.size() < 2) return "";
-  svg::Plot plot;
-  plot.x_label = "elapsed [s]";
-  plot.y_label = "count";
-  plot.width_px = 560;
-  plot.height_px = 260;
+  svg::Plot plot = svg::frame("", "elapsed [s]", "count", 560, 260);
   plot.legend = svg::LegendCorner::kTopLeft;
   svg::Series failing{"failing scenarios", {}, {}, "#d9480f", "", 1.6};
   svg::Series signatures{"signatures", {}, {}, "#1f77b4", "6 3", 1.6};
@@ -192,7 +146,7 @@ std::string findings_over_time(const CampaignResult& r) {
 
 struct Section {
   std::string title;
-  Table table;
+  ReportTable table;
 };
 
 std::string headline(const CampaignOptions& o, const CampaignResult& r) {
@@ -358,8 +312,8 @@ void write_campaign_report(const std::string& dir, const CampaignOptions& o, con
   for (const std::string& w : warnings)
     page += std::string(w.rfind("Warning", 0) == 0 ? "<p class=\"warning\">" : "<p class=\"note\">") + html_escape(w) + "</p>\n";
   for (const Section& s : sections) {
-    md += "\n## " + s.title + "\n\n" + (s.table.rows.empty() ? "None.\n" : markdown(s.table));
-    page += "<h2>" + html_escape(s.title) + "</h2>\n" + (s.table.rows.empty() ? "<p>None.</p>\n" : html(s.table));
+    md += "\n## " + s.title + "\n\n" + (s.table.rows.empty() ? "None.\n" : table_markdown(s.table));
+    page += "<h2>" + html_escape(s.title) + "</h2>\n" + (s.table.rows.empty() ? "<p>None.</p>\n" : table_html(s.table));
   }
   page += over_time + histogram_section(o, r);
   page += "</body></html>\n";

@@ -3,18 +3,19 @@
 // rc::gen::weightedElement do not shrink at all, and rc::gen::inRange collapses at size 0.
 #pragma once
 
-#include <cassert>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 #include <rapidcheck.h>
 
+#include "core/demand.h"
+
 namespace mg::fuzz {
 
 template <typename T>
 rc::Gen<T> gen_choice(std::vector<std::pair<std::uint64_t, T>> weighted) {
-  assert(!weighted.empty());
+  MG_DEMAND(!weighted.empty());
   return rc::Gen<T>([weighted](const rc::Random& random, int /*size*/) {
     std::uint64_t total = 0;
     for (const auto& [w, v] : weighted) total += w;
@@ -30,7 +31,7 @@ rc::Gen<T> gen_choice(std::vector<std::pair<std::uint64_t, T>> weighted) {
 
 // Integer uniform in [lo, hi], shrinking toward lo, independent of the size.
 inline rc::Gen<std::uint64_t> gen_uint(std::uint64_t lo, std::uint64_t hi) {
-  assert(lo <= hi);
+  MG_DEMAND(lo <= hi);
   return rc::Gen<std::uint64_t>([lo, hi](const rc::Random& random, int /*size*/) {
     const std::uint64_t value = lo + rc::Random(random).next() % (hi - lo + 1);
     return rc::shrinkable::shrinkRecur(value, [lo](std::uint64_t x) { return rc::shrink::towards<std::uint64_t>(x, lo); });

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
+
+#include "core/demand.h"
 
 namespace mg::fuzz {
 namespace {
@@ -55,7 +56,7 @@ std::vector<double> real_shrinks(const RealRange& range, double value) {
 }
 
 rc::Gen<double> gen_real(const RealRange& range) {
-  assert(range.resolution > 0.0 && range.lo <= range.nominal && range.nominal <= range.hi);
+  MG_DEMAND(range.resolution > 0.0 && range.lo <= range.nominal && range.nominal <= range.hi);
   return rc::Gen<double>([range](const rc::Random& random, int /*size*/) {
     const auto steps = static_cast<std::uint64_t>(std::llround((range.hi - range.lo) / range.resolution));
     const auto k = rc::Random(random).next() % (steps + 1);

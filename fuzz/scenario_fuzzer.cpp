@@ -13,6 +13,7 @@
 #include <string>
 
 #include "audit/recording_audit.h"
+#include "check/checked_run.h"
 #include "core/input_error.h"
 #include "core/json_reader.h"
 #include "core/observed_trace_json.h"
@@ -23,7 +24,6 @@
 #include "recording/commonroad_reader.h"
 #include "recording/road_layout.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
 
 namespace {
 

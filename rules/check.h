@@ -1,7 +1,7 @@
 // The rule checker's front door (spec §8): judge an observable trace (core/observed_trace.h) by
 // every rule monitor and assign liability. It reads the trace's declarations, observed states,
 // V2V channel and the rule parameters, never its planner annotations; `rules/` knows nothing of
-// planners or the simulator (sim/checked_run.h simulates and then calls this).
+// planners or the simulator (check/checked_run.h simulates and then calls this).
 #pragma once
 
 #include <cstdint>

@@ -6,7 +6,7 @@
 
 #include "audit/audit_plots.h"
 #include "audit/audit_report.h"
-#include "core/svg_plot.h"
+#include "report/svg_plot.h"
 
 namespace mg {
 namespace {

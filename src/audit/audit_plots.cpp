@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/svg_plot.h"
+#include "report/svg_plot.h"
 
 namespace mg {
 namespace {
@@ -40,12 +40,7 @@ void equal_aspect(svg::Plot& p) {
 }  // namespace
 
 std::string road_shape_svg(const RecordingAudit& a, const MergeAudit& m) {
-  svg::Plot p;
-  p.title = "The road in its own shape (file x, y), paths over the window";
-  p.x_label = "x [m]";
-  p.y_label = "y [m]";
-  p.width_px = 720;
-  p.height_px = 480;
+  svg::Plot p = svg::frame("The road in its own shape (file x, y), paths over the window", "x [m]", "y [m]", 720, 480);
   for (std::size_t k = 0; k < a.road->main_lanes.size(); ++k) {
     const Lane& l = a.road->main_lanes[k];
     p.series.push_back(polyline(l.left_bound, k == 0 ? "main lanes" : "", "#999999", ""));
@@ -71,12 +66,7 @@ std::string road_shape_svg(const RecordingAudit& a, const MergeAudit& m) {
 }
 
 std::string curvilinear_svg(const MergeAudit& m) {
-  svg::Plot p;
-  p.title = "Curvilinear frame (judged): target lane at Y = 0, side lane at Y = -W";
-  p.x_label = "X = s along the reference line [m]";
-  p.y_label = "Y across the road [m]";
-  p.width_px = 720;
-  p.height_px = 360;
+  svg::Plot p = svg::frame("Curvilinear frame (judged): target lane at Y = 0, side lane at Y = -W", "X = s along the reference line [m]", "Y across the road [m]", 720, 360);
   const ObservedTrace& t = m.merge.trace;
   double x0 = 1e300, x1 = -1e300;
   for (std::size_t i = 0; i < t.vehicles.size(); ++i) {

@@ -8,9 +8,9 @@
 #include "audit/audit_plots.h"
 #include "core/atomic_file.h"
 #include "core/observed_trace_json.h"
-#include "core/svg_plot.h"
-#include "rules/report_json.h"
-#include "rules/report_markdown.h"
+#include "report/report_json.h"
+#include "report/report_markdown.h"
+#include "report/svg_plot.h"
 
 namespace mg {
 namespace {

@@ -6,8 +6,8 @@
 
 #include "cli/command.h"
 #include "core/output_path.h"
-#include "rules/report_json.h"
-#include "rules/report_markdown.h"
+#include "report/report_json.h"
+#include "report/report_markdown.h"
 
 namespace mg::cli {
 namespace {

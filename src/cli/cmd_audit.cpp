@@ -18,7 +18,7 @@
 #include "core/output_path.h"
 #include "recording/commonroad_reader.h"
 #include "recording/road_layout.h"
-#include "rules/report_markdown.h"
+#include "report/report_markdown.h"
 
 namespace mg::cli {
 namespace {

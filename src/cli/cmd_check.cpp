@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "check/checked_run.h"
 #include "cli/check_output.h"
 #include "cli/command.h"
 #include "cli/planner_option.h"
@@ -17,7 +18,6 @@
 #include "planner/planner.h"
 #include "planner/planner_fault.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
 
 namespace mg::cli {
 namespace {

@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "check/checked_run.h"
 #include "cli/command.h"
 #include "cli/fatal_signals.h"
 #include "cli/planner_option.h"
@@ -28,9 +29,8 @@
 #include "planner/exec_planner.h"
 #include "planner/planner.h"
 #include "planner/planner_fault.h"
+#include "report/report_json.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
-#include "rules/report_json.h"
 
 namespace mg::cli {
 namespace {

@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "check/checked_run.h"
 #include "cli/command.h"
 #include "cli/planner_option.h"
 #include "core/input_error.h"
@@ -21,7 +22,6 @@
 #include "planner/exec_planner.h"
 #include "planner/planner.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
 
 namespace mg::cli {
 namespace {

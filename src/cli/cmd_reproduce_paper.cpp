@@ -11,10 +11,8 @@
 #include "core/atomic_file.h"
 #include "core/output_path.h"
 #include "core/scenario.h"
-#include "sim/checked_run.h"
-#include "rules/liability.h"
-#include "sim/paper_report.h"
-#include "sim/paper_search.h"
+#include "paper/paper_report.h"
+#include "paper/paper_search.h"
 
 namespace mg::cli {
 namespace {
@@ -31,10 +29,6 @@ int run_search(const Scenario& base, const std::string& base_path, const std::st
             << kPaperClaimCount << " rows; wrote " << table_path << (scenario_out.empty() ? "" : " and " + scenario_out)
             << "\n";
   return kExitOk;
-}
-
-std::vector<std::pair<double, int>> right_of_way_of(const Scenario& s, const Trace& t) {
-  return check_trace(s, t).right_of_way;
 }
 
 int run(const std::vector<std::string>& args) {
@@ -59,7 +53,7 @@ int run(const std::vector<std::string>& args) {
     return run_search(scenario, scenario_path, search_out, search_scenario);
   }
   prepare_output_dir("--out", out_dir);
-  const PaperExperiment experiment = run_paper_experiment(scenario, scenario_path, right_of_way_of);
+  const PaperExperiment experiment = run_paper_experiment(scenario, scenario_path, /*with_right_of_way=*/true);
   write_paper_report(experiment, out_dir);
   std::vector<std::string> why;
   const bool consistent = paper_results_consistent(experiment, why);

@@ -1,10 +1,10 @@
 #include "planner/definition1.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 
+#include "core/demand.h"
 #include "core/rss.h"
 
 namespace mg {
@@ -70,7 +70,7 @@ std::vector<LaneGap> enumerate_gaps(std::vector<MainLaneVehicle> lane_vehicles) 
 }
 
 SpeedInterval solve_def1_interval(const Def1Context& c, const LaneGap& gap) {
-  assert(c.speed_limit_mps > 0.0 && c.merge_duration_s > 0.0);
+  MG_DEMAND(c.speed_limit_mps > 0.0 && c.merge_duration_s > 0.0);
   double lo = 0.0;
   double hi = c.speed_limit_mps;
   if (gap.follower) {

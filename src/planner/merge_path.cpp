@@ -1,10 +1,10 @@
 #include "planner/merge_path.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 
+#include "core/demand.h"
 #include "core/rss.h"
 
 namespace mg {
@@ -111,7 +111,7 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const M
 }
 
 BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2) {
-  assert(lane_y_m > 0.0);
+  MG_DEMAND(lane_y_m > 0.0);
   // Braking at its b_max from now: nothing in the merge depends on a vehicle of another lane, and
   // one that brakes legally while the ego is laterally close to it (a weak lateral brake makes
   // D_lat reach across a lane) forces the ego's RSS braking in mid-merge, into its own gap's safe
@@ -270,7 +270,7 @@ struct OccupancyScan {
 
 bool occupancy_clear(const PlannerSetup& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
                      const OccupancyInstants& when, const GapTracks& tracks, double buffer_m, OccupancyMemo* memo) {
-  assert(when.step_s > 0.0);
+  MG_DEMAND(when.step_s > 0.0);
   // The instants k step - elapsed within [0, horizon]: k from k_first to k_last.
   const int k_first = static_cast<int>(std::ceil(when.elapsed_s / when.step_s - 1e-9));
   const int k_last = static_cast<int>(std::floor((when.horizon_s + when.elapsed_s) / when.step_s + 1e-9));

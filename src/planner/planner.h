@@ -8,7 +8,6 @@
 // built-in or not.
 #pragma once
 
-#include <cassert>
 #include <cstddef>
 #include <memory>
 #include <utility>
@@ -17,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/demand.h"
 #include "core/scenario.h"
 #include "core/v2v_message.h"
 #include "core/vehicle_state.h"
@@ -76,7 +76,7 @@ struct PathPoint {
 // strictly increasing X.
 template <class YOf>
 std::vector<PathPoint> sample_path(double x_from_m, double x_to_m, double step_m, YOf y_of) {
-  assert(step_m > 0.0 && x_to_m > x_from_m);
+  MG_DEMAND(step_m > 0.0 && x_to_m > x_from_m);
   std::vector<PathPoint> path;
   path.reserve(static_cast<std::size_t>((x_to_m - x_from_m) / step_m) + 2);
   for (int i = 0; x_from_m + i * step_m < x_to_m - 1e-3 * step_m; ++i) {

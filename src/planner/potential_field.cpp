@@ -1,8 +1,9 @@
 #include "planner/potential_field.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
+
+#include "core/demand.h"
 
 namespace mg {
 
@@ -16,7 +17,7 @@ double road_mark_potential(double y_m, double boundary_y_m, bool boundary_is_lef
 }
 
 ObstacleField obstacle_field_from_rss(double x_m, double y_m, double d_lat_m, double d_lon_m) {
-  assert(d_lat_m > 0.0 && d_lon_m > 0.0);
+  MG_DEMAND(d_lat_m > 0.0 && d_lon_m > 0.0);
   return ObstacleField{x_m, y_m, 1.0 / (d_lat_m * d_lat_m), 1.0 / (d_lon_m * d_lon_m)};
 }
 
@@ -34,7 +35,7 @@ double lane_centre_potential(double d_m, double xi, double search_distance_m, La
 }
 
 double field_potential(const FieldScene& scene, const PlannerParams& p, double x_m, double y_m) {
-  assert(scene.road != nullptr);
+  MG_DEMAND(scene.road != nullptr);
   const Road& road = *scene.road;
   const double w = road.lane_width_m;
   const bool side_lane_here = x_m >= road.side_lane_start_x_m && x_m <= road.side_lane_end_x_m;

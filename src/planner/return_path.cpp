@@ -1,8 +1,9 @@
 #include "planner/return_path.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
+
+#include "core/demand.h"
 
 namespace mg {
 
@@ -21,7 +22,7 @@ double Quintic::curvature_at_per_m(double x_m) const {
 // (y_end, 0, 0).
 Quintic quintic_to_level(double x0_m, double y0_m, double slope0, double curvature0_per_m, double y_end_m,
                          double length_m) {
-  assert(length_m > 0.0);
+  MG_DEMAND(length_m > 0.0);
   const double L = length_m, rise = y_end_m - y0_m, c0 = curvature0_per_m;
   return Quintic{x0_m, L,
                  {y0_m, slope0, 0.5 * c0, (20.0 * rise - 12.0 * slope0 * L - 3.0 * c0 * L * L) / (2.0 * L * L * L),
@@ -97,8 +98,8 @@ ReturnPath lateral_stop(double x0_m, double y0_m, double slope0, const ReturnLim
 }  // namespace
 
 ReturnPath plan_return_path(double x0_m, double y0_m, double slope0, double y_end_m, const ReturnLimits& limits) {
-  assert(y_end_m < y0_m && std::isfinite(slope0));
-  assert(limits.cap_curvature_per_m > 0.0 && limits.comfort_curvature_per_m > 0.0);
+  MG_DEMAND(y_end_m < y0_m && std::isfinite(slope0));
+  MG_DEMAND(limits.cap_curvature_per_m > 0.0 && limits.comfort_curvature_per_m > 0.0);
   double x_m = 0.0, y_m = 0.0, slope = 0.0, curvature_per_m = 0.0;
   ReturnPath p = lateral_stop(x0_m, y0_m, slope0, limits, x_m, y_m, slope, curvature_per_m);
   p.back = shortest_to_level(x_m, y_m, slope, curvature_per_m, y_end_m,
@@ -107,7 +108,7 @@ ReturnPath plan_return_path(double x0_m, double y0_m, double slope0, double y_en
 }
 
 ReturnPath plan_lateral_hold(double x0_m, double y0_m, double slope0, const ReturnLimits& limits) {
-  assert(slope0 > 0.0 && limits.cap_curvature_per_m > 0.0 && limits.comfort_curvature_per_m > 0.0);
+  MG_DEMAND(slope0 > 0.0 && limits.cap_curvature_per_m > 0.0 && limits.comfort_curvature_per_m > 0.0);
   // The quintic from slope0 (curvature 0) to level that rises half of slope0 * length: its slope,
   // slope0 (1 - u)^2 (1 + 2u) at u = d / length, never changes sign, and its |y''| peaks at
   // 1.5 slope0 / length (mid-way). So length = 1.5 slope0 / c and the rise 0.75 slope0^2 / c for

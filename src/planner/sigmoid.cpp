@@ -1,9 +1,10 @@
 #include "planner/sigmoid.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
+
+#include "core/demand.h"
 
 namespace mg {
 namespace {
@@ -24,7 +25,7 @@ double Sigmoid::y_at_m(double x_m) const {
 }
 
 double Sigmoid::x_at_fraction_m(double fraction) const {
-  assert(fraction > 0.0 && fraction < 1.0);
+  MG_DEMAND(fraction > 0.0 && fraction < 1.0);
   return pc_m + std::log(fraction / (1.0 - fraction)) / kappa_per_m;
 }
 

@@ -1,10 +1,10 @@
 #include "sim/behaviour.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 
+#include "core/demand.h"
 #include "core/rss.h"
 
 namespace mg {
@@ -55,7 +55,7 @@ Leaders with_ego(const Scenario& s, int lane, double x, const std::optional<Lead
 
 Leaders find_leaders(const Scenario& s, const std::vector<VehicleState>& others, std::size_t index,
                      const VehicleState& ego) {
-  assert(index < others.size() && others.size() == s.vehicles.size());
+  MG_DEMAND(index < others.size() && others.size() == s.vehicles.size());
   const int lane = s.vehicles[index].lane;
   const double x = others[index].x_m;
   std::optional<Leader> best;  // the nearest ahead; the lowest index among equal distances

@@ -1,9 +1,9 @@
 #include "sim/path_tracker.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
+#include "core/demand.h"
 #include "sim/single_track.h"
 
 namespace mg {
@@ -46,7 +46,7 @@ double chord_heading(const PathPoint& a, const PathPoint& b) {
 }  // namespace
 
 PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m, double preview_m) {
-  assert(path.size() >= 2 && preview_m > 0.0);
+  MG_DEMAND(path.size() >= 2 && preview_m > 0.0);
   // The segment whose X range holds x_m, then its neighbours, by perpendicular distance.
   auto it = std::upper_bound(path.begin(), path.end(), x_m, [](double x, const PathPoint& p) { return x < p.x_m; });
   const std::size_t last_seg = path.size() - 2;

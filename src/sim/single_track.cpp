@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
+
+#include "core/demand.h"
 
 namespace mg {
 namespace {
@@ -100,7 +101,7 @@ double limit_accel(double request_mps2, const Limits& limits) {
 
 VehicleState step_single_track(const VehicleState& s, const EgoCommand& cmd, const EgoDynamics& d,
                                const Limits& limits, double dt_s) {
-  assert(dt_s > 0.0);
+  MG_DEMAND(dt_s > 0.0);
   const double steer = limit_steering(s.steer_rad, cmd.steer_rad, d, dt_s);
   const double accel = limit_accel(cmd.accel_mps2, limits);
   const double speed = std::hypot(s.vx_mps, s.vy_mps);

@@ -9,12 +9,12 @@
 #include <gtest/gtest.h>
 
 #include "audit/recording_audit.h"
+#include "check/checked_run.h"
 #include "core/scenario.h"
 #include "recording/commonroad_reader.h"
 #include "recording/commonroad_writer.h"
 #include "recording/road_layout.h"
 #include "recording/trace_recording.h"
-#include "sim/checked_run.h"
 
 namespace mg {
 namespace {

@@ -2,10 +2,10 @@
 // recorded verdict, violations and failed properties from its JSON alone.
 #include <gtest/gtest.h>
 
+#include "check/checked_run.h"
 #include "fuzz/corpus_case.h"
 #include "fuzz/replay.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
 
 namespace mg::fuzz {
 namespace {

@@ -1,4 +1,4 @@
-// A test-only stand-in for check_scenario (sim/checked_run.h) with a planted failure that shrinking can minimise:
+// A test-only stand-in for check_scenario (check/checked_run.h) with a planted failure that shrinking can minimise:
 // rule "fake_proximity" fails (ego liable) when a main-lane vehicle starts within
 // kFakeProximityM of the ego in X. Deterministic; the digest hashes the scenario JSON.
 #pragma once

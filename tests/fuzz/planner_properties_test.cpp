@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "check/checked_run.h"
 #include "fuzz/properties.h"
 #include "fuzz/scenario_gen.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
 
 namespace mg::fuzz {
 namespace {

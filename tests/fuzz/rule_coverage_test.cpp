@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "check/checked_run.h"
 #include "fuzz/campaign_report.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
 #include "rules/rule_catalog.h"
 
 namespace mg::fuzz {

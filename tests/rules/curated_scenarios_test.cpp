@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "check/checked_run.h"
 #include "core/scenario.h"
 #include "rules/check.h"
-#include "sim/checked_run.h"
 
 namespace mg {
 namespace {

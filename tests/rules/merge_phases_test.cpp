@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "check/observed_run.h"
 #include "planner/planner.h"
-#include "sim/observed_run.h"
 #include "sim/simulator.h"
 #include "trace_builder.h"
 

@@ -3,7 +3,7 @@
 // b_max = 8 m/s2, length 4.8 m, width 1.9 m, mu = 0.1 m, a_lat = 0.2, b_lat = 0.8 m/s2.
 //
 // A test builds a simulator Trace (sim/trace.h) of a Scenario, as a run would produce; the rules
-// judge only its observable trace (sim/observed_run.h), exactly as rules/check.cpp does: the
+// judge only its observable trace (check/observed_run.h), exactly as rules/check.cpp does: the
 // merge phases and attempts are read from the ego's observed motion, the right of way from them
 // and from the V2V channel. Planner decisions in a Trace are annotations, never read by a rule.
 #pragma once
@@ -14,14 +14,14 @@
 #include <optional>
 #include <utility>
 
+#include "check/checked_run.h"
+#include "check/observed_run.h"
 #include "core/scenario.h"
 #include "rules/check.h"
 #include "rules/liability.h"
 #include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
 #include "rules/monitor.h"
-#include "sim/checked_run.h"
-#include "sim/observed_run.h"
 #include "sim/trace.h"
 
 namespace mg::test {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Memory and time of `mergeguard check` as the scene grows (issue 20): a merge with N main-lane
+# Memory and time of `mergeguard check` as the scene grows: a merge with N main-lane
 # vehicles (IDM, spread over 4 lanes, 60 m apart in each) and a long horizon. Prints one line per size:
 # vehicles, horizon, peak resident memory (MB), wall and CPU (user + system) time (s), the HTML
 # report's size (KB) and the verdict. CPU time is the steadier figure on a shared machine.

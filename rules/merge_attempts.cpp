@@ -127,7 +127,7 @@ std::optional<CoopExchange> accepted_exchange(const ObservedTrace& t, const Rule
 }
 
 // Definition 2 grants the right of way toward the partner; the gap's other vehicle stays
-// Definition 1's (spec §8, review point 15). At the request: for 2.1 (ego ahead of o) the vehicle
+// Definition 1's (spec §8, "Right of way per pair"). At the request: for 2.1 (ego ahead of o) the vehicle
 // ahead of o must satisfy ineq. (1.2) over rho_c + rho_m with the ego at its speed; for 2.2 the
 // vehicle behind o must satisfy ineq. (1.1) over 2 rho_c + rho_m with the ego at its speed after
 // braking at b_min for rho_c.

@@ -1,4 +1,4 @@
-// The round trip (issue #17): a simulated run's observable trace written out as a CommonRoad
+// The round trip: a simulated run's observable trace written out as a CommonRoad
 // recording, on a straight road and on a bend, read back and audited, gives the verdict and liable
 // party that `check` gave for the simulation (the audit's profile is the scenario's own
 // parameters and declared limits, its window the whole run). The rcpp scenarios of corpus/scenarios/

@@ -24,7 +24,7 @@ for k in range(n):
     vehicles.append({"id": k + 1, "lane": lane, "x_m": -400.0 + 60.0 * (k // lanes) + 13.0 * lane,
                      "speed_mps": 22.0 + 0.5 * lane, "behaviour": {"type": "idm"}})
 print(json.dumps({"format_version": 1, "name": f"scale_{n}_vehicles",
-                  "description": f"issue-20 scale benchmark: {n} main-lane vehicles, {horizon:g} s",
+                  "description": f"scale benchmark: {n} main-lane vehicles, {horizon:g} s",
                   "road": {"main_lanes": lanes, "side_lane_end_x_m": 300.0},
                   "ego": {"x_m": 20.0, "speed_mps": 20.0}, "vehicles": vehicles,
                   "params": {"sim": {"horizon_s": horizon}}}, indent=1))

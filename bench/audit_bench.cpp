@@ -1,4 +1,4 @@
-// Auditing a recording (issue #17; docs/audit.md, docs/performance.md "Auditing a recording"):
+// Auditing a recording (docs/audit.md, docs/performance.md; figures by bench/figures.sh):
 // read, validate, rebuild the road of, and audit the public 607 KB NGSIM recording
 // USA_US101-4_1_T-1 (22 vehicles), and the zipper recording whose three merges are all violated
 // (so each is also judged 12 more times by the sensitivity sweep), as `mergeguard audit` does

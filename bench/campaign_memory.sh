@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Resident memory of a long fuzz campaign (issue 20): runs `mergeguard fuzz --time S --jobs 1`
+# Resident memory of a long fuzz campaign: runs `mergeguard fuzz --time S --jobs 1`
 # at nice 10, samples VmRSS every 10 s and prints each sample and the least-squares slope
 # (MB per hour) over the samples after the first minute (warm-up: allocator pools, corpus read).
 #   bash bench/campaign_memory.sh [BINARY] [SECONDS]          defaults: build/mergeguard 1800

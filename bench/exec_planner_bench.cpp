@@ -1,4 +1,4 @@
-// The exec planner protocol's cost (issue #16 item 4; figures in docs/performance.md): one
+// The exec planner protocol's cost (docs/performance.md; figures by bench/figures.sh): one
 // planner call through the trivial C++ planner process (tests/planner/exec_helpers/, mode echo),
 // the pieces of that call on mergeguard's side (writing the observe request, checking the
 // command), and std-4 scenarios per second through it on one thread.

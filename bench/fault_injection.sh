@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fault injection (issue 20): prints its figures; not part of CTest (it takes a few minutes).
+# Fault injection: prints its figures; not part of CTest (it takes a few minutes).
 #   bash bench/fault_injection.sh [BINARY] [KILLS]        defaults: build/mergeguard 100
 # 1. SIGKILL at KILLS random moments of campaigns writing into one corpus (2 jobs, small shrink
 #    budget, so that cases are written often); then every case must load and replay, and no

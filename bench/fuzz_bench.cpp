@@ -1,4 +1,4 @@
-// mergeguard_bench (issue #6 item 7; figures in docs/performance.md): the standard std-4
+// mergeguard_bench (docs/performance.md; bench/figures.sh writes the figures): the standard std-4
 // scenario end to end (simulation, planner, every monitor including FCL) as scenarios per
 // second on one thread, plus the pieces: RSS distances, one FCL collision check, scenario
 // generation, and shrinking a planted failure.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Memory and time of `mergeguard check` as the scene grows (issue 20): a merge with N main-lane
+# Memory and time of `mergeguard check` as the scene grows: a merge with N main-lane
 # vehicles (IDM, spread over 4 lanes, 60 m apart in each) and a long horizon. Prints one line per size:
 # vehicles, horizon, peak resident memory (MB), wall and CPU (user + system) time (s), the HTML
 # report's size (KB) and the verdict. CPU time is the steadier figure on a shared machine.
@@ -24,7 +24,7 @@ for k in range(n):
     vehicles.append({"id": k + 1, "lane": lane, "x_m": -400.0 + 60.0 * (k // lanes) + 13.0 * lane,
                      "speed_mps": 22.0 + 0.5 * lane, "behaviour": {"type": "idm"}})
 print(json.dumps({"format_version": 1, "name": f"scale_{n}_vehicles",
-                  "description": f"issue-20 scale benchmark: {n} main-lane vehicles, {horizon:g} s",
+                  "description": f"scale benchmark: {n} main-lane vehicles, {horizon:g} s",
                   "road": {"main_lanes": lanes, "side_lane_end_x_m": 300.0},
                   "ego": {"x_m": 20.0, "speed_mps": 20.0}, "vehicles": vehicles,
                   "params": {"sim": {"horizon_s": horizon}}}, indent=1))

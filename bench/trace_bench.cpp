@@ -1,7 +1,7 @@
-// Trace loading and judging (issue #15; figures in docs/performance.md, "Trace loading (issue
-// 15)" and "Judging a trace (check-trace)"): parse and strictly load a 10-vehicle, 60 s, 50 Hz
-// trace (3,001 steps, 180,060 numbers of state) from its text, and load it from a file and judge
-// it by every rule, as `mergeguard check-trace` does. The trace is built once.
+// Trace loading and judging (docs/performance.md; figures by bench/figures.sh): parse and
+// strictly load a 10-vehicle, 60 s, 50 Hz trace (3,001 steps, 180,060 numbers of state) from its
+// text, and load it from a file and judge it by every rule, as `mergeguard check-trace` does. The
+// trace is built once.
 #include <benchmark/benchmark.h>
 
 #include <unistd.h>

@@ -1,4 +1,4 @@
-# The installed CMake package (issue #16, docs/package.md): `cmake --install build --prefix P`
+# The installed CMake package (docs/package.md): `cmake --install build --prefix P`
 # puts the headers under P/include/mergeguard/, the module libraries and the mergeguard binary
 # under P/lib and P/bin, and P/lib/cmake/mergeguard/ with the package config, its version file
 # and the exported targets mergeguard::mergeguard (everything) and mergeguard::core, ::planner,

@@ -1,4 +1,4 @@
-// Campaign reports (issue #6 item 8): a JSON summary and the same content as Markdown and HTML:
+// Campaign reports: a JSON summary and the same content as Markdown and HTML:
 // scenarios run, rate, failures by property, rule and liable party, the signatures with their
 // corpus cases (and liability reports when written), and each rule's coverage and margin
 // distribution.

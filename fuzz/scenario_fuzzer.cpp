@@ -1,9 +1,9 @@
-// libFuzzer entry point (issue #6 item 6; docs/fuzzing.md "Coverage-guided fuzzing"): bytes ->
+// libFuzzer entry point (docs/fuzzing.md "Coverage-guided fuzzing"): bytes ->
 // scenario -> check -> abort on a property failure. Inputs that start with '{' are JSON and go
 // through the strict loaders instead (a scenario, a corpus case when it has a "scenario" key, an
 // observable trace when it has a "format" key), and inputs that start with '<' are CommonRoad XML
-// recordings for the audit's loader, road reconstruction and audit (issue #17):
-// rejected input is fine, a crash or sanitizer report is not (issue #7 item 4).
+// recordings for the audit's loader, road reconstruction and audit:
+// rejected input is fine, a crash or sanitizer report is not.
 // Environment: MG_FUZZ_PLANNER (default rcpp); MG_FUZZ_CASE_DIR: write each failure there as a
 // corpus case (found_by "libFuzzer", not shrunk) before aborting; MG_FUZZ_LOADERS_ONLY=1: every
 // input is JSON or XML text for the loaders (no simulation), for fuzzing the input boundary alone.

@@ -143,8 +143,8 @@ Scenario assemble_scenario(const ScenarioSpec& spec) {
   // rho_c is the V2V protocol's constant, known to the requester, the responders (the simulated
   // ones read it from the planner's parameters) and the judge alike. rho_m is likewise the
   // scenario's convention: the judge holds the merge to it (Def. 1 over rho_m, or over the
-  // observed duration when longer), and the planner is configured with the same value; a judge
-  // fixed at 4 s blamed every ego configured for a 3 s merge (docs/spec.md §8).
+  // observed duration when longer), and the planner is configured with the same value: a judge
+  // with another rho_m would blame every ego configured for a shorter merge (spec §8).
   s.params.rules.comm_threshold_s = spec.params.comm_threshold_s;
   s.params.rules.merge_duration_s = spec.params.merge_duration_s;
   s.params.sim.horizon_s = spec.params.horizon_s;

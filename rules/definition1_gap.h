@@ -1,5 +1,5 @@
 // RCPP Definition 1's gap inequalities as the rules evaluate them from observation (spec §4,
-// docs/spec.md "Right of way"): ineq. (1.1) toward the follower and (1.2) toward the leader for a
+// docs/spec_rules.md "Right of way from observation"): ineq. (1.1) toward the follower and (1.2) toward the leader for a
 // merge speed v_e* and a merge duration rho, and the interval of v_e* for which both hold.
 //
 // An inequality holds only when it holds under both the paper's model (the ego already at v_e*)

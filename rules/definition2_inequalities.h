@@ -1,4 +1,4 @@
-// Inequalities (3) and (4) of RCPP Definition 2 (spec §5, review points 9-12), judged from the
+// Inequalities (3) and (4) of RCPP Definition 2 (spec §5), judged from the
 // channel and the observed states:
 //  - def2_request_sound: every request the ego sent was sound when it sent it: for 2.1 (ego
 //    ahead) ineq. (3) holds with the request's P_c, D*_lon and v_o* and the states at the send,

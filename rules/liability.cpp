@@ -50,9 +50,10 @@ RightOfWay compute_right_of_way(const ObservedTrace& t, const MergeAttempts& att
 }
 
 // Obligations of comfort and progress: broken, they are the ego's, but no danger follows from
-// them, so they are never a collision's cause (the ego's path oscillating in the side lane was
-// blamed for two main-lane vehicles colliding 0.08 s later, one of them racing beyond its
-// declared limits since t = 1 s; a campaign finding, docs/rules.md).
+// them, so they are never a collision's cause (otherwise the ego's path oscillating in the side
+// lane would be blamed for two main-lane vehicles colliding 0.08 s later, one of them racing
+// beyond its declared limits since t = 1 s: corpus case
+// rcpp-coop__no_oscillation__smoothness_oscillation__ego-5; docs/rules.md).
 bool can_cause_collision(const RuleResult& rule) {
   return rule.rule_id != "smoothness_oscillation" && rule.rule_id != "progress";
 }

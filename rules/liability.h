@@ -1,7 +1,7 @@
-// Right of way and blame (spec §8, docs/spec.md "Right of way from observation"). The main-lane
-// vehicles hold the right of way until an observed merge attempt of the ego had it by Definition 1
-// or 2 (rules/merge_attempts.h); the ego keeps it from that attempt's decision instant until the
-// merge completes or it aborts. Blame follows RSS: the party whose obligation broke first, at the
+// Right of way and blame (spec §8, docs/spec_rules.md "Right of way from observation"). The
+// main-lane vehicles hold the right of way until an observed merge attempt of the ego had it by
+// Definition 1 or 2 (rules/merge_attempts.h); the ego keeps it from that attempt's decision
+// instant until the merge completes or it aborts. Blame follows RSS: the party whose obligation broke first, at the
 // last safe moment (+T) before the danger or collision.
 #pragma once
 

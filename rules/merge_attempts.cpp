@@ -127,7 +127,7 @@ std::optional<CoopExchange> accepted_exchange(const ObservedTrace& t, const Rule
 }
 
 // Definition 2 grants the right of way toward the partner; the gap's other vehicle stays
-// Definition 1's (spec §8, review point 15). At the request: for 2.1 (ego ahead of o) the vehicle
+// Definition 1's (spec §8, "Right of way per pair"). At the request: for 2.1 (ego ahead of o) the vehicle
 // ahead of o must satisfy ineq. (1.2) over rho_c + rho_m with the ego at its speed; for 2.2 the
 // vehicle behind o must satisfy ineq. (1.1) over 2 rho_c + rho_m with the ego at its speed after
 // braking at b_min for rho_c.
@@ -202,7 +202,7 @@ bool gap_vehicle_broke_limits(const ObservedTrace& t, const RuleParams& p, const
 // if a vehicle of that neighbour broke its declared limits between i and the entry: a vehicle
 // the ego was overtaking for the gap ahead of it, which then raced past the ego beyond its
 // a_accel^max, changed the ego's gap by its breach, and the gap the ego decided on still counts
-// (a campaign finding, docs/rules.md).
+// (spec §8, "Definition 1 basis"; corpus case rcpp__ego_never_liable__def1_2_gap__ego-5).
 std::vector<GapIndices> gaps_at(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, std::size_t i) {
   const GapIndices around = gap_around_ego(t, i);
   if (!a.entry_step) return with_neighbours(t, i, around);

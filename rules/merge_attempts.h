@@ -1,5 +1,5 @@
 // Each merge attempt the ego was observed to make, and whether it held the right of way for it
-// (docs/spec.md, "Right of way from observation"). Read from the observable trace alone:
+// (docs/spec_rules.md, "Right of way from observation"). Read from the observable trace alone:
 //
 //   - an attempt runs from an observed merge start to its abort or its completion
 //     (rules/merge_phases.h);

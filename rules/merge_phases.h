@@ -1,4 +1,4 @@
-// The ego's merge as an observer sees it (issue #15; docs/rules.md, "Merge phases"): read from
+// The ego's merge as an observer sees it (docs/rules.md, "Merge phases"): read from
 // its observed lateral position and heading alone, with the rules' own thresholds
 // (RuleParams::merge_*), never from what a planner says it is doing.
 //

@@ -70,7 +70,7 @@ class MarginAccumulator {
   bool violated() const { return out_.result.first_violation_time_s.has_value(); }
   // The smallest margin recorded so far (+inf before the first). A record of a margin at least
   // this large, and not negative, changes nothing in the RuleResult: monitors skip computing
-  // such margins for pairs too far apart to interact (issue 20, docs/performance.md), so their
+  // such margins for pairs too far apart to interact (docs/performance.md), so their
   // per-step margins leave out records that could not lower the rule's minimum.
   double min_margin() const { return out_.result.min_margin; }
   MonitorOutput finish();
@@ -99,8 +99,8 @@ bool ego_rear_in_rss_danger(const MonitorContext& ctx, std::size_t step);
 inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
 
 // Trace times are sums of steps and deadlines are computed another way: the same instant may
-// differ by rounding (~1e-15 s). Closed windows and deadlines include such ties (spec §8, review
-// point 16).
+// differ by rounding (~1e-15 s). Closed windows and deadlines include such ties (spec §8, "Ties at
+// deadlines").
 inline constexpr double kTieS = 1e-9;
 
 }  // namespace mg

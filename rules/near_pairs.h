@@ -1,4 +1,4 @@
-// Sweep and prune along X (issue 20): of the vehicle pairs of one trace step, those whose X
+// Sweep and prune along X: of the vehicle pairs of one trace step, those whose X
 // intervals are close enough to matter, in pair order (i < j by i, then j), found in
 // O(n + pairs) for traffic that keeps its order instead of visiting all n^2 / 2 pairs.
 #pragma once

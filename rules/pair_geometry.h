@@ -51,7 +51,7 @@ struct PairMemo {
 };
 }  // namespace pair_detail
 
-// The geometry of vehicle pairs one trace step at a time (issue 20): the monitors walk the trace
+// The geometry of vehicle pairs one trace step at a time: the monitors walk the trace
 // in step order, so nothing is kept per step; memory is one memo per pair. Pairs are indexed
 // i < j in the order i = 0..n-1, j = i+1..n-1 (index()).
 class PairStepper {

@@ -1,5 +1,5 @@
 // The planner's own account of a run (the trace's planner_annotations), as the reports show it
-// beside the verdict (issue #15): one entry per change of reported mode, and whether the
+// beside the verdict: one entry per change of reported mode, and whether the
 // observation agrees where the planner claimed a merge. Read only by the report writers; no rule
 // reads it.
 #pragma once

@@ -222,7 +222,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
       // The right of way is the right to merge into the rightmost main lane (centre Y = 0): it
       // waives the ego's lateral duty for the motion of that merge, leftward up to the lane's
       // centre, toward whichever vehicle; not a motion beyond it, nor toward a vehicle on the
-      // ego's right (spec §8, review point 15: the waiver follows the manoeuvre, not the clock).
+      // ego's right (spec §8, "The ego's lateral duty": the waiver follows the manoeuvre, not the clock).
       const bool merge_motion = g.right == 0 && ego_of(st).y_m < 0.0;
       const bool obliged = !(merge_motion && ctx.row.ego_holds_at(e.blame_time_s));
       // A duty that starts mid-episode (the merge motion ends at the lane's centre) gets its

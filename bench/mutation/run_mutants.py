@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Mutation benchmark for mergeguard's fuzzer (issue 18, item 2).
+"""Mutation benchmark for mergeguard's fuzzer.
 
 Copies the tracked source tree (git ls-files, working-tree contents) to a work directory, builds
 it once unmutated, then for every mutant of bench/mutation/mutants.json: applies it (its `find`

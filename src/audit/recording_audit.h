@@ -1,4 +1,4 @@
-// Auditing a recording (issue #17): every merge found becomes an observable trace
+// Auditing a recording: every merge found becomes an observable trace
 // (merge_trace.h), judged by check_observed exactly as `check-trace` judges a trace; for each
 // violated merge, the verdict's sensitivity to the profile's response time and braking limits.
 #pragma once

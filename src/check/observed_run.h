@@ -1,4 +1,4 @@
-// What an observer of a simulated run could record (issue #15, docs/trace_format.md): the
+// What an observer of a simulated run could record (docs/trace_format.md): the
 // declarations the scenario gives, every step's observable state of every vehicle in the road
 // frame, and the V2V channel's events. The planner's decision records go into
 // `planner_annotations`, which reports show and no rule reads.

@@ -1,4 +1,4 @@
-// The whole mergeguard command line as a library function (issue #16, docs/package.md): the
+// The whole mergeguard command line as a library function (docs/package.md): the
 // `mergeguard` binary is `return mg::cli_main(argc, argv);`, and a program that links
 // mergeguard::mergeguard, registers its own planners (planner/planner_registry.h) and then calls
 // cli_main is the same command line with those planners accepted by --planner and by replay.

@@ -1,6 +1,6 @@
 // `mergeguard reproduce-paper [--out DIR] [--scenario FILE]`: the RCPP paper's experiment
-// (spec §11, issue #4). Exit 0 when every planner merged without collision and RCPP is no
-// worse than the baseline, 1 otherwise, 2 on bad input. With --search (issue #19) it searches
+// (spec §11). Exit 0 when every planner merged without collision and RCPP is no
+// worse than the baseline, 1 otherwise, 2 on bad input. With --search it searches
 // the scenario space around --scenario instead and writes the ranking (docs/paper_search.md)
 // and, with --search-scenario, the best candidate as a scenario file.
 #include <iostream>

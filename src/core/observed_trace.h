@@ -1,4 +1,4 @@
-// The observable trace (issue #15): what anyone watching the road and the V2V channel could
+// The observable trace: what anyone watching the road and the V2V channel could
 // record of a merge, and nothing a planner says about itself: the input of the independent
 // oracle, whose rule monitors are to read only this, its declarations and the rule parameters
 // (docs/trace_format.md; `check --save-trace` writes one, the merge phases are read from it).

@@ -1,4 +1,4 @@
-// The versioned JSON format of an observable trace (issue #15, docs/trace_format.md, schema
+// The versioned JSON format of an observable trace (docs/trace_format.md, schema
 // docs/trace.schema.json): one writer and one strict loader. Everything is validated here, once;
 // the rule monitors may trust a loaded ObservedTrace (declared ids, sizes and limits in the
 // scenario's ranges, strictly increasing step times, one state per declared vehicle per step,

@@ -1,4 +1,4 @@
-// Output paths are checked before any work starts (issue 20): a campaign or a check must not run
+// Output paths are checked before any work starts: a campaign or a check must not run
 // for hours and then fail on its report directory. Each check throws OutputPathError with one
 // line naming the option, the path and the reason; the CLI prints it and exits 2.
 #pragma once

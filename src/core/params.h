@@ -38,7 +38,7 @@ struct PlannerParams {
   bool operator==(const PlannerParams&) const = default;
 };
 
-// The rule monitors' own parameters (issue #15): the durations Definitions 1 and 2 are judged
+// The rule monitors' own parameters: the durations Definitions 1 and 2 are judged
 // with, how a merge is recognised in the observed motion, and the tolerances. A planner may use
 // other values (PlannerParams) and is still judged by these (docs/scenario_format.md, docs/spec.md).
 struct RuleParams {

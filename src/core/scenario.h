@@ -127,7 +127,7 @@ struct Ego {
   bool operator==(const Ego&) const = default;
 };
 
-// What a planner may know before it starts (issue #16; the exec protocol's `reset`): the road,
+// What a planner may know before it starts (the exec protocol's `reset`): the road,
 // its own vehicle's declarations and dynamics, and the parameters. Nothing of the other
 // vehicles, whose behaviours no planner can observe.
 struct PlannerSetup {

@@ -1,5 +1,5 @@
 // The fifteen claims of the RCPP paper's §IV (text of Fig. 4 and Fig. 5 and the abstract's
-// headline numbers), each judged mechanically on one run of the three planners (issue #19).
+// headline numbers), each judged mechanically on one run of the three planners.
 // The report's "Paper vs. ours" table and `reproduce-paper --search` share these criteria, so
 // the scenario the search picks is scored exactly as the report judges it.
 #pragma once

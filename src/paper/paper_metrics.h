@@ -37,7 +37,7 @@ bool boxes_overlap(double x1, double y1, double yaw1, double l1, double w1, doub
 
 PaperMetrics compute_paper_metrics(const Scenario& s, const Trace& t);
 
-// The issue #4 keys: merged, collision, merge_time_s, path_length_m, lateral_reversals,
+// The keys of metrics.json: merged, collision, merge_time_s, path_length_m, lateral_reversals,
 // sideslip_min_rad, sideslip_max_rad, ego_speed_min_mps, ego_speed_max_mps,
 // obstacle_speed_min_mps (+ merge_start_time_s, merge_x_m, yaw_min_rad, yaw_max_rad);
 // absent values are null.

@@ -1,4 +1,4 @@
-// `mergeguard reproduce-paper` (issue #4, spec §11): runs the paper's merge scenario with
+// `mergeguard reproduce-paper` (spec §11): runs the paper's merge scenario with
 // the TriPField-style baseline and both RCPP variants, and writes metrics.json, the figures in
 // the manner of the paper's Fig. 4 and Fig. 5, and report.md comparing with the paper.
 #pragma once

@@ -209,7 +209,7 @@ std::string paper_search_markdown(const PaperSearch& search, const std::string& 
      << "Planners at their default parameters; each candidate runs the three planners once and is scored by the "
         "report's "
      << kPaperClaimCount
-     << " claims (src/sim/paper_claims.cpp). Order: every planner merged without "
+     << " claims (src/paper/paper_claims.cpp). Order: every planner merged without "
         "collision, then rows reproduced, then the headline miss (|saving − 72.3| + |reduction − 53.4|, best variant "
         "each, in units of 10 points).\n\n"
      << "**Space.** Stage 1 (" << (search.stage_sizes.empty() ? 0 : search.stage_sizes[0]) << "): gap obstacle − ego "

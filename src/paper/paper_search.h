@@ -1,4 +1,4 @@
-// `mergeguard reproduce-paper --search` (issue #19): the paper publishes no scenario numbers,
+// `mergeguard reproduce-paper --search`: the paper publishes no scenario numbers,
 // so we look for the scenario in which the three planners, with their default parameters,
 // behave as §IV describes. A bounded, deterministic staged grid over the scenario alone (the
 // initial gap, both speeds, the obstacle's limits and IDM headway, the V2V latency and the

@@ -1,4 +1,4 @@
-// A clearly labelled, report-only variant of the RCPP planners (issue #19), never a default:
+// A clearly labelled, report-only variant of the RCPP planners, never a default:
 // after the merge the ego keeps its lane at its initial (cruise) speed instead of the speed
 // limit, as the TriPField-style baseline does and as the paper's Fig. 5(d) suggests ("briefly
 // accelerates to 30 m/s then slows to 20 m/s post-merging"; the cooperative ego "maintains a

@@ -1,4 +1,4 @@
-// The one adapter over POSIX child processes (issue #16 item 4): an exec planner runs as
+// The one adapter over POSIX child processes: an exec planner runs as
 // `/bin/sh -c COMMAND` in a process group of its own, talks JSON Lines over pipes bound to its
 // stdin and stdout, and writes its stderr to a log file. Everything else of mergeguard
 // sees lines, timeouts and a one-line account of how the child ended; nothing else spawns,

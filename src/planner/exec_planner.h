@@ -1,4 +1,4 @@
-// Planners in any language (issue #16 items 4-6): `--planner 'exec:COMMAND ARGS'` runs COMMAND
+// Planners in any language: `--planner 'exec:COMMAND ARGS'` runs COMMAND
 // through /bin/sh and speaks the JSON Lines protocol of docs/planner_protocol.md with it
 // (planner/exec_protocol.h). Each thread (one campaign worker, or the main thread of `check`,
 // `plan`, `replay`) owns one child per command, reused across scenarios through `reset` and

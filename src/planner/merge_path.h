@@ -79,7 +79,7 @@ Track follower_track(const MainLaneVehicle& f, double rho_s, double observed_acc
 // one is seen braking (at ahead_accel_mps2), whenever that needs more than the braking seen
 // (however little: no noise threshold applies). A leader that brakes later and harder for the
 // same vehicle is ahead of this prediction all the way, so a merge planned behind it is not
-// aborted when its braking sets in (docs/planner.md "Leaders behind slow vehicles").
+// aborted when its braking sets in (docs/planner.md "Predicting the other vehicles").
 inline constexpr double kLeaderBrakingMps2 = 0.5;
 inline constexpr double kLeaderStandoffM = 2.0;
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const MainLaneVehicle* ahead = nullptr,
@@ -112,7 +112,8 @@ double chained_accel_mps2(const std::vector<MainLaneVehicle>& lane, const MainLa
 // A vehicle of another main lane may brake at any rate up to its b_max: at an instant it can be
 // anywhere between its hardest-braking position and its nominal one (leader_track). The ego must
 // be D_lon behind the braking position unless it is ahead of the nominal one: in between, some
-// legal braking puts the vehicle just ahead of it (docs/planner.md "Vehicles of the next lane").
+// legal braking puts the vehicle just ahead of it (docs/planner.md "Predicting the other
+// vehicles").
 struct BesideTrack {
   Track braking;
   Track nominal;

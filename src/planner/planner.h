@@ -1,4 +1,4 @@
-// The one planner interface that the simulator, checker and fuzzer drive (issue #3 item 1).
+// The one planner interface that the simulator, checker and fuzzer drive.
 // A planner sees an observation (WorldSnapshot: time, its own state, the other vehicles'
 // observable states and declarations, the V2V messages delivered to it, its setup: road, own
 // declarations, parameters) and returns a command (PlanOutput: a reference path, a target speed

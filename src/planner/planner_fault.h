@@ -1,4 +1,4 @@
-// A planner under test that misbehaves (issue #16 item 5): an exec planner that does not answer in
+// A planner under test that misbehaves: an exec planner that does not answer in
 // time, answers what the protocol does not allow, or exits mid-scenario. Thrown out of
 // Planner::plan; a campaign records it as a failure of property planner_responds
 // (fuzz/properties.h) and `check` as a violation, never as an error of mergeguard.

@@ -1,4 +1,4 @@
-// The open planner registry (issue #16): make_planner and planner_names (planner/planner.h) look
+// The open planner registry: make_planner and planner_names (planner/planner.h) look
 // planners up here, so a planner registered by a program linking mergeguard is accepted wherever
 // a built-in one is (`check`, `fuzz`, `replay`, `plan`, the campaign and property functions).
 // The built-ins "rcpp", "rcpp-coop" and "tripfield" are registered first, in that order, the same

@@ -34,7 +34,7 @@ double peak_curvature_per_m(const Quintic& q);
 // The path starts where and in the direction the ego is going. That matters at merge speeds: a
 // path that starts level while the ego still moves toward the main lane makes the tracker reverse
 // its steering at its cap, and the dynamic sideslip of that transient overshot the sideslip rule's
-// bound (a campaign finding, docs/fuzzing.md, sessions 4 and 5). Behind x0 it extends along the
+// bound (corpus cases rcpp__ego_never_liable__sideslip__ego-3 and -4). Behind x0 it extends along the
 // start tangent.
 struct ReturnPath {
   double x0_m = 0.0;

@@ -15,8 +15,8 @@ double ego_lat_speed_mps(const WorldSnapshot& w);  // road-frame lateral speed (
 
 // How far ahead of the ego a planned path reaches: 10 m plus one second of driving beyond where
 // the ego can get before the next cycle's path replaces it (its speed plus a_max for a cycle), far
-// more than a tracker's preview. Planners once sampled 160 m every cycle: a tenth of a run, and
-// half of the baseline's.
+// more than a tracker's preview. A fixed 160 m sampled every cycle would cost a tenth of a run,
+// and half of the baseline's.
 double tracked_path_ahead_m(const WorldSnapshot& w);
 
 MainLaneVehicle to_lane_vehicle(const ObservedVehicle& o);

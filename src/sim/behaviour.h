@@ -33,7 +33,7 @@ Leaders find_leaders(const Scenario& s, const std::vector<VehicleState>& others,
                      const VehicleState& ego);
 
 // Each lane's vehicles in X order, kept from step to step (vehicles rarely change it), so that
-// the leaders cost O(1) per vehicle instead of find_leaders' O(n) scan (issue 20).
+// the leaders cost O(1) per vehicle instead of find_leaders' O(n) scan.
 class LaneOrder {
  public:
   // Re-sorts every lane by (X, index) after the vehicles moved.

@@ -1,6 +1,7 @@
 // Auditing recordings (src/audit/recording_audit.h): the reviewed results of the three public
-// recordings (docs/audit.md "Reviewed results"), merges on a synthetic road judged as Definition 1
-// and RSS would, the sensitivity sweep flagging a verdict that flips, and the trace of a merge.
+// recordings (docs/audit.md "Results on the three public recordings"), merges on a synthetic road
+// judged as Definition 1 and RSS would, the sensitivity sweep flagging a verdict that flips, and
+// the trace of a merge.
 #include <gtest/gtest.h>
 
 #include "audit/recording_audit.h"

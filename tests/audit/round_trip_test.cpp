@@ -1,10 +1,10 @@
-// The round trip (issue #17): a simulated run's observable trace written out as a CommonRoad
+// The round trip: a simulated run's observable trace written out as a CommonRoad
 // recording, on a straight road and on a bend, read back and audited, gives the verdict and liable
 // party that `check` gave for the simulation (the audit's profile is the scenario's own
 // parameters and declared limits, its window the whole run). The rcpp scenarios of corpus/scenarios/
 // with a verdict, but follower_exceeds_accel: its 12 s horizon ends one step after the
 // ego's centre crosses the lane line, and the audit takes a stay in a lane shorter than 0.5 s for
-// noise, so it finds no lane change to audit (docs/audit.md, "Not done"). The rcpp-coop ones
+// noise, so it finds no lane change to audit (docs/audit.md, "Limitations"). The rcpp-coop ones
 // need the V2V channel, which a recording does not hold.
 #include <gtest/gtest.h>
 

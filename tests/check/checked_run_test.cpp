@@ -1,4 +1,4 @@
-// The lying planner (issue 15): the checker judges what was observed, never what the planner says
+// The lying planner: the checker judges what was observed, never what the planner says
 // about itself. For generated scenarios (fuzz/scenario_gen.h) and the built-in planners, the run's
 // observable trace judged intact, with its planner_annotations removed, with falsified
 // annotations (other modes, gaps, P_c values, invented merge claims) and with random JSON in their

@@ -1,4 +1,4 @@
-// `mergeguard audit` (issue #17; src/cli/cmd_audit.cpp): exit 0 when every merge holds, 1 when
+// `mergeguard audit` (src/cli/cmd_audit.cpp): exit 0 when every merge holds, 1 when
 // one is violated, 2 for bad input with one line naming the file and element, nothing on stdout
 // and nothing written; the index and one report directory per merge; --json, --vehicle, --params.
 #include <filesystem>

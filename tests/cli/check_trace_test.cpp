@@ -1,4 +1,4 @@
-// `mergeguard check-trace` (issue 15, items 4 and 5; src/cli/cmd_check_trace.cpp): judging a saved
+// `mergeguard check-trace` (src/cli/cmd_check_trace.cpp): judging a saved
 // observable trace prints and writes exactly what `check` did for the run it was saved from, and
 // every hostile trace (tests/hostile/traces/) is refused with exit 2, one line on stderr naming the
 // file and the JSON path, nothing on stdout and nothing written.

@@ -1,4 +1,4 @@
-// Hostile input suite (issue #7 item 2): every file of tests/hostile/ through every command that
+// Hostile input suite: every file of tests/hostile/ through every command that
 // reads it. Each must give exit 2 within the time bound (run_cli kills at 120 s -> 124), one line
 // on stderr naming the file and a JSON path, nothing on stdout and no output file written.
 #include <filesystem>

@@ -1,4 +1,4 @@
-// Every command that writes checks its output paths before any work (issue 20): a path that
+// Every command that writes checks its output paths before any work: a path that
 // cannot be created (/proc/x), a file where a directory is expected, or a directory below a file
 // gives exit 2 and one line naming the option and the path, nothing on stdout, nothing written.
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// --planner 'exec:COMMAND' through the built binary (issue #16 items 4-6), with the test planner
+// --planner 'exec:COMMAND' through the built binary, with the test planner
 // process tests/planner/exec_helpers/fake_exec_planner.cpp: a planner that misbehaves is a
 // finding (check exit 1, a planner_responds corpus case that replays), one that cannot start is
 // a usage error (exit 2, one line), campaigns are deterministic across --jobs, and neither the

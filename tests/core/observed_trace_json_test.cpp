@@ -1,4 +1,4 @@
-// Trace format (issue #15, docs/trace_format.md): the writer's output always loads and gives back
+// Trace format (docs/trace_format.md): the writer's output always loads and gives back
 // the same trace bit for bit (NaN message fields and annotations included); every defect is
 // rejected with one line naming the file and the JSON path; the schema lists exactly the keys
 // the format has.

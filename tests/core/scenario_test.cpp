@@ -1,5 +1,5 @@
 // Scenario loader and writer: round trip of defaults, and validation errors that name the
-// source and JSON path of the offending field (spec §2, issue #2 item 5).
+// source and JSON path of the offending field (spec §2).
 #include "core/scenario.h"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// CI replays the whole corpus (issue #6 item 5): every case in corpus/cases reproduces its
+// CI replays the whole corpus: every case in corpus/cases reproduces its
 // recorded verdict, violations and failed properties from its JSON alone.
 #include <gtest/gtest.h>
 

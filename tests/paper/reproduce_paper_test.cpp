@@ -1,4 +1,4 @@
-// `mergeguard reproduce-paper` end to end (issue #4): the files appear and the metrics are
+// `mergeguard reproduce-paper` end to end: the files appear and the metrics are
 // internally consistent — computed by the run, never written down here.
 #include <sys/wait.h>
 #include <unistd.h>
@@ -57,7 +57,7 @@ TEST(ReproducePaper, WritesConsistentMetricsFiguresAndReport) {
     EXPECT_NEAR(saving, expected, 1e-9);
     EXPECT_GE(m.at("path_length_reduction_pct").at(rcpp).get<double>(), 0.0);
   }
-  // Issue #19: the chosen scenario reproduces at least 13 of the 15 rows with default planners,
+  // The chosen scenario reproduces at least 13 of the 15 rows with default planners,
   // and the cooperative run really cooperates (the last row).
   EXPECT_GE(m.at("claims_reproduced").get<int>(), 13);
   ASSERT_EQ(m.at("claims").size(), 15u);

@@ -1,4 +1,4 @@
-// Exec planners (planner/exec_planner.h, issue #16 items 4-5) against the purpose-written planner
+// Exec planners (planner/exec_planner.h) against the purpose-written planner
 // process tests/planner/exec_helpers/fake_exec_planner.cpp: a correct one answers through one
 // reused child; each misbehaviour is a PlannerFault of its kind, within the timeout, with no
 // process left; a command that does not answer hello cannot start. Timing bounds are generous.

@@ -1,4 +1,4 @@
-// The shared harness every planner of planner_names() passes through (issue #3): the same
+// The shared harness every planner of planner_names() passes through: the same
 // scenarios, a small closed-loop kinematic rollout (point-mass ego on the returned path,
 // constant-speed traffic, an ideal V2V channel with cooperative responders that accept), and the
 // same sanity thresholds. RCPP planners additionally must respect the side lane's end and their

@@ -1,4 +1,4 @@
-// The open planner registry (planner/planner_registry.h, issue #16): the built-ins keep their
+// The open planner registry (planner/planner_registry.h): the built-ins keep their
 // names and order, a registered planner is made and listed like them, and bad registrations are
 // refused. The registry is process-wide, so the planner registered here is a sane one (RCPP
 // under another name): the harness tests that iterate planner_names() may then meet it too.

@@ -135,7 +135,7 @@ TEST(Report, WriterPutsTheThreeFilesIntoTheDirectory) {
   fs::remove_all(dir);
 }
 
-// Reports stay readable at any size (issue 20): the largest scene the format allows (64
+// Reports stay readable at any size: the largest scene the format allows (64
 // vehicles) over a long trace, with thousands of V2V channel events, still gives an HTML page
 // under 3 MB.
 TEST(Report, HtmlStaysUnderThreeMegabytesForTheLargestScene) {

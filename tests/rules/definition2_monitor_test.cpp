@@ -95,8 +95,8 @@ TraceEvent refusal_delivered(double time_s) {
 
 TEST(Def2Monitor, EgoBrakingHarderThanBminAfterARefusalOfItsA22RequestHolds) {
   // Coasting until the refusal is delivered at t = 0.3 s, then braking at 7 > b_min 4 m/s2 (Def.
-  // 2.3 sends the ego back to Definition 1, which may halt it). Until session 7 the window ran to
-  // rho_c = 1 s regardless: v(1 s) = 20 - 7 * 0.7 = 15.1 < floor 16, margin -0.7 m/s. Judged up
+  // 2.3 sends the ego back to Definition 1, which may halt it). A window running to rho_c = 1 s
+  // regardless would give v(1 s) = 20 - 7 * 0.7 = 15.1 < floor 16, margin -0.7 m/s. Judged up
   // to the refusal, the ego kept its speed: the smallest margin is the tolerance, at t = 0.
   const Scenario s = coop_scenario();
   Trace t = constant_accel_trace(s, 2.0);
@@ -127,8 +127,8 @@ TEST(Def2Monitor, EgoBrakingHarderThanBminBeforeTheRefusalArrivesIsLiable) {
 TEST(Def2Monitor, EgoBrakingAsAnRssProperResponseAfterA22RequestHolds) {
   // Vehicle 1 is 20 m ahead of the ego in its lane, both at 20 m/s: a dangerous pair from t = 0
   // with the ego behind (D_lon is 45 m). The ego brakes at 6 m/s2, its RSS proper response
-  // (at least b_min, at most b_max = 8): rss_longitudinal governs, not Def. 2.2A, which judged it
-  // until session 7 (v = 14 against a floor of 16 at rho_c: margin -1.8 m/s).
+  // (at least b_min, at most b_max = 8): rss_longitudinal governs, not Def. 2.2A, which would
+  // otherwise judge it (v = 14 against a floor of 16 at rho_c: margin -1.8 m/s).
   Scenario s = coop_scenario();
   s.vehicles[0].x_m = 20.0;
   Trace t = with_exchange(constant_accel_trace(s, 2.0, {-6.0, 0.0}), CoopCase::kEgoBehind, 22.0);

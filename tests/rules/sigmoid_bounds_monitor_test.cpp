@@ -138,8 +138,8 @@ TEST(SigmoidBoundsMonitor, LeaderAtItsPredictedSpeedButTooCloseBlamesTheEgo) {
 TEST(SigmoidBoundsMonitor, NonPartnerLeaderThatSlowedWithinItsLimitsInADef2MergeLeavesThePairToTheRssRules) {
   // The leader of the previous test, in a Def. 2.1 merge whose partner is vehicle 2, 60 m
   // behind (20 m/s, 14.825 m clear). The planner held the leader to ineq. (2) as Definition 1
-  // does: predicted at 20 m/s it is 4.825 m clear. (Until session 7 a Def. 2 merge was judged at
-  // the real positions only: -3.6 m, the ego liable; campaign run 30286 of seed 1.)
+  // does: predicted at 20 m/s it is 4.825 m clear. (At the real positions only it would be
+  // -3.6 m, the ego liable; corpus case rcpp-coop__ego_never_liable__sigmoid_pc_bounds__ego.)
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, 50.0, 20.0), vehicle(2, -60.0, 20.0)};
   // Request and acceptance exchanged at t = 0 (an instantaneous channel): Def. 2 from t = 0.
@@ -191,8 +191,9 @@ Trace responder_slowing_at(const Scenario& s, double slows_at_s) {
 
 TEST(SigmoidBoundsMonitor, ResponderThatYieldedLateIsLiableEvenAfterItSlowed) {
   // It held 20 m/s until 1.8 s, past its yield deadline (1.5 s), and is at v_o* by the midpoint.
-  // Until session 7 only its speed at the midpoint counted, and the ego was liable (campaign run
-  // 6360 of seed 1: a reneging partner that braked for a stopped vehicle before the midpoint).
+  // Judged by its speed at the midpoint alone, the ego would be liable (corpus case
+  // rcpp-coop__ego_never_liable__sigmoid_pc_bounds__ego-4: a reneging partner that braked for a
+  // stopped vehicle before the midpoint).
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, -10.0, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.8));
@@ -221,8 +222,9 @@ Trace partner_within_tolerance(const Scenario& s) {
 TEST(SigmoidBoundsMonitor, PartnerWithinItsYieldToleranceIsJudgedOnItsAcceptedProfileToo) {
   // x0 = -45.075: really 0.1 m inside D_lon(20, 20) = 45.175 m. On its accepted profile (20 ->
   // 19.8 m/s by t_r + rho_c = 1 s, then 19.8) it would be at -5.355 m with D_lon(19.8, 20) =
-  // 44.03 m: 1.325 m clear. Legal but not as accepted: left to rss_longitudinal. (Until session 7
-  // the ego was liable; campaign run 13765 of seed 1: 22.0 against 21.68 m/s, 0.89 m.)
+  // 44.03 m: 1.325 m clear. Legal but not as accepted: left to rss_longitudinal, not the ego's
+  // (corpus case rcpp-coop__ego_never_liable__sigmoid_pc_bounds__ego-6: 22.0 against 21.68 m/s,
+  // 0.89 m).
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, -45.075, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
@@ -255,8 +257,9 @@ Trace slowed_ego_before_partner(const Scenario& s) {
 TEST(SigmoidBoundsMonitor, EgoSlowedByItsRssResponseIsJudgedAtItsPlannedSpeedBeforeThePartner) {
   // Vehicle 2, 30 m ahead in the ego's lane, brakes at 6 m/s2 (b_max 8) from 1 s: at the midpoint
   // it is 27 m ahead at 14 m/s, inside D_lon(15, 14) = 32.3 m: the ego brakes as the rear vehicle
-  // of a dangerous pair. Until session 7 the slower ego was liable toward the partner (-6.11 m;
-  // campaign run 3873 of seed 2); now the planned speed counts: 4.825 m.
+  // of a dangerous pair. Judged at its real, slower speed the ego would be liable toward the
+  // partner (-6.11 m; corpus case rcpp-coop__ego_never_liable__sigmoid_pc_bounds__ego-7); its
+  // planned speed counts: 4.825 m.
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, -50.0, 20.0), vehicle(2, 30.0, 20.0)};
   Trace t = slowed_ego_before_partner(s);

@@ -174,9 +174,8 @@ TEST(Simulator, TraceJsonCarriesStepsDecisionsEventsAndHexDigest) {
 // An RCPP merge aborted while the ego still moves toward the main lane: on its way back it crosses
 // the lane line (a soft neutral-steer ego overshoots the planned stop), yet it is not taken for
 // merged; it holds the side lane (def1_halt) until it plans a new merge, and its sideslip stays
-// inside the rule's bound (the campaign finding of corpus/cases/rcpp__ego_never_liable__sideslip__ego-4.json;
-// since session 13 the planner aborts that one at once, at a small offset, and holds: case -3
-// shows the return over the line).
+// inside the rule's bound. Case -3 shows the return over the line (case -4, the same situation,
+// is now aborted at once at a small offset and held).
 TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLine) {
   const std::string path = std::string(MG_SOURCE_DIR) + "/corpus/cases/rcpp__ego_never_liable__sideslip__ego-3.json";
   std::ifstream in(path);

@@ -22,7 +22,7 @@ struct PaperRun {
   Trace trace;
   PaperMetrics metrics;
   // Right-of-way holder at every change (rules/liability.h; party ids as CheckResult), when the
-  // caller computed it (mg_sim cannot link the rule checker).
+  // run was judged (run_paper_planners' with_right_of_way); empty otherwise.
   std::vector<std::pair<double, int>> right_of_way;
 };
 

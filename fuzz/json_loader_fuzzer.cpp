@@ -2,10 +2,10 @@
 // input goes through every strict loader the command line has for JSON text, the way the commands
 // read it: a scenario, a corpus case, a saved observable trace, a params file (check-trace
 // --params), an audit profile (the last three reject repeated keys, so they get their own parse),
-// and a reply of an exec planner. A rejected
-// input (InputError; ProtocolError for a planner's reply) is fine; anything else escaping, a crash
-// or a sanitizer report is a bug. Every loader sees every input rather than one chosen by the
-// input's keys, so that no mutation can route an input away from the loader it is exercising.
+// and a reply of an exec planner. A rejected input (InputError; ProtocolError for a planner's
+// reply) is fine; anything else escaping, a crash or a sanitizer report is a bug. Every loader
+// sees every input rather than one chosen by the input's keys, so that no mutation can route an
+// input away from the loader it is exercising.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -24,6 +24,20 @@ const json& field(const json& j, const std::string& key, const std::string& sour
   return j.at(key);
 }
 
+// A field of the expected JSON type: a report.json edited by hand, or another program's file, is
+// refused naming the file and the key rather than with the JSON library's message.
+std::string text_field(const json& j, const std::string& key, const std::string& source, const std::string& path) {
+  const json& v = field(j, key, source, path);
+  if (!v.is_string()) throw InputError(source, path + "/" + key, "expected a string");
+  return v.get<std::string>();
+}
+
+bool flag_field(const json& j, const std::string& key, const std::string& source, const std::string& path) {
+  const json& v = field(j, key, source, path);
+  if (!v.is_boolean()) throw InputError(source, path + "/" + key, "expected true or false");
+  return v.get<bool>();
+}
+
 std::uint64_t count(const json& j, const std::string& key, const std::string& source, const std::string& path) {
   const json& v = field(j, key, source, path);
   if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<std::int64_t>() >= 0))
@@ -41,7 +55,7 @@ std::map<std::string, std::uint64_t> counts(const json& j, const std::string& ke
 
 MarginStats margin_of(const json& m, const std::string& source, const std::string& path) {
   MarginStats s;
-  s.unit = field(m, "unit", source, path).get<std::string>();
+  s.unit = text_field(m, "unit", source, path);
   s.scenarios = count(m, "scenarios", source, path);
   s.exercised = count(m, "exercised", source, path);
   s.violated = count(m, "violated", source, path);
@@ -59,18 +73,18 @@ MarginStats margin_of(const json& m, const std::string& source, const std::strin
 
 SignatureRecord signature_of_entry(const json& e, const std::string& source, const std::string& path) {
   SignatureRecord r;
-  r.signature = {field(e, "planner", source, path).get<std::string>(), field(e, "property", source, path).get<std::string>(),
-                 field(e, "rule", source, path).get<std::string>(), field(e, "party", source, path).get<std::string>()};
+  r.signature = {text_field(e, "planner", source, path), text_field(e, "property", source, path),
+                 text_field(e, "rule", source, path), text_field(e, "party", source, path)};
   r.count = count(e, "scenarios", source, path);
   r.first_run = count(e, "first_run", source, path);
-  r.known_before = field(e, "known_before", source, path).get<bool>();
+  r.known_before = flag_field(e, "known_before", source, path);
   const json& c = field(e, "case", source, path);
   r.case_path = c.is_string() ? c.get<std::string>() : "";
   r.case_vehicles = count(e, "case_vehicles", source, path);
   r.shrink_steps = static_cast<int>(count(e, "shrink_steps", source, path));
   r.shrink_attempts = static_cast<int>(count(e, "shrink_attempts", source, path));
-  r.shrink_minimal = field(e, "shrink_minimal", source, path).get<bool>();
-  r.first_run_guided = e.contains("first_run_guided") && field(e, "first_run_guided", source, path).get<bool>();
+  r.shrink_minimal = flag_field(e, "shrink_minimal", source, path);
+  r.first_run_guided = e.contains("first_run_guided") && flag_field(e, "first_run_guided", source, path);
   r.example.property = r.signature.property;
   r.example.rule = r.signature.rule;
   return r;
@@ -78,19 +92,19 @@ SignatureRecord signature_of_entry(const json& e, const std::string& source, con
 
 CampaignOptions options_of(const json& j, const std::string& source) {
   CampaignOptions o;
-  o.planner = field(j, "planner", source, "").get<std::string>();
+  o.planner = text_field(j, "planner", source, "");
   o.seed = count(j, "seed", source, "");
   if (const json& runs = field(j, "runs", source, ""); !runs.is_null()) o.runs = count(j, "runs", source, "");
   if (const json& t = field(j, "time_budget_s", source, ""); t.is_number()) o.time_s = t.get<double>();
   o.jobs = static_cast<int>(count(j, "jobs", source, ""));
-  o.corpus_dir = field(j, "corpus", source, "").get<std::string>();
-  o.gen.targeted_families = field(j, "families", source, "").get<std::string>() == "mixed";
+  o.corpus_dir = text_field(j, "corpus", source, "");
+  o.gen.targeted_families = text_field(j, "families", source, "") == "mixed";
   if (j.contains("search")) {  // reports of releases before guided search have none: random
-    const auto mode = search_mode_from_string(field(j, "search", source, "").get<std::string>());
+    const auto mode = search_mode_from_string(text_field(j, "search", source, ""));
     if (!mode) throw InputError(source, "/search", "expected random or guided");
     o.search = *mode;
   }
-  const std::string shard = field(j, "shard", source, "").get<std::string>();
+  const std::string shard = text_field(j, "shard", source, "");
   char extra = 0;
   if (std::sscanf(shard.c_str(), "%d/%d%c", &o.shard_index, &o.shard_count, &extra) != 2 || o.shard_count < 1 ||
       o.shard_index < 0 || o.shard_index >= o.shard_count)
@@ -120,8 +134,10 @@ Shard read_shard(const std::string& path) {
   r.scenarios = count(j, "scenarios", path, "");
   r.failing_scenarios = count(j, "violations", path, "");
   r.property_failures = count(j, "property_failures", path, "");
-  r.seconds = field(j, "seconds", path, "").get<double>();
-  r.interrupted = field(j, "interrupted", path, "").get<bool>();
+  const json& seconds = field(j, "seconds", path, "");
+  if (!seconds.is_number()) throw InputError(path, "/seconds", "expected a number");
+  r.seconds = seconds.get<double>();
+  r.interrupted = flag_field(j, "interrupted", path, "");
   r.by_property = counts(j, "failures_by_property", path);
   r.by_rule = counts(j, "failures_by_rule", path);
   r.by_party = counts(j, "failures_by_party", path);
@@ -134,12 +150,18 @@ Shard read_shard(const std::string& path) {
     r.first_failure_s = t.get<double>();
   }
   const json& list = field(j, "signature_list", path, "");
+  if (!list.is_array()) throw InputError(path, "/signature_list", "expected an array");
   for (std::size_t i = 0; i < list.size(); ++i) {
     SignatureRecord rec = signature_of_entry(list[i], path, "/signature_list/" + std::to_string(i));
     r.signatures[rec.signature] = rec;
   }
-  for (const auto& [rule, m] : field(j, "margins", path, "").items()) r.margins[rule] = margin_of(m, path, "/margins/" + rule);
-  for (const json& c : field(j, "new_cases", path, "")) r.new_cases.push_back(c.get<std::string>());
+  const json& margins = field(j, "margins", path, "");
+  if (!margins.is_object()) throw InputError(path, "/margins", "expected an object");
+  for (const auto& [rule, m] : margins.items()) r.margins[rule] = margin_of(m, path, "/margins/" + rule);
+  const json& cases = field(j, "new_cases", path, "");
+  if (!cases.is_array() || !std::all_of(cases.begin(), cases.end(), [](const json& c) { return c.is_string(); }))
+    throw InputError(path, "/new_cases", "expected an array of file names");
+  for (const json& c : cases) r.new_cases.push_back(c.get<std::string>());
   r.planner_process = planner_process_of(j, path);
   return s;
 }

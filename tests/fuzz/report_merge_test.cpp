@@ -125,5 +125,32 @@ TEST(ReportMerge, RefusesShardsOfDifferentCampaignsAMissingShardAndADuplicate) {
   fs::remove_all(dir);
 }
 
+// A shard whose fields have the wrong JSON type is refused naming the file and the key, never
+// with the JSON library's own message.
+TEST(ReportMerge, AFieldOfTheWrongTypeIsRefusedNamingTheFileAndTheKey) {
+  const auto dir = mg::test::fresh_dir("report_merge_test_types");
+  const std::string s0 = write_summary(dir, "s0.json", options(0, 2));
+  const auto mutated = [&](const std::string& name, const std::string& key, const nlohmann::json& value) {
+    std::ifstream in(s0);
+    nlohmann::json j = nlohmann::json::parse(in);
+    j[key] = value;
+    std::ofstream((dir / name).string()) << j.dump();
+    return (dir / name).string();
+  };
+  for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
+           {"planner", 5}, {"interrupted", "no"}, {"seconds", "soon"}, {"new_cases", {1, 2}}, {"margins", 3}}) {
+    const std::string bad = mutated("bad_" + key + ".json", key, value);
+    try {
+      merge_reports({bad}, true);
+      ADD_FAILURE() << key << ": expected an InputError";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("bad_" + key + ".json"), std::string::npos) << what;
+      EXPECT_NE(what.find("/" + key), std::string::npos) << what;
+    }
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace mg::fuzz

@@ -1,7 +1,6 @@
 #include "rules/merge_phases.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace mg {
 
@@ -18,37 +17,17 @@ std::optional<MergePhaseEvent> MergePhases::first(MergePhaseKind k, double from_
 MergePhases observe_merge_phases(const ObservedTrace& t, const RuleParams& p) {
   MergePhases out;
   if (t.steps.empty()) return out;
-  const double side_y = t.road.side_lane_y_m(), line_y = -0.5 * t.road.lane_width_m;
-  if (!(t.steps[0].vehicles[0].y_m < line_y)) return out;  // not in the side lane: no merge
-  bool started = false, midpoint = false;
-  double furthest_y = side_y;  // the attempt's furthest lateral position toward the main lane
-  for (std::size_t k = 0; k < t.steps.size(); ++k) {
+  MergePhaseDetector detector(t.road, p, t.steps[0].vehicles[0].y_m);
+  for (std::size_t k = 0; k < t.steps.size() && !detector.completed(); ++k) {
     const ObservedState& ego = t.steps[k].vehicles[0];
-    const auto emit = [&](MergePhaseKind kind) { out.events.push_back({kind, k, t.steps[k].time_s}); };
-    if (started) furthest_y = std::max(furthest_y, ego.y_m);
-    // A start is motion toward the main lane, not an offset alone: an ego placed off its lane
-    // centre, or drifting back to it, has not started merging.
-    if (!started && ego.y_m > side_y + p.merge_start_offset_m && ego.vy_mps > p.lat_speed_hysteresis_mps) {
-      started = true;
-      furthest_y = ego.y_m;
-      emit(MergePhaseKind::kStart);
-    } else if (started && !midpoint &&
-               (ego.y_m < side_y + p.merge_abort_offset_m ||
-                (ego.y_m < furthest_y - p.merge_abort_reversal_m && ego.vy_mps < -p.lat_speed_hysteresis_mps))) {
-      // Back in the side lane, or turned back toward it by more than the reversal hysteresis
-      // (which keeps path-tracking ripple from counting): the next departure toward the main
-      // lane is a new attempt.
-      started = false;
-      emit(MergePhaseKind::kAbort);
-    }
-    if (started && !midpoint && ego.y_m >= line_y) {
-      midpoint = true;
-      emit(MergePhaseKind::kMidpoint);
-    }
-    if (midpoint && std::abs(ego.y_m) < p.merge_complete_offset_m && std::abs(ego.yaw_rad) < p.merge_complete_yaw_rad) {
-      emit(MergePhaseKind::kComplete);
-      break;
-    }
+    const MergePhaseStep phase = detector.step(ego.y_m, ego.vy_mps, ego.yaw_rad);
+    const auto emit = [&](bool entered, MergePhaseKind kind) {
+      if (entered) out.events.push_back({kind, k, t.steps[k].time_s});
+    };
+    emit(phase.start, MergePhaseKind::kStart);
+    emit(phase.abort, MergePhaseKind::kAbort);
+    emit(phase.midpoint, MergePhaseKind::kMidpoint);
+    emit(phase.complete, MergePhaseKind::kComplete);
   }
   return out;
 }

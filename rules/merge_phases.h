@@ -1,28 +1,15 @@
-// The ego's merge as an observer sees it (docs/rules.md, "Merge phases"): read from
-// its observed lateral position and heading alone, with the rules' own thresholds
-// (RuleParams::merge_*), never from what a planner says it is doing.
-//
-//   side lane centre  ──●──── start: Y > y_side + merge_start_offset_m
-//                        ╲    abort: before the line, back below y_side + merge_abort_offset_m, or
-//                         ╲          moving back, merge_abort_reversal_m short of its furthest Y
-//   lane line  ─ ─ ─ ─ ─ ─●─ midpoint: the centre reaches the line (Y >= -W/2)
-//                          ╲
-//   main lane centre  ──────●── complete: |Y| < merge_complete_offset_m, |yaw| < merge_complete_yaw_rad
-//
-// Only an ego that starts in the side lane merges. After the midpoint an attempt is no longer
-// aborted (the ego is in the main lane; the RSS rules judge what follows); after completion
-// nothing more is read.
+// The ego's merge phases over an observable trace: the detector of core/merge_phase_detector.h
+// (which documents the phases and their thresholds) run over every step of the ego.
 #pragma once
 
 #include <cstddef>
 #include <optional>
 #include <vector>
 
+#include "core/merge_phase_detector.h"
 #include "core/observed_trace.h"
 
 namespace mg {
-
-enum class MergePhaseKind { kStart, kAbort, kMidpoint, kComplete };
 
 struct MergePhaseEvent {
   MergePhaseKind kind = MergePhaseKind::kStart;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/collision.h"
+#include "core/merge_phase_detector.h"
 #include "sim/behaviour.h"
 #include "sim/path_tracker.h"
 #include "sim/single_track.h"
@@ -15,18 +16,15 @@
 namespace mg {
 namespace {
 
-constexpr double kMergeStartOffsetM = 0.1;    // ego left of the side lane centre by this: merge started
-constexpr double kMergeAbortOffsetM = 0.05;   // back within this of the side lane centre: attempt over
-constexpr double kMergeCompleteOffsetM = 0.2; // trace.h: within 0.2 m of the main lane centre ...
-constexpr double kMergeCompleteYawRad = 0.02; // ... with the heading aligned
 constexpr double kHaltSpeedMps = 0.05;        // trace.h: stopped below this speed
 constexpr double kInLaneOffsetM = 0.5;        // drivers treat the ego as merged within this
 
-// Merge and halt events of the ego (trace.h EventKind), detected from consecutive states.
+// Merge and halt events of the ego (trace.h EventKind), detected from consecutive states. The
+// merge phases are core/merge_phase_detector.h's, with the scenario's rule parameters: the
+// simulator's merge events are the merges the rules judge.
 class EgoEventDetector {
  public:
-  explicit EgoEventDetector(const Road& road, const VehicleState& ego0)
-      : side_y_(road.side_lane_y_m()), boundary_y_(-0.5 * road.lane_width_m), from_side_(ego0.y_m < boundary_y_) {}
+  EgoEventDetector(const Scenario& s, const VehicleState& ego0) : merge_(s.road, s.params.rules, ego0.y_m) {}
 
   void update(double t, const VehicleState& ego, std::vector<TraceEvent>& events) {
     const double speed = std::hypot(ego.vx_mps, ego.vy_mps);
@@ -37,33 +35,23 @@ class EgoEventDetector {
       halted_ = false;
       events.push_back({t, EventKind::kResume, 0, "ego moving again", std::nullopt});
     }
-    if (!from_side_ || completed_) return;
-    if (!started_ && ego.y_m > side_y_ + kMergeStartOffsetM) {
-      started_ = true;
-      events.push_back({t, EventKind::kMergeStart, 0, "ego leaves the side lane centre", std::nullopt});
-    } else if (started_ && !midpoint_ && ego.y_m < side_y_ + kMergeAbortOffsetM) {
-      started_ = false;  // back in the side lane: the next departure is a new attempt
-    }
-    if (started_ && !midpoint_ && ego.y_m >= boundary_y_) {
-      midpoint_ = true;
+    const MergePhaseStep phase = merge_.step(ego.y_m, ego.road_vy_mps(), ego.yaw_rad);
+    if (phase.start) events.push_back({t, EventKind::kMergeStart, 0, "ego leaves the side lane centre", std::nullopt});
+    if (phase.midpoint)
       events.push_back({t, EventKind::kMergeMidpoint, 0, "ego centre crosses the lane boundary", std::nullopt});
-    }
-    if (midpoint_ && std::abs(ego.y_m) < kMergeCompleteOffsetM && std::abs(ego.yaw_rad) < kMergeCompleteYawRad) {
-      completed_ = true;
+    if (phase.complete)
       events.push_back({t, EventKind::kMergeComplete, 0, "ego on the main lane centre, heading aligned", std::nullopt});
-    }
   }
 
  private:
-  double side_y_, boundary_y_;
-  bool from_side_;
-  bool halted_ = false, started_ = false, midpoint_ = false, completed_ = false;
+  MergePhaseDetector merge_;
+  bool halted_ = false;
 };
 
 class Run {
  public:
   Run(const Scenario& s, Planner& planner)
-      : s_(s), planner_(planner), channel_(s), detector_(s.road, initial_ego(s)), ego_(initial_ego(s)) {
+      : s_(s), planner_(planner), channel_(s), detector_(s, initial_ego(s)), ego_(initial_ego(s)) {
     for (const MainVehicle& v : s.vehicles) {
       VehicleState st;
       st.x_m = v.x_m;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "core/merge_phase_detector.h"
 #include "core/scenario.h"
 #include "planner/definition1.h"
 #include "planner/planner.h"
@@ -33,7 +34,7 @@ struct Rollout {
   std::vector<PlanOutput> outputs;
   std::vector<VehicleState> egos;   // ego state each output was planned for
   bool left_road = false;           // the ego passed the side lane's end while still in the side lane
-  bool merged = false;              // ego centre within 0.2 m of the main lane centre at the end
+  bool merged = false;              // the merge completed (core/merge_phase_detector.h)
   std::vector<std::size_t> phases;  // an RCPP planner's phase after each cycle (RcppPhase's index)
 };
 
@@ -54,6 +55,7 @@ Rollout roll_out(const Scenario& s, const std::string& planner_name, double hori
   std::vector<double> responder_target(w.others.size(), -1.0);
   std::vector<std::pair<double, V2vMessage>> in_flight;
   Rollout r;
+  MergePhaseDetector merge(s.road, s.params.rules, w.ego.y_m);
   double v = s.ego.speed_mps;
   for (int k = 0; k * dt < horizon_s; ++k) {
     w.time_s = k * dt;
@@ -93,6 +95,7 @@ Rollout roll_out(const Scenario& s, const std::string& planner_name, double hori
     w.ego.accel_mps2 = a;
     if (w.ego.y_m < -0.5 * s.road.lane_width_m && w.ego.x_m > s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m)
       r.left_road = true;
+    merge.step(w.ego.y_m, w.ego.road_vy_mps(), w.ego.yaw_rad);
     for (std::size_t i = 0; i < w.others.size(); ++i) {  // traffic: constant speed, responders track v_o*
       ObservedVehicle& o = w.others[i];
       if (responder_target[i] >= 0) {
@@ -104,7 +107,7 @@ Rollout roll_out(const Scenario& s, const std::string& planner_name, double hori
     }
     r.outputs.push_back(std::move(out));
   }
-  r.merged = std::abs(w.ego.y_m) < 0.2;
+  r.merged = merge.completed();
   return r;
 }
 

@@ -1,0 +1,52 @@
+// The ego's merge as an observer sees it (docs/rules.md, "Merge phases"): read from its lateral
+// position, lateral speed and heading alone, with the rules' own thresholds (RuleParams::merge_*),
+// never from what a planner says it is doing. One detector serves the rules (rules/merge_phases.h
+// over an observable trace), the simulator's merge events (sim/trace.h) and the tests, so that a
+// merge is the same thing wherever it is counted.
+//
+//   side lane centre  ──●──── start: Y > y_side + merge_start_offset_m moving toward the main lane
+//                        ╲           (v_Y > lat_speed_hysteresis_mps)
+//                         ╲   abort: before the line, back below y_side + merge_abort_offset_m,
+//                          ╲         or moving back, merge_abort_reversal_m short of its furthest Y
+//   lane line  ─ ─ ─ ─ ─ ─●─ midpoint: the centre reaches the line (Y >= -W/2)
+//                          ╲
+//   main lane centre  ──────●── complete: |Y| < merge_complete_offset_m, |yaw| < merge_complete_yaw_rad
+//
+// Only an ego that starts in the side lane merges. After the midpoint an attempt is no longer
+// aborted (the ego is in the main lane; the RSS rules judge what follows); after
+// completion nothing more is read.
+#pragma once
+
+#include "core/params.h"
+#include "core/scenario.h"
+
+namespace mg {
+
+enum class MergePhaseKind { kStart, kAbort, kMidpoint, kComplete };
+
+// The phases entered at one step, in the order they happen (a start or an abort, then the
+// midpoint, then completion): one step can hold several.
+struct MergePhaseStep {
+  bool start = false, abort = false, midpoint = false, complete = false;
+  bool any() const { return start || abort || midpoint || complete; }
+};
+
+class MergePhaseDetector {
+ public:
+  // initial_y_m decides whether the ego starts in the side lane, the only place it merges from.
+  MergePhaseDetector(const Road& road, const RuleParams& p, double initial_y_m);
+
+  // The next observed state of the ego.
+  MergePhaseStep step(double y_m, double vy_mps, double yaw_rad);
+
+  bool completed() const { return completed_; }
+
+ private:
+  double side_y_m_, line_y_m_;
+  double start_offset_m_, abort_offset_m_, abort_reversal_m_, complete_offset_m_, complete_yaw_rad_, hysteresis_mps_;
+  bool from_side_;
+  bool started_ = false, midpoint_ = false, completed_ = false;
+  double furthest_y_m_ = 0.0;  // the attempt's furthest lateral position toward the main lane
+};
+
+}  // namespace mg

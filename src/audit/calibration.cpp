@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "audit/censoring.h"
 #include "core/demand.h"
 
 namespace mg {
@@ -16,17 +15,6 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
-// A frontier as one number for ranking: holding throughout counts as the range's end, failing
-// even at 0 as below any response time.
-double frontier_value(const RhoFrontier& f) {
-  if (f.holds_throughout) return kMaxFrontierResponseTimeS;
-  return f.max_response_time_s.value_or(-1.0);
-}
-
-// How many merges hold at rho by their frontiers.
-int holding_at(const std::vector<std::vector<RhoFrontier>>& frontiers, std::size_t scale, double rho_s) {
-  return static_cast<int>(std::count_if(frontiers.begin(), frontiers.end(), [&](const std::vector<RhoFrontier>& f) { return frontier_value(f[scale]) >= rho_s; }));
-}
 
 }  // namespace
 
@@ -53,56 +41,63 @@ AuditProfile calibrated_profile(const AuditProfile& base, double response_time_s
   return p;
 }
 
-std::vector<RhoFrontier> calibration_frontiers(const MergeAudit& m, const AuditProfile& base) {
-  std::vector<RhoFrontier> out;
+const std::vector<double>& calibration_response_times() {
+  static const std::vector<double> kTimes = [] {
+    std::vector<double> t;
+    for (int k = static_cast<int>(std::lround(kMaxCalibratedResponseS * 20)); k >= static_cast<int>(std::lround(kMinCalibratedResponseS * 20)); --k) t.push_back(k / 20.0);
+    return t;
+  }();
+  return kTimes;
+}
+
+std::vector<AuditVerdict> calibration_verdicts(const RecordingView& v, const LaneChange& c, const AuditProfile& base, const AuditOptions& o) {
+  AuditOptions quick = o;
+  quick.frontier = false;
+  std::vector<AuditVerdict> out;
   for (const double scale : calibration_brake_scales()) {
-    const JudgeAt judge = [&](double rho_s, double) {
-      const CheckResult r = check_observed(with_profile(m.merge, calibrated_profile(base, rho_s, scale)));
-      VariedJudgement j;
-      j.holds = r.holds;
-      return j;
-    };
-    const double hint = base.rss.response_time_s;
-    out.push_back(rho_frontier(judge, scale, hint, judge(hint, scale).holds));
+    for (const double rho : calibration_response_times()) out.push_back(audit_merge(v, c, calibrated_profile(base, rho, scale), quick).verdict);
   }
   return out;
 }
 
-CalibrationChoice choose_calibration(const std::vector<std::vector<RhoFrontier>>& frontiers, double share, const AuditProfile& base) {
+CalibrationChoice choose_calibration(const std::vector<std::vector<AuditVerdict>>& verdicts, double share, const AuditProfile& base) {
   MG_DEMAND(share > 0.0 && share <= 1.0);
   CalibrationChoice c;
-  c.merges = static_cast<int>(frontiers.size());
-  const int needed = static_cast<int>(std::ceil(share * c.merges - 1e-9));
-  double best_rho = -1.0;
-  std::size_t best_scale = 0;
-  for (std::size_t j = 0; j < calibration_brake_scales().size() && c.merges > 0; ++j) {
-    std::vector<double> v;
-    for (const auto& f : frontiers) v.push_back(frontier_value(f[j]));
-    std::sort(v.rbegin(), v.rend());
-    const double rho = v[static_cast<std::size_t>(std::max(needed, 1) - 1)];
-    if (rho > best_rho) best_rho = rho, best_scale = j;
-    if (rho >= kMinCalibratedResponseS) {
-      c.found = true;
-      best_rho = rho, best_scale = j;
-      break;
+  c.response_time_s = base.rss.response_time_s;
+  const std::size_t n_rho = calibration_response_times().size();
+  double best = -1.0;
+  for (std::size_t j = 0; j < calibration_brake_scales().size() && !c.found; ++j) {
+    for (std::size_t k = 0; k < n_rho && !c.found; ++k) {
+      int holds = 0, judged = 0;
+      for (const auto& v : verdicts) {
+        MG_DEMAND(v.size() == n_rho * calibration_brake_scales().size());
+        const AuditVerdict x = v[j * n_rho + k];
+        holds += x == AuditVerdict::kHolds ? 1 : 0;
+        judged += x == AuditVerdict::kHolds || x == AuditVerdict::kViolated ? 1 : 0;
+      }
+      if (judged == 0) continue;
+      const double got = static_cast<double>(holds) / judged;
+      c.found = got >= share - 1e-12;
+      if (got > best + 1e-12 || c.found) {
+        best = got;
+        c.brake_scale = calibration_brake_scales()[j];
+        c.response_time_s = calibration_response_times()[k];
+        c.judged = judged;
+        c.holding = holds;
+      }
     }
   }
-  c.brake_scale = calibration_brake_scales()[best_scale];
-  // Floored to 0.01 s so that every merge whose frontier is at or above it still holds.
-  c.response_time_s = c.merges == 0 ? base.rss.response_time_s
-                                    : std::clamp(std::floor(best_rho * 100.0 + 1e-9) / 100.0, kMinCalibratedResponseS, kMaxCalibratedResponseS);
-  c.expected_holding = c.merges == 0 ? 0 : holding_at(frontiers, best_scale, c.response_time_s);
-  const std::string target = fixed(100.0 * share, 0) + " % of the " + std::to_string(c.merges) + " judged merges";
-  if (c.merges == 0) {
-    c.text = "no merge was judged under the profile: nothing to calibrate; the profile is written unchanged";
+  const std::string target = fixed(100.0 * share, 0) + " % of the judged merges";
+  const std::string got = std::to_string(c.holding) + " of " + std::to_string(c.judged) + " judged merges hold";
+  if (best < 0.0) {
+    c.text = "no merge is judged under any profile of the grid: nothing to calibrate; the profile is written with its response time and braking unchanged";
   } else if (c.found) {
     c.text = "response time " + seconds_text(c.response_time_s) + " and braking limits x" + fixed(c.brake_scale, 2) +
-             " (within each class's plausible range) make " + target + " hold (" + std::to_string(c.expected_holding) + " by their frontiers)";
+             " (each class within its plausible range) make " + target + " hold: " + got;
   } else {
-    c.text = "no profile within the plausible ranges (response time " + seconds_text(kMinCalibratedResponseS) + " to " +
-             seconds_text(kMaxCalibratedResponseS) + ", braking up to each class's plausible maximum) makes " + target +
-             " hold; the closest is proposed: response time " + seconds_text(c.response_time_s) + ", braking x" + fixed(c.brake_scale, 2) +
-             " (" + std::to_string(c.expected_holding) + " hold by their frontiers)";
+    c.text = "no profile within the plausible ranges (response time " + seconds_text(kMinCalibratedResponseS) + " to " + seconds_text(kMaxCalibratedResponseS) +
+             ", braking up to each class's plausible maximum) makes " + target + " hold; the closest is proposed: response time " +
+             seconds_text(c.response_time_s) + ", braking x" + fixed(c.brake_scale, 2) + ": " + got;
   }
   return c;
 }

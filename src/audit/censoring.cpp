@@ -7,6 +7,7 @@
 #include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
 #include "rules/pair_geometry.h"
+#include "core/demand.h"
 
 namespace mg {
 namespace {
@@ -21,26 +22,38 @@ std::string at(double t_s) {
 
 // "vehicle 375" (or "the ego, vehicle 389") for trace vehicle index k.
 std::string who(const MergeTrace& m, std::size_t k) {
-  return (k == 0 ? "the ego, vehicle " : "vehicle ") + std::to_string(m.recording_ids[k]);
+  return "vehicle " + std::to_string(m.recording_ids[k]) + (k == 0 ? " (the ego)" : "");
 }
 
-// Whether the left-out vehicle was, at some recorded step of [from, to], in the lane left or
-// entered within neighbour range of the ego: a member of the gap the decision was made for.
-bool near_gap(const RecordingView& v, const MergeTrace& m, const PartialRecord& p, int from, int to, double range_m) {
-  const FrenetTrack* ego = nullptr;
-  const FrenetTrack* other = nullptr;
-  std::size_t other_index = 0;
+std::size_t track_of(const RecordingView& v, int vehicle_id) {
   for (std::size_t i = 0; i < v.tracks.size(); ++i) {
-    if (v.tracks[i].vehicle_id == m.change.vehicle_id) ego = &v.tracks[i];
-    if (v.tracks[i].vehicle_id == p.vehicle_id) other = &v.tracks[i], other_index = i;
+    if (v.tracks[i].vehicle_id == vehicle_id) return i;
   }
-  if (ego == nullptr || other == nullptr) return false;
+  return v.tracks.size();
+}
+
+int lane_at_step(const RecordingView& v, std::size_t i, int step) {
+  const FrenetTrack& t = v.tracks[i];
+  if (t.at_step(step) == nullptr) return kRampLane - 1;  // not recorded then
+  return v.lanes[i][static_cast<std::size_t>(step - t.states.front().time_step)];
+}
+
+// Whether the left-out vehicle was, at some recorded step of [from, to], the ego's nearest
+// neighbour ahead or behind in the lane it entered (no participant between them), within 80 m.
+bool next_to_ego(const RecordingView& v, const MergeTrace& m, const PartialRecord& p, int from, int to) {
+  const std::size_t ego = track_of(v, m.change.vehicle_id), other = track_of(v, p.vehicle_id);
+  if (ego == v.tracks.size() || other == v.tracks.size()) return false;
   for (int step = std::max(from, p.first_step); step <= std::min(to, p.last_step); ++step) {
-    const TrackState* e = ego->at_step(step);
-    const TrackState* o = other->at_step(step);
-    if (e == nullptr || o == nullptr) continue;
-    const int lane = v.lanes[other_index][static_cast<std::size_t>(step - other->states.front().time_step)];
-    if ((lane == m.change.to_lane || lane == m.change.from_lane) && std::abs(o->s_m - e->s_m) <= range_m) return true;
+    const TrackState* e = v.tracks[ego].at_step(step);
+    const TrackState* o = v.tracks[other].at_step(step);
+    if (e == nullptr || o == nullptr || lane_at_step(v, other, step) != m.change.to_lane || std::abs(o->s_m - e->s_m) > 80.0) continue;
+    bool between = false;
+    for (std::size_t k = 1; k < m.recording_ids.size() && !between; ++k) {
+      const std::size_t i = track_of(v, m.recording_ids[k]);
+      const TrackState* x = v.tracks[i].at_step(step);
+      between = x != nullptr && lane_at_step(v, i, step) == m.change.to_lane && (x->s_m - e->s_m) * (o->s_m - x->s_m) > 0.0;
+    }
+    if (!between) return true;
   }
   return false;
 }
@@ -75,30 +88,37 @@ std::optional<DecisionWindow> decision_window(const ObservedTrace& t, double cha
   w.start_s = chosen->start_time_s;
   w.from_s = chosen->start_time_s - p.merge_decision_window_s;
   w.to_s = chosen->entry_time_s.value_or(chosen->start_time_s);
+  w.right_of_way = chosen->basis != RowBasis::kNone;
   return w;
 }
 
 std::optional<std::string> decision_censoring(const RecordingView& v, const MergeTrace& m, const DecisionWindow& w,
-                                              std::vector<std::string>& missing) {
+                                              const CheckResult& r, std::vector<std::string>& missing) {
   const double dt = v.recording->time_step_s;
   const double t0 = m.first_step * dt;
   std::optional<std::string> reason;
-  if (w.under_way_at_first && m.window_start.recording_limit) {
-    reason = "the merge was already under way at the first judged instant (t = " + at(t0) + ", " + m.window_start.why +
-             "): its decision was not observed";
-    missing.push_back("the ego's decision and the gap it chose, before t = " + at(t0));
-  } else if (w.from_s < t0 - kTieS && m.window_start.recording_limit) {
-    reason = "the decision window (t = " + at(w.from_s) + " to " + at(w.to_s) + ") begins before " + m.window_start.why +
-             ": the decision was not observed in full";
-    missing.push_back("t = " + at(std::max(0.0, w.from_s)) + " to " + at(t0) + " of the decision window");
+  if (!r.holds && !w.right_of_way && m.window_start.recording_limit) {
+    if (w.under_way_at_first) {
+      reason = "the merge was already under way at the first judged instant (t = " + at(t0) + ", " + m.window_start.why +
+               ") and the rules found no right of way in what was recorded: its decision was not observed";
+      missing.push_back("the ego's decision and the gap it chose, before t = " + at(t0));
+    } else if (w.from_s < t0 - kTieS) {
+      reason = "the decision window (t = " + at(w.from_s) + " to " + at(w.to_s) + ") begins before " + m.window_start.why +
+               ", and the rules found no right of way in what was recorded: the decision was not observed in full";
+      missing.push_back("t = " + at(w.from_s) + " to " + at(t0) + " of the decision window");
+    }
   }
+  if (!r.holds) return reason;
   const int from = static_cast<int>(std::floor(w.from_s / dt + 1e-9)), to = static_cast<int>(std::ceil(w.to_s / dt - 1e-9));
   for (const PartialRecord& p : m.partial) {
     if (p.first_step <= std::max(from, 0) && p.last_step >= to) continue;  // observed over the whole window
-    if (!near_gap(v, m, p, from, to, 80.0)) continue;
-    missing.push_back("vehicle " + std::to_string(p.vehicle_id) + " near the gap, recorded only from " + at(p.first_step * dt) + " to " +
-                      at(p.last_step * dt));
-    if (!reason) reason = "the gap's vehicles were not observed over the decision window (t = " + at(w.from_s) + " to " + at(w.to_s) + ")";
+    if (!next_to_ego(v, m, p, from, to)) continue;
+    missing.push_back("vehicle " + std::to_string(p.vehicle_id) + ", next to the ego in the lane entered, recorded only from " + at(p.first_step * dt) +
+                      " to " + at(p.last_step * dt));
+    if (!reason) {
+      reason = "a vehicle next to the ego in the lane it entered was not observed over the decision window (t = " + at(w.from_s) + " to " +
+               at(w.to_s) + "): whether the gap was enough is not known";
+    }
   }
   return reason;
 }
@@ -113,27 +133,30 @@ const RuleResult* deciding_rule(const CheckResult& r) {
   return best;
 }
 
-std::optional<std::string> censored_blame(const ObservedTrace& t, const CheckResult& r, const MergeTrace& m) {
+std::optional<CensoredBlame> censored_blame(const ObservedTrace& whole, const CheckResult& r, const MergeTrace& m) {
   const RuleResult* rule = deciding_rule(r);
-  if (rule == nullptr || (rule->rule_id != "rss_longitudinal" && rule->rule_id != "rss_lateral")) return std::nullopt;
-  const int liable = t.index_of(rule->liable_id);
+  if (!m.window_start.recording_limit || rule == nullptr || (rule->rule_id != "rss_longitudinal" && rule->rule_id != "rss_lateral")) return std::nullopt;
+  const int liable = whole.index_of(rule->liable_id);
   if (liable < 0) return std::nullopt;
   const std::size_t l = static_cast<std::size_t>(liable);
-  for (std::size_t x = 0; x < t.vehicles.size(); ++x) {
+  const auto dangerous = [&](std::size_t x, const ObservedStep& st) {
+    const PairGeometry g = pair_geometry(whole, st, std::min(l, x), std::max(l, x));
+    return g.lon_unsafe() && g.lat_unsafe();
+  };
+  const std::vector<ObservedStep>& steps = whole.steps;
+  for (std::size_t x = 0; x < whole.vehicles.size(); ++x) {
     if (x == l) continue;
-    bool throughout = true;
-    for (const ObservedStep& st : t.steps) {
-      if (st.time_s > *rule->first_violation_time_s + kTieS) break;
-      const PairGeometry g = pair_geometry(t, st, std::min(l, x), std::max(l, x));
-      if (!(g.lon_unsafe() && g.lat_unsafe())) {
-        throughout = false;
-        break;
-      }
-    }
-    if (!throughout) continue;
-    return "the danger between " + who(m, l) + " and " + who(m, x) + " for which " + who(m, l) + " is blamed (" + rule->rule_id + " at t = " +
-           at(*rule->first_violation_time_s) + ") was already under way at the first judged instant (t = " + at(t.steps.front().time_s) + ", " +
-           m.window_start.why + "): when it began, and who made it, was not recorded";
+    std::size_t k = 0;
+    while (k < steps.size() && dangerous(x, steps[k])) ++k;
+    if (k == 0 || (k < steps.size() && steps[k].time_s <= *rule->first_violation_time_s + kTieS)) continue;
+    CensoredBlame b;
+    b.pair = who(m, l) + " and " + who(m, x);
+    b.reason = "the danger between " + b.pair + " for which " + who(m, l) + " is blamed (" + rule->rule_id + " at t = " +
+               at(*rule->first_violation_time_s) + ") was already under way at the first judged instant (t = " + at(steps.front().time_s) + ", " +
+               m.window_start.why + ")" + (k < steps.size() ? " until t = " + at(steps[k].time_s) : std::string(" and lasted to the window's end")) +
+               ": when it began, and who made it, was not recorded";
+    if (k < steps.size()) b.end_step = k;
+    return b;
   }
   return std::nullopt;
 }

@@ -15,16 +15,17 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
-// The smallest brake scale in [lo, hi] at which judge(rho, scale) holds (a larger scale shortens
-// every stopping distance), to within 1 %; nullopt when it fails even at hi.
-std::optional<double> brake_frontier(const JudgeAt& judge, double rho_s, double lo, double hi) {
-  if (!judge(rho_s, hi).holds) return std::nullopt;
-  if (judge(rho_s, lo).holds) return lo;
-  while (hi - lo > 0.01 * hi) {
-    const double mid = 0.5 * (lo + hi);
-    (judge(rho_s, mid).holds ? hi : lo) = mid;
+// The smallest brake scale, in steps of the follower's b_min by kBrakeStepMps2 from the
+// profile's up to the cap, at which judge(rho, scale) holds; nullopt when none does. A scan, not
+// a bisection: a larger b_min shortens the safe distance but also demands a harder proper
+// response (RSS Def. 5), so holding need not be monotone in it.
+std::optional<double> brake_frontier(const JudgeAt& judge, double rho_s, double follower_brake_min_mps2, double cap) {
+  const int steps = static_cast<int>(std::floor((cap - 1.0) * follower_brake_min_mps2 / kBrakeStepMps2 + 1e-9));
+  for (int k = 1; k <= steps; ++k) {
+    const double scale = 1.0 + k * kBrakeStepMps2 / follower_brake_min_mps2;
+    if (judge(rho_s, scale).holds) return scale;
   }
-  return hi;
+  return std::nullopt;
 }
 
 std::string frontier_words(const ComplianceFrontier& f) {
@@ -94,7 +95,7 @@ ComplianceFrontier compliance_frontier(const JudgeAt& judge, double profile_resp
     f.binding_ref = beyond.first_rule_ref;
   }
   f.brake_scale_cap = std::max(1.0, kMaxBrakeMps2 / std::max(follower_brake_min_mps2, 0.1));
-  if (!f.holds_at_profile) f.needed_brake_scale = brake_frontier(judge, profile_response_time_s, 1.0, f.brake_scale_cap);
+  if (!f.holds_at_profile) f.needed_brake_scale = brake_frontier(judge, profile_response_time_s, f.follower_brake_min_mps2, f.brake_scale_cap);
   for (const double scale : curve_brake_scales) {
     if (scale == 1.0) {
       f.curve.push_back({scale, f.rho});

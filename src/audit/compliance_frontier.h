@@ -2,8 +2,8 @@
 // response time rho at which the merge holds with the profile's braking and acceleration
 // limits, found by bisection over rho with the same judgement as the verdict (the trace judged
 // again by the rules with another rho); the braking a follower would need at the profile's rho
-// (bisection over a scale of every vehicle's b_min and b_max); and the rule that binds just
-// beyond the frontier. Assumes, as the bisection must, that a merge holding at some rho holds at
+// (every vehicle's b_min and b_max scaled together, scanned in steps of kBrakeStepMps2 of the
+// follower's b_min); and the rule that binds just beyond the frontier. Assumes, as the bisection must, that a merge holding at some rho holds at
 // every shorter one (and with harder braking): a longer response lengthens every RSS distance
 // and Definition 1's gaps.
 #pragma once
@@ -18,7 +18,7 @@ namespace mg {
 inline constexpr double kMaxFrontierResponseTimeS = 5.0;  // RssParams' range ends there
 inline constexpr double kMaxBrakeMps2 = 15.0;             // no scaled braking limit exceeds this
 inline constexpr double kFrontierResolutionS = 0.005;
-inline constexpr double kMinBrakeScale = 0.25;
+inline constexpr double kBrakeStepMps2 = 0.5;  // the needed braking is scanned in these steps
 
 // The judgement at (rho, brake scale): whether it holds, and otherwise the rule that fails first
 // and its reference (for the binding rule; "" when it holds).
@@ -48,8 +48,8 @@ struct ComplianceFrontier {
   double profile_response_time_s = 1.0;
   bool holds_at_profile = false;
   RhoFrontier rho;                    // at the profile's braking limits (scale 1)
-  // The smallest scale of b_min and b_max, within [kMinBrakeScale, kMaxBrakeMps2 / b_min], at
-  // which the merge holds at the profile's rho; nullopt: not even at the cap.
+  // The smallest scale of b_min and b_max above 1, up to kMaxBrakeMps2 / b_min, at which a merge
+  // violated at the profile's rho holds; nullopt: none.
   std::optional<double> needed_brake_scale;
   double follower_brake_min_mps2 = 4.0;  // the b_min the scale applies to (the follower's class)
   double brake_scale_cap = 1.0;

@@ -45,7 +45,8 @@ std::pair<int, int> ego_window(const RecordingView& v, const LaneChange& c, cons
       first = o.time_step;
       start = {false, "the ego's previous lane change (at " + step_time(v, o.time_step) + ")"};
     }
-    if (o.time_step > c.time_step) last = std::min(last, o.time_step - 1);
+    // Halfway to the next lane change: its own motion, which begins before its step, is not this one's.
+    if (o.time_step > c.time_step) last = std::min(last, std::max(c.time_step + 1, (c.time_step + o.time_step) / 2));
   }
   return {first, last};
 }

@@ -37,28 +37,48 @@ ComplianceFrontier frontier_of(const MergeAudit& m, const AuditProfile& p) {
   return compliance_frontier(judge, p.rss.response_time_s, follower_brake_min(m.result), p.sensitivity.brake_scales);
 }
 
-// One try at auditing the change with the window reaching back at least to `earliest`.
+// Judges the merge's trace. A blame resting on a danger under way at the first judged instant
+// is not given: the trace is judged again from the end of that danger (a danger begun after the
+// first instant keeps its recorded beginning: it is not censored, only judged from there), or
+// the merge is undetermined when the danger lasts.
+void judge(const RecordingView& view, MergeAudit& m) {
+  const double dt = view.recording->time_step_s;
+  const MergeTrace whole = m.merge;
+  std::size_t cut = 0;
+  for (int round = 0;; ++round) {
+    m.result = check_observed(m.merge.trace);
+    m.result.planner = "recorded driver (CommonRoad obstacle " + std::to_string(m.merge.change.vehicle_id) + ")";
+    const std::optional<DecisionWindow> w = decision_window(m.merge.trace, m.merge.change.time_step * dt);
+    std::vector<std::string> missing;
+    if (const auto censored = w ? decision_censoring(view, m.merge, *w, m.result, missing) : std::nullopt) {
+      m.verdict = AuditVerdict::kUndetermined;
+      m.censoring = Censoring{*censored, missing, judged_on_record(m.result, m.merge)};
+      return;
+    }
+    m.verdict = m.result.holds ? AuditVerdict::kHolds : AuditVerdict::kViolated;
+    const std::optional<CensoredBlame> blame = m.result.holds ? std::nullopt : censored_blame(whole.trace, m.result, whole);
+    if (!blame) return;
+    // A trace of a second or less judges nothing a recording can show.
+    const bool trimmable = blame->end_step && *blame->end_step > cut && round < 8 &&
+                           whole.trace.steps.size() - *blame->end_step > static_cast<std::size_t>(1.0 / dt);
+    if (!trimmable) {
+      m.verdict = AuditVerdict::kUndetermined;
+      m.censoring = Censoring{blame->reason, {"how the danger between " + blame->pair + " began, before t = " + fmt(whole.first_step * dt) + " s"},
+                              judged_on_record(m.result, m.merge)};
+      return;
+    }
+    cut = *blame->end_step;
+    m.merge = whole;
+    m.merge.trace.steps.erase(m.merge.trace.steps.begin(), m.merge.trace.steps.begin() + static_cast<long>(cut));
+    m.merge.first_step += static_cast<int>(cut);
+    m.merge.window_start = {true, "the end of a danger under way at the first recorded instant (" + blame->pair + ")"};
+  }
+}
+
 MergeAudit try_audit(const RecordingView& view, const LaneChange& c, const AuditProfile& p, std::optional<int> earliest) {
   MergeAudit m;
   m.merge = build_merge_trace(view, c, p, earliest);
-  const double dt = view.recording->time_step_s;
-  const std::optional<DecisionWindow> w = decision_window(m.merge.trace, c.time_step * dt);
-  std::vector<std::string> missing;
-  const std::optional<std::string> censored = w ? decision_censoring(view, m.merge, *w, missing) : std::nullopt;
-  m.result = check_observed(m.merge.trace);
-  m.result.planner = "recorded driver (CommonRoad obstacle " + std::to_string(c.vehicle_id) + ")";
-  if (censored) {
-    m.verdict = AuditVerdict::kUndetermined;
-    m.censoring = Censoring{*censored, missing, judged_on_record(m.result, m.merge)};
-    return m;
-  }
-  m.verdict = m.result.holds ? AuditVerdict::kHolds : AuditVerdict::kViolated;
-  if (!m.result.holds) {
-    if (const auto blame = censored_blame(m.merge.trace, m.result, m.merge)) {
-      m.verdict = AuditVerdict::kUndetermined;
-      m.censoring = Censoring{*blame, {"how the danger began, before t = " + fmt(m.merge.first_step * dt) + " s"}, judged_on_record(m.result, m.merge)};
-    }
-  }
+  judge(view, m);
   return m;
 }
 
@@ -74,7 +94,9 @@ std::optional<int> wider_start(const MergeAudit& m, double dt) {
   return std::nullopt;
 }
 
-MergeAudit audit_change(const RecordingView& view, const LaneChange& c, const AuditProfile& p, const AuditOptions& o) {
+}  // namespace
+
+MergeAudit audit_merge(const RecordingView& view, const LaneChange& c, const AuditProfile& p, const AuditOptions& o) {
   if (!view.road->highway_on_ramp && !o.all_lane_joins && joins_at_ramp(c)) {
     MergeAudit m;
     m.merge = build_merge_trace(view, c, p);
@@ -91,8 +113,6 @@ MergeAudit audit_change(const RecordingView& view, const LaneChange& c, const Au
   }
   return m;
 }
-
-}  // namespace
 
 std::string to_string(AuditVerdict v) {
   switch (v) {
@@ -170,7 +190,7 @@ RecordingAudit audit_recording(const Recording& r, const RoadLayout& road, const
   a.changes = view.changes;
   for (const LaneChange& c : view.changes) {
     if (o.only_vehicle && c.vehicle_id != *o.only_vehicle) continue;
-    a.merges.push_back(audit_change(view, c, p, o));
+    a.merges.push_back(audit_merge(view, c, p, o));
   }
   return a;
 }

@@ -77,6 +77,8 @@ struct RecordingAudit {
 };
 
 RecordingAudit audit_recording(const Recording& r, const RoadLayout& road, const AuditProfile& p, const AuditOptions& o = {});
+// One lane change of a recording's view, as audit_recording audits it.
+MergeAudit audit_merge(const RecordingView& v, const LaneChange& c, const AuditProfile& p, const AuditOptions& o);
 
 // Judges the trace again with every (response time, brake scale) of the profile's ranges.
 SensitivitySweep sweep_sensitivity(const ObservedTrace& trace, const SensitivityRanges& ranges);

@@ -139,19 +139,19 @@ DatasetIndex audit_all(const std::vector<std::string>& files, const AuditProfile
   return d;
 }
 
-// --calibrate: the frontiers of every judged merge under the profile, the proposal from them,
-// then the audit under the proposal, with each merge's verdict before it.
+// --calibrate: every lane change's verdict on the calibration grid (one recording in memory at
+// a time), the proposal from them, then the audit under the proposal, with each merge's verdict
+// under the profile calibrated from.
 DatasetIndex calibrate(const std::vector<std::string>& files, const AuditProfile& base, const AuditArgs& args) {
-  std::vector<std::vector<RhoFrontier>> frontiers;
-  std::cerr << "calibration, pass 1 of 2: the frontiers under " << base.name << "\n";
+  std::vector<std::vector<AuditVerdict>> verdicts;
+  std::cerr << "calibration, pass 1 of 2: each merge's verdict on the grid of profiles\n";
   AuditOptions first = options_of(args);
   first.frontier = false;
   const DatasetIndex before = audit_all(files, base, first, "", [&](const RecordingAudit& a) {
-    for (const MergeAudit& m : a.merges) {
-      if (m.judged()) frontiers.push_back(calibration_frontiers(m, base));
-    }
+    const RecordingView view = view_recording(*a.recording, *a.road, base);
+    for (const MergeAudit& m : a.merges) verdicts.push_back(calibration_verdicts(view, m.merge.change, base, first));
   });
-  const CalibrationChoice c = choose_calibration(frontiers, *args.calibrate, base);
+  const CalibrationChoice c = choose_calibration(verdicts, *args.calibrate, base);
   AuditProfile proposed = calibrated_profile(base, c.response_time_s, c.brake_scale);
   proposed.name = "calibrated from " + base.name + " to " + format_number(100.0 * *args.calibrate, 0) + " % holding";
   const std::string profile_file = args.report_dir + "/calibrated_profile.json";
@@ -160,9 +160,9 @@ DatasetIndex calibrate(const std::vector<std::string>& files, const AuditProfile
   DatasetIndex d = audit_all(files, proposed, options_of(args), args.report_dir, [](const RecordingAudit&) {});
   for (std::size_t i = 0; i < d.merges.size() && i < before.merges.size(); ++i) d.merges[i].before = before.merges[i].verdict;
   const int judged = d.count(AuditVerdict::kHolds) + d.count(AuditVerdict::kViolated);
-  d.calibration_text = c.text + ". Under it " + std::to_string(d.count(AuditVerdict::kHolds)) + " of " + std::to_string(judged) +
-                       " judged merges hold; still violated: " + std::to_string(d.count(AuditVerdict::kViolated)) +
-                       " (listed first below, with their verdict under " + base.name + "). Written as a --params file: calibrated_profile.json";
+  d.calibration_text = c.text + ". The audit under it: " + std::to_string(d.count(AuditVerdict::kHolds)) + " of " + std::to_string(judged) +
+                       " judged merges hold; " + std::to_string(d.count(AuditVerdict::kViolated)) +
+                       " still violated (listed first below, each with its verdict under " + base.name + "). Written as a --params file: calibrated_profile.json";
   d.calibrated_profile_file = "calibrated_profile.json";
   return d;
 }

@@ -110,8 +110,11 @@ std::optional<std::string> decision_censoring(const RecordingView& v, const Merg
   }
   if (!r.holds) return reason;
   const int from = static_cast<int>(std::floor(w.from_s / dt + 1e-9)), to = static_cast<int>(std::ceil(w.to_s / dt - 1e-9));
-  for (const PartialRecord& p : m.partial) {
-    if (p.first_step <= std::max(from, 0) && p.last_step >= to) continue;  // observed over the whole window
+  // Every vehicle of the recording but the ego, in or out of the trace: one whose record begins
+  // or ends inside the decision window was not seen over all of it.
+  for (const FrenetTrack& t : v.tracks) {
+    const PartialRecord p{t.vehicle_id, t.states.front().time_step, t.states.back().time_step};
+    if (p.vehicle_id == m.change.vehicle_id || (p.first_step <= std::max(from, 0) && p.last_step >= to)) continue;
     if (!next_to_ego(v, m, p, from, to)) continue;
     missing.push_back("vehicle " + std::to_string(p.vehicle_id) + ", next to the ego in the lane entered, recorded only from " + at(p.first_step * dt) +
                       " to " + at(p.last_step * dt));

@@ -125,7 +125,8 @@ std::string frontier_svg(const MergeAudit& m) {
   }
   svg::Series frontier{"frontier (largest rho that holds)", {}, {}, "#1f77b4", "", 2.0};
   for (const FrontierCurvePoint& c : f.curve) {
-    frontier.x.push_back(c.rho.max_response_time_s ? *c.rho.max_response_time_s : 0.0);
+    // No point where it fails even at rho = 0: there is no frontier to draw there.
+    frontier.x.push_back(c.rho.max_response_time_s ? *c.rho.max_response_time_s : std::nan(""));
     frontier.y.push_back(c.brake_scale);
   }
   svg::Series profile{"profile's rho", {f.profile_response_time_s, f.profile_response_time_s}, {y_lo - 4 * hy, y_hi + 4 * hy}, "#7f7f7f", "5 3", 1.2};
@@ -144,7 +145,7 @@ std::string frontier_histogram_svg(const std::vector<std::optional<double>>& max
     else if (!max_response_times_s[i]) ++count.front();
     else ++count[static_cast<std::size_t>(std::clamp(static_cast<int>(*max_response_times_s[i] / kBinS), 0, bins - 1)) + 1];
   }
-  svg::Plot p = svg::frame("Compliance frontiers of the judged merges", "largest response time rho at which the merge holds [s] (left of 0: not even at 0; right of 5: up to 5 s and beyond)",
+  svg::Plot p = svg::frame("Compliance frontiers of the judged merges", "largest rho that holds [s] (bar left of 0: not even at 0)",
                            "merges", 720, 360);
   svg::Series bars{"merges per 0.25 s", {}, {}, "#1f77b4", "", 1.5};
   for (std::size_t b = 0; b < count.size(); ++b) {
@@ -155,7 +156,7 @@ std::string frontier_histogram_svg(const std::vector<std::optional<double>>& max
   p.series = {bars};
   p.x_range = svg::Range{-kBinS, kMaxFrontierResponseTimeS + kBinS};
   const int top = *std::max_element(count.begin(), count.end());
-  p.y_range = svg::Range{0.0, std::max(1.0, top * 1.15)};
+  p.y_range = svg::Range{0.0, std::max(4.0, top * 1.15)};
   p.legend = svg::LegendCorner::kTopLeft;
   return svg::render(p);
 }

@@ -71,7 +71,7 @@ void judge(const RecordingView& view, MergeAudit& m) {
     m.merge = whole;
     m.merge.trace.steps.erase(m.merge.trace.steps.begin(), m.merge.trace.steps.begin() + static_cast<long>(cut));
     m.merge.first_step += static_cast<int>(cut);
-    m.merge.window_start = {true, "the end of a danger under way at the first recorded instant (" + blame->pair + ")"};
+    m.merge.window_start = {true, "the end of a danger between " + blame->pair + " under way from the first recorded instant"};
   }
 }
 

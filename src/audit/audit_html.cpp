@@ -76,7 +76,7 @@ std::string audit_page_html(const std::string& title, const std::string& md, con
 
 std::string audit_index_html(const RecordingAudit& a) {
   std::string md = audit_index_markdown(a);
-  md = std::regex_replace(md, std::regex(R"(/audit\.md\))"), "/audit.html)");
+  md = std::regex_replace(md, std::regex(R"((\]\([^)\s]*)/audit\.md\))"), "$1/audit.html)");
   return page("Audit of " + a.recording->benchmark_id, md, {});
 }
 

@@ -165,7 +165,7 @@ std::string dataset_index_markdown(const DatasetIndex& d) {
 }
 
 std::string dataset_index_html(const DatasetIndex& d) {
-  std::string md = std::regex_replace(dataset_index_markdown(d), std::regex(R"((/audit|index)\.md\))"), "$1.html)");
+  std::string md = std::regex_replace(dataset_index_markdown(d), std::regex(R"((\]\([^)\s]*)\.md\))"), "$1.html)");
   return audit_page_html("Audit of " + std::to_string(d.recordings.size()) + " recordings", md, {{"frontier_histogram.svg", histogram(d)}});
 }
 

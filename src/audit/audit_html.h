@@ -1,4 +1,4 @@
-// The audit's HTML pages (issue #17): index.html and each merge's audit.html, self-contained
+// The audit's HTML pages: index.html and each merge's audit.html, self-contained
 // (inline CSS and SVG), with the same content as the Markdown pages (audit_report.h).
 #pragma once
 

@@ -1,6 +1,7 @@
-// The audit's two plots of one merge (issue #17): the road in its own shape (the file's x, y:
-// lane bounds, the ramp, every participant's path over the window) and the same in the
-// curvilinear frame the rules judge in (X = s, Y across the road, lane lines at +-W/2).
+// The audit's plots: of one merge, the road in its own shape (the file's x, y: lane bounds, the
+// ramp, every participant's path over the window), the same in the curvilinear frame the rules
+// judge in (X = s, Y across the road, lane lines at +-W/2) and its compliance frontier; of a
+// dataset, the distribution of the frontiers.
 #pragma once
 
 #include <optional>

@@ -1,4 +1,4 @@
-// The profile a recording is audited with (issue #17; docs/audit.md "Profile"): recordings carry
+// The profile a recording is audited with (docs/audit.md "Profile"): recordings carry
 // no declared limits or response times, so these come from here, one set of limits per vehicle
 // class, with the RSS and rule parameters, the smoothing and merge-window settings, and the
 // ranges of the sensitivity sweep. One struct, loaded strictly from JSON (`--params FILE`, each

@@ -1,4 +1,4 @@
-// The audit's reports (issue #17; docs/audit.md "Reports"): for each merge, in
+// The audit's reports (docs/audit.md "Reports"): for each merge, in
 // DIR/<NN>-vehicle-<id>/, the rules' liability report (report.{json,md,html}, written by the same
 // code as `check-trace --report`) and the audit's own page (audit.{json,md,html}: the recording,
 // the profile, who is who, the frame, how far the road deviates from straight, the verdict with

@@ -1,4 +1,4 @@
-// One merge of a recording as an observable trace (issue #17; docs/audit.md "From a merge to a
+// One merge of a recording as an observable trace (docs/audit.md "From a merge to a
 // trace"): the merging vehicle is the ego (id 0), the lane it leaves is the side lane and the
 // lane it enters the main lane, in the curvilinear frame of the road: X = s along the reference
 // line, Y across it measured from the target lane's centre (scaled so that the side lane's centre

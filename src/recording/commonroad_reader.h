@@ -1,4 +1,4 @@
-// Reads a CommonRoad XML recording, versions 2018b and 2020a (issue #17; docs/audit.md), and
+// Reads a CommonRoad XML recording, versions 2018b and 2020a (docs/audit.md), and
 // validates once, at the boundary, everything the audit relies on: a known version and time step,
 // lanelets with bounds and no dangling references, dynamic obstacles with a rectangle shape and a
 // trajectory of consecutive time steps (no gap, nothing going backwards), finite numbers inside

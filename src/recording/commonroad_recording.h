@@ -1,4 +1,4 @@
-// A CommonRoad recording as the audit needs it (issue #17): the lanelet network and the
+// A CommonRoad recording as the audit needs it: the lanelet network and the
 // recorded vehicles, validated by commonroad_reader.h. Positions are the file's Cartesian
 // coordinates (metres), times are whole time steps of `time_step_s`.
 #pragma once

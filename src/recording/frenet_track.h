@@ -1,4 +1,4 @@
-// A recorded vehicle in the road's curvilinear frame (issue #17; docs/audit.md "Frenet
+// A recorded vehicle in the road's curvilinear frame (docs/audit.md "Frenet
 // projection" and "Smoothing"): positions projected onto the reference line, speeds and
 // accelerations from the recorded states where the file gives them, and otherwise from the
 // positions by a least-squares slope over a short window (local_slope).

@@ -1,4 +1,4 @@
-// The merges of a recording (issue #17; docs/audit.md "Merges"): each vehicle's lane at every
+// The merges of a recording (docs/audit.md "Merges"): each vehicle's lane at every
 // state from its lateral position (a main lane when its centre is within half a lane width of
 // that lane's centre, else the ramp while the ramp lasts, else the nearest lane), with runs
 // shorter than a minimum dropped as noise, and the changes between lanes. Moving from the ramp

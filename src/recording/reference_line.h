@@ -1,4 +1,4 @@
-// The road's reference line (issue #17; docs/audit.md "Road"): a smooth polyline along a main
+// The road's reference line (docs/audit.md "Road"): a smooth polyline along a main
 // lane's centre, resampled at a fixed spacing, smoothed, and extended straight beyond both ends so
 // that every recorded position has a foot point. It defines the curvilinear (Frenet) frame the
 // audit judges in: s along the line, d to its left (+d left, as the rules' +Y).

@@ -1,4 +1,4 @@
-// The road of a recording (issue #17; docs/audit.md "Road"): the lanelet network's lanes (chains
+// The road of a recording (docs/audit.md "Road"): the lanelet network's lanes (chains
 // of lanelets along their successors), the main carriageway and the on-ramp, found by
 // laneletType (mainCarriageWay, accessRamp) where the file has them and otherwise from the
 // topology, and the reference line along the main lane the ramp joins, in whose Frenet frame

@@ -1,4 +1,4 @@
-// A simulated run's observable trace as a recording (issue #17, the round trip): the trace's road
+// A simulated run's observable trace as a recording (the round trip): the trace's road
 // laid out along a straight line or a circular arc of the given radius (its X the arc length, its
 // Y the offset to the left), lanelets for the side lane (typed nothing: the audit must find it by
 // topology) and each main lane, and every vehicle's states at the trace's steps (positions,

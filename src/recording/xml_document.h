@@ -1,4 +1,4 @@
-// Strict loading of an XML recording (issue #17): the one place that touches pugixml. It
+// Strict loading of an XML recording: the one place that touches pugixml. It
 // refuses oversized files before reading them, DOCTYPE/ENTITY declarations (entity expansion
 // attacks), nesting deeper than kMaxXmlDepth and malformed or truncated XML, each as one
 // mg::InputError line naming the file, and hands the rest on as a plain element tree, so that

@@ -145,7 +145,7 @@ std::string frontier_histogram_svg(const std::vector<std::optional<double>>& max
     else if (!max_response_times_s[i]) ++count.front();
     else ++count[static_cast<std::size_t>(std::clamp(static_cast<int>(*max_response_times_s[i] / kBinS), 0, bins - 1)) + 1];
   }
-  svg::Plot p = svg::frame("Compliance frontiers of the judged merges", "largest rho that holds [s] (bar left of 0: not even at 0)",
+  svg::Plot p = svg::frame("Compliance frontiers of the judged merges", "largest rho that holds [s] (left of 0: fails even at 0; right of 5: holds up to 5 s)",
                            "merges", 720, 360);
   svg::Series bars{"merges per 0.25 s", {}, {}, "#1f77b4", "", 1.5};
   for (std::size_t b = 0; b < count.size(); ++b) {

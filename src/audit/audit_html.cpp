@@ -43,6 +43,8 @@ std::string page(const std::string& title, const std::string& md, const std::map
     if (in_table && !row) body += "</table>\n", in_table = false;
     if (line.rfind("# ", 0) == 0) {
       body += "<h1>" + inline_html(line.substr(2)) + "</h1>\n";
+    } else if (line.rfind("## ", 0) == 0) {
+      body += "<h2>" + inline_html(line.substr(3)) + "</h2>\n";
     } else if (item) {
       if (!in_list) body += "<ul>\n", in_list = true;
       body += "<li>" + inline_html(line.substr(2)) + "</li>\n";
@@ -68,9 +70,13 @@ std::string page(const std::string& title, const std::string& md, const std::map
 
 }  // namespace
 
+std::string audit_page_html(const std::string& title, const std::string& md, const std::map<std::string, std::string>& svgs) {
+  return page(title, md, svgs);
+}
+
 std::string audit_index_html(const RecordingAudit& a) {
   std::string md = audit_index_markdown(a);
-  md = std::regex_replace(md, std::regex(R"(/audit\.md\))"), "/audit.html)");
+  md = std::regex_replace(md, std::regex(R"((\]\([^)\s]*)/audit\.md\))"), "$1/audit.html)");
   return page("Audit of " + a.recording->benchmark_id, md, {});
 }
 
@@ -78,7 +84,9 @@ std::string merge_audit_html(const RecordingAudit& a, std::size_t i) {
   std::string md = merge_audit_markdown(a, i);
   md = std::regex_replace(md, std::regex(R"(\[report\.md\]\(report\.md\), )"), "");
   const MergeAudit& m = a.merges[i];
-  return page(m.merge.trace.name, md, {{"road.svg", road_shape_svg(a, m)}, {"frenet.svg", curvilinear_svg(m)}});
+  std::map<std::string, std::string> svgs{{"road.svg", road_shape_svg(a, m)}, {"frenet.svg", curvilinear_svg(m)}};
+  if (m.frontier) svgs["frontier.svg"] = frontier_svg(m);
+  return page(m.merge.trace.name, md, svgs);
 }
 
 }  // namespace mg

@@ -100,3 +100,65 @@ std::string curvilinear_svg(const MergeAudit& m) {
 }
 
 }  // namespace mg
+
+namespace mg {
+namespace {
+
+// A "+" marker of half-size h at (x, y) as two strokes of a series (NaN breaks them).
+void marker(svg::Series& s, double x, double hx, double y, double hy) {
+  const double nan = std::nan("");
+  s.x.insert(s.x.end(), {x - hx, x + hx, nan, x, x, nan});
+  s.y.insert(s.y.end(), {y, y, nan, y - hy, y + hy, nan});
+}
+
+}  // namespace
+
+std::string frontier_svg(const MergeAudit& m) {
+  svg::Plot p = svg::frame("Compliance frontier: where the merge holds", "response time rho [s]", "braking limits b_min, b_max x scale", 640, 360);
+  const ComplianceFrontier& f = *m.frontier;
+  double y_lo = 1.0, y_hi = 1.0;
+  for (const FrontierCurvePoint& c : f.curve) y_lo = std::min(y_lo, c.brake_scale), y_hi = std::max(y_hi, c.brake_scale);
+  const double hy = 0.02 * std::max(y_hi - y_lo, 0.5);
+  svg::Series holds{"holds", {}, {}, "#2ca02c", "", 2.0}, fails{"violated", {}, {}, "#d62728", "", 2.0};
+  if (m.sensitivity) {
+    for (const SensitivityPoint& pt : m.sensitivity->points) marker(pt.holds ? holds : fails, pt.response_time_s, 0.06, pt.brake_scale, hy);
+  }
+  svg::Series frontier{"frontier (largest rho that holds)", {}, {}, "#1f77b4", "", 2.0};
+  for (const FrontierCurvePoint& c : f.curve) {
+    // No point where it fails even at rho = 0: there is no frontier to draw there.
+    frontier.x.push_back(c.rho.max_response_time_s ? *c.rho.max_response_time_s : std::nan(""));
+    frontier.y.push_back(c.brake_scale);
+  }
+  svg::Series profile{"profile's rho", {f.profile_response_time_s, f.profile_response_time_s}, {y_lo - 4 * hy, y_hi + 4 * hy}, "#7f7f7f", "5 3", 1.2};
+  p.series = {frontier, holds, fails, profile};
+  p.x_range = svg::Range{0.0, kMaxFrontierResponseTimeS};
+  p.y_range = svg::Range{y_lo - 5 * hy, y_hi + 5 * hy};
+  return svg::render(p);
+}
+
+std::string frontier_histogram_svg(const std::vector<std::optional<double>>& max_response_times_s, const std::vector<bool>& throughout) {
+  constexpr double kBinS = 0.25;
+  const int bins = static_cast<int>(std::lround(kMaxFrontierResponseTimeS / kBinS));
+  std::vector<int> count(static_cast<std::size_t>(bins) + 2, 0);  // [0]: violated at 0; [bins + 1]: holds throughout
+  for (std::size_t i = 0; i < max_response_times_s.size(); ++i) {
+    if (throughout[i]) ++count.back();
+    else if (!max_response_times_s[i]) ++count.front();
+    else ++count[static_cast<std::size_t>(std::clamp(static_cast<int>(*max_response_times_s[i] / kBinS), 0, bins - 1)) + 1];
+  }
+  svg::Plot p = svg::frame("Compliance frontiers of the judged merges", "largest rho that holds [s] (left of 0: fails even at 0; right of 5: holds up to 5 s)",
+                           "merges", 720, 360);
+  svg::Series bars{"merges per 0.25 s", {}, {}, "#1f77b4", "", 1.5};
+  for (std::size_t b = 0; b < count.size(); ++b) {
+    const double x0 = (static_cast<double>(b) - 1.0) * kBinS, x1 = x0 + kBinS;
+    bars.x.insert(bars.x.end(), {x0, x0, x1, x1});
+    bars.y.insert(bars.y.end(), {0.0, static_cast<double>(count[b]), static_cast<double>(count[b]), 0.0});
+  }
+  p.series = {bars};
+  p.x_range = svg::Range{-kBinS, kMaxFrontierResponseTimeS + kBinS};
+  const int top = *std::max_element(count.begin(), count.end());
+  p.y_range = svg::Range{0.0, std::max(4.0, top * 1.15)};
+  p.legend = svg::LegendCorner::kTopLeft;
+  return svg::render(p);
+}
+
+}  // namespace mg

@@ -19,9 +19,16 @@ namespace mg {
 std::string merge_dir_name(const RecordingAudit& a, std::size_t i);
 
 nlohmann::json audit_index_json(const RecordingAudit& a);
+// {"found", "judged", "holds", "violated", "undetermined", "not_judged"} and the same in words.
+nlohmann::json counts_json(const RecordingAudit& a);
+std::string counts_text(const RecordingAudit& a);
+// "violated", "every judged merge holds", "nothing judged", "nothing to audit".
+std::string recording_verdict(const RecordingAudit& a);
 nlohmann::json merge_audit_json(const RecordingAudit& a, std::size_t i);
 std::string audit_index_markdown(const RecordingAudit& a);
 std::string merge_audit_markdown(const RecordingAudit& a, std::size_t i);
+// The index's frontier column: the frontier in words, or why undetermined or not judged.
+std::string merge_row_frontier(const MergeAudit& m);
 
 // Writes every file (each atomically) into `dir`, which exists.
 void write_audit_reports(const std::string& dir, const RecordingAudit& a);

@@ -18,17 +18,35 @@ std::size_t track_index(const RecordingView& v, int vehicle_id) {
   return 0;
 }
 
+// "4.1 s": the time of a recording step.
+std::string step_time(const RecordingView& v, int step) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f s", step * v.recording->time_step_s);
+  return buf;
+}
+
 // The ego's steps around the change: no further back than its previous lane change and no
 // further on than its next, so that the window holds this one merge.
-std::pair<int, int> ego_window(const RecordingView& v, const LaneChange& c, const AuditProfile& p) {
+std::pair<int, int> ego_window(const RecordingView& v, const LaneChange& c, const AuditProfile& p, std::optional<int> earliest,
+                               WindowStart& start) {
   const FrenetTrack& t = v.tracks[track_index(v, c.vehicle_id)];
   const double dt = v.recording->time_step_s;
-  int first = std::max(t.states.front().time_step, c.time_step - static_cast<int>(std::lround(p.window_before_s / dt)));
+  int first = c.time_step - static_cast<int>(std::lround(p.window_before_s / dt));
+  if (earliest) first = std::min(first, *earliest);
+  start = {false, "the audit window (window_before_s " + std::to_string(static_cast<int>(p.window_before_s)) + " s before the change)"};
+  if (t.states.front().time_step >= first) {
+    first = t.states.front().time_step;
+    start = {true, first == 0 ? "the recording's first instant" : "the record of the ego (from " + step_time(v, first) + ")"};
+  }
   int last = std::min(t.states.back().time_step, c.time_step + static_cast<int>(std::lround(p.window_after_s / dt)));
   for (const LaneChange& o : v.changes) {
     if (o.vehicle_id != c.vehicle_id || o.kind == LaneChangeKind::kRampHalt || o.time_step == c.time_step) continue;
-    if (o.time_step < c.time_step) first = std::max(first, o.time_step);
-    if (o.time_step > c.time_step) last = std::min(last, o.time_step - 1);
+    if (o.time_step < c.time_step && o.time_step >= first) {
+      first = o.time_step;
+      start = {false, "the ego's previous lane change (at " + step_time(v, o.time_step) + ")"};
+    }
+    // Halfway to the next lane change: its own motion, which begins before its step, is not this one's.
+    if (o.time_step > c.time_step) last = std::min(last, std::max(c.time_step + 1, (c.time_step + o.time_step) / 2));
   }
   return {first, last};
 }
@@ -51,13 +69,18 @@ bool near_ego(const RecordingView& v, std::size_t i, std::size_t ego, const Lane
 
 // Neighbours recorded for only part of the window still take part when they are there from a
 // second before the lane change to a second after it: the window shrinks to their record.
-void shrink_to_neighbours(const RecordingView& v, std::size_t ego, const LaneChange& c, const AuditProfile& p, int& first, int& last) {
+void shrink_to_neighbours(const RecordingView& v, std::size_t ego, const LaneChange& c, const AuditProfile& p, int& first, int& last,
+                          WindowStart& start) {
   const int margin = static_cast<int>(std::lround(1.0 / v.recording->time_step_s));
   for (std::size_t i = 0; i < v.tracks.size(); ++i) {
     if (i == ego || !near_ego(v, i, ego, c, first, last, p.neighbour_range_m)) continue;
     const int from = v.tracks[i].states.front().time_step, to = v.tracks[i].states.back().time_step;
     if (from <= std::max(first, c.time_step - margin) && to >= std::min(last, c.time_step + margin)) {
-      first = std::max(first, from);
+      if (from > first) {
+        first = from;
+        start = {true, from == 0 ? "the recording's first instant"
+                                 : "the record of vehicle " + std::to_string(v.tracks[i].vehicle_id) + " (from " + step_time(v, from) + ")"};
+      }
       last = std::min(last, to);
     }
   }
@@ -79,11 +102,6 @@ void keep_nearest(const RecordingView& v, std::size_t ego, int step, std::vector
   members.resize(kMaxVehicles);
 }
 
-std::string step_time(const RecordingView& v, int step) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f s", step * v.recording->time_step_s);
-  return buf;
-}
 
 void add_notes(const RecordingView& v, const std::vector<std::size_t>& members, MergeTrace& m) {
   const Recording& r = *v.recording;
@@ -124,14 +142,17 @@ std::vector<int> trace_ids(const RecordingView& v, const std::vector<std::size_t
   return ids;
 }
 
-void fill_steps(const RecordingView& v, const std::vector<std::size_t>& members, const LaneChange& c, int half_window, MergeTrace& m) {
+// `entering`: members placed in the lane entered while on the ramp beyond it (R_I5).
+void fill_steps(const RecordingView& v, const std::vector<std::size_t>& members, const std::vector<bool>& entering, const LaneChange& c,
+                int half_window, MergeTrace& m) {
   const RoadLayout& road = *v.road;
   const double sign = merge_frame_y(road, c.from_lane, c.to_lane, 0.0, 1.0) >= merge_frame_y(road, c.from_lane, c.to_lane, 0.0, 0.0) ? 1.0 : -1.0;
   std::vector<std::vector<double>> ys(members.size());
   for (std::size_t k = 0; k < members.size(); ++k) {
     for (int step = m.first_step; step <= m.last_step; ++step) {
       const TrackState& s = *v.tracks[members[k]].at_step(step);
-      ys[k].push_back(merge_frame_y(road, c.from_lane, c.to_lane, s.s_m, s.d_m));
+      const double y = merge_frame_y(road, c.from_lane, c.to_lane, s.s_m, s.d_m);
+      ys[k].push_back(entering[k] ? std::min(y, 0.0) : y);
     }
   }
   const double dt = v.recording->time_step_s;
@@ -188,19 +209,43 @@ double merge_frame_y(const RoadLayout& road, int origin, int target, double s_m,
   return dir * (d_m - c_target) * scale;
 }
 
-MergeTrace build_merge_trace(const RecordingView& v, const LaneChange& c, const AuditProfile& p) {
+ObservedTrace with_profile(const MergeTrace& m, const AuditProfile& p) {
+  ObservedTrace t = m.trace;
+  t.params.rss = p.rss;
+  for (std::size_t k = 0; k < t.vehicles.size(); ++k) t.vehicles[k].limits = p.limits_for(m.types[k]);
+  return t;
+}
+
+std::vector<std::size_t> entering_vehicles(const RecordingView& v, const LaneChange& c) {
+  std::vector<std::size_t> out;
+  if (c.kind != LaneChangeKind::kCutIn || c.to_lane != 0 || !v.road->highway_on_ramp) return out;
+  for (const LaneChange& o : v.changes) {
+    if (o.kind != LaneChangeKind::kRampMerge || o.to_lane != 0 || o.vehicle_id == c.vehicle_id || o.time_step <= c.time_step) continue;
+    const std::size_t i = track_index(v, o.vehicle_id);
+    const FrenetTrack& t = v.tracks[i];
+    const TrackState* at_change = t.at_step(c.time_step);
+    if (at_change == nullptr || v.lanes[i][static_cast<std::size_t>(c.time_step - t.states.front().time_step)] != kRampLane) continue;
+    if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+  }
+  return out;
+}
+
+MergeTrace build_merge_trace(const RecordingView& v, const LaneChange& c, const AuditProfile& p, std::optional<int> earliest_step) {
   MergeTrace m;
   m.change = c;
   const std::size_t ego = track_index(v, c.vehicle_id);
-  auto [first, last] = ego_window(v, c, p);
-  shrink_to_neighbours(v, ego, c, p, first, last);
+  auto [first, last] = ego_window(v, c, p, earliest_step, m.window_start);
+  shrink_to_neighbours(v, ego, c, p, first, last, m.window_start);
+  const std::vector<std::size_t> entering = entering_vehicles(v, c);
   std::vector<std::size_t> members{ego};
   for (std::size_t i = 0; i < v.tracks.size(); ++i) {
-    if (i == ego || !near_ego(v, i, ego, c, first, last, p.neighbour_range_m)) continue;
+    const bool enters = std::find(entering.begin(), entering.end(), i) != entering.end();
+    if (i == ego || !(enters || near_ego(v, i, ego, c, first, last, p.neighbour_range_m))) continue;
     const FrenetTrack& t = v.tracks[i];
     if (t.states.front().time_step <= first && t.states.back().time_step >= last) {
       members.push_back(i);
     } else {
+      m.partial.push_back({t.vehicle_id, t.states.front().time_step, t.states.back().time_step});
       m.left_out.push_back("vehicle " + std::to_string(t.vehicle_id) + ": recorded from " + step_time(v, t.states.front().time_step) +
                            " to " + step_time(v, t.states.back().time_step) + ", not throughout the window");
     }
@@ -209,18 +254,26 @@ MergeTrace build_merge_trace(const RecordingView& v, const LaneChange& c, const 
   m.first_step = first;
   m.last_step = last;
   const std::vector<int> ids = trace_ids(v, members);
+  std::vector<bool> placed;
   double max_s = 0.0;
   for (std::size_t k = 0; k < members.size(); ++k) {
     m.recording_ids.push_back(v.tracks[members[k]].vehicle_id);
+    m.types.push_back(v.tracks[members[k]].type);
     m.trace.vehicles.push_back(declare(v.tracks[members[k]], ids[k], p));
     max_s = std::max(max_s, v.tracks[members[k]].at_step(last)->s_m);
+    placed.push_back(std::find(entering.begin(), entering.end(), members[k]) != entering.end());
+    if (placed.back()) m.entering_ids.push_back(v.tracks[members[k]].vehicle_id);
   }
   m.trace.name = v.recording->benchmark_id + ": " + to_string(c.kind) + " of vehicle " + std::to_string(c.vehicle_id) + " at " + step_time(v, c.time_step);
   m.trace.source = "CommonRoad " + v.recording->version + " recording " + v.recording->benchmark_id + " (mergeguard audit)";
   m.trace.road = trace_road(v, c, p, max_s);
   m.trace.params = {p.rss, p.rules};
-  fill_steps(v, members, c, p.smoothing_half_window_steps, m);
+  fill_steps(v, members, placed, c, p.smoothing_half_window_steps, m);
   add_notes(v, members, m);
+  for (const int id : m.entering_ids) {
+    m.notes.push_back("vehicle " + std::to_string(id) + " is entering from the ramp into the lane this lane change enters: it is placed in that lane "
+                      "while on the ramp, so that the lane change is judged toward it (CommonRoad R_I5, docs/audit.md)");
+  }
   return m;
 }
 

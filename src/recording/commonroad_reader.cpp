@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <set>
 
 #include "core/input_error.h"
@@ -204,6 +205,24 @@ void check_references(const Recording& r) {
   }
 }
 
+// 2018b: a space-separated `tags` attribute on the root; 2020a: <scenarioTags> with one empty
+// element per tag. Both are read in either version (a tag only informs, it is never refused).
+void read_scenario_tags(const XmlElement& root, Recording& r) {
+  if (const std::string* tags = root.attribute("tags")) {
+    std::size_t i = 0;
+    while (i < tags->size() && r.scenario_tags.size() < 64) {
+      const std::size_t j = std::min(tags->find(' ', i), tags->size());
+      if (j > i) r.scenario_tags.push_back(tags->substr(i, std::min<std::size_t>(j - i, 64)));
+      i = j + 1;
+    }
+  }
+  if (const XmlElement* tags = root.first("scenarioTags")) {
+    for (const XmlElement& t : tags->children) {
+      if (r.scenario_tags.size() < 64) r.scenario_tags.push_back(t.name.substr(0, 64));
+    }
+  }
+}
+
 void read_header(const XmlElement& root, Recording& r) {
   const Node n{root, "commonRoad", r.source};
   if (root.name != "commonRoad") n.fail("root element is <" + root.name.substr(0, 40) + ">, not <commonRoad>");
@@ -217,6 +236,7 @@ void read_header(const XmlElement& root, Recording& r) {
   r.time_step_s = Node{dt_text, "commonRoad/@timeStepSize", r.source}.number(1e-3, 10.0);
   const std::string* id = root.attribute("benchmarkID");
   r.benchmark_id = id != nullptr ? *id : std::string("unnamed");
+  read_scenario_tags(root, r);
 }
 
 void read_obstacles(const XmlElement& root, Recording& r) {
@@ -257,7 +277,6 @@ Recording recording_from_xml(const XmlElement& root, const std::string& source) 
   if (r.lanelets.empty()) throw InputError(source, "commonRoad", "no lanelets");
   check_references(r);
   read_obstacles(root, r);
-  if (r.vehicles.empty()) throw InputError(source, "commonRoad", "no dynamic obstacle with a trajectory");
   return r;
 }
 

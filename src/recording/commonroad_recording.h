@@ -52,9 +52,12 @@ struct Recording {
   std::string version;       // "2018b" or "2020a"
   double time_step_s = 0.1;
   std::vector<Lanelet> lanelets;
-  std::vector<RecordedVehicle> vehicles;  // dynamic obstacles with a trajectory
+  std::vector<RecordedVehicle> vehicles;  // dynamic obstacles with a trajectory (may be none)
   int set_valued_states = 0;              // how many states were read from sets (their centres)
   int static_obstacles = 0;               // present in the file, not audited
+  // The scenario's road attributes: 2018b's `tags` attribute, 2020a's <scenarioTags> elements
+  // ("interstate", "highway", "urban", "intersection", ...), as written.
+  std::vector<std::string> scenario_tags;
 
   const Lanelet* lanelet(int id) const;
 };

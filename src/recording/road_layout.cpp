@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <set>
@@ -168,6 +170,73 @@ std::vector<std::size_t> main_lane_order(const Chains& ch, const RampChoice& rc,
   return order;
 }
 
+bool any_type(const std::vector<int>& ids, const LaneletMap& by_id, std::initializer_list<const char*> types) {
+  for (const int id : ids) {
+    for (const char* t : types) {
+      if (has_type(*by_id.at(id), t)) return true;
+    }
+  }
+  return false;
+}
+
+bool has_tag(const Recording& r, const char* tag) {
+  return std::find(r.scenario_tags.begin(), r.scenario_tags.end(), tag) != r.scenario_tags.end();
+}
+
+// How far (along the reference line) the ramp's centre runs within 1.6 lane widths of the
+// joined lane's centre: a ramp's acceleration lane or taper runs beside it, a turn at a
+// junction meets it within a few metres.
+double alongside_m(const RoadLayout& road) {
+  double along = 0.0;
+  const Lane& main = road.main_lanes.front();
+  const auto& pts = road.ramp.centre_sd;
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const bool beside = std::abs(pts[i].d_m - main.centre_d_at(pts[i].s_m)) <= 1.6 * road.lane_width_m && main.covers(pts[i].s_m);
+    if (beside) along += std::max(0.0, pts[i].s_m - pts[i - 1].s_m);
+  }
+  return along;
+}
+
+std::string num1(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", v);
+  return buf;
+}
+
+// The speed limit the lanelets give the ramp and the lane it joins (the lowest), 0 for none.
+double join_speed_limit_mps(const std::vector<int>& ids, const LaneletMap& by_id) {
+  double lowest = 0.0;
+  for (const int id : ids) {
+    const auto& l = by_id.at(id)->speed_limit_mps;
+    if (l && (lowest == 0.0 || *l < lowest)) lowest = *l;
+  }
+  return lowest;
+}
+
+void classify_join(const Recording& r, const std::vector<int>& ramp_ids, const std::vector<int>& main_ids, const LaneletMap& by_id,
+                   RoadLayout& road) {
+  std::vector<int> both = ramp_ids;
+  both.insert(both.end(), main_ids.begin(), main_ids.end());
+  const auto set = [&](bool yes, std::string basis) {
+    road.highway_on_ramp = yes;
+    road.on_ramp_basis = std::move(basis);
+  };
+  if (any_type(ramp_ids, by_id, {"accessRamp"})) return set(true, "laneletType accessRamp");
+  if (any_type(both, by_id, {"highway", "interstate", "mainCarriageWay"})) return set(true, "laneletType highway, interstate or mainCarriageWay");
+  if (any_type(ramp_ids, by_id, {"intersection"})) return set(false, "the joining lanelet is typed intersection");
+  for (const char* tag : {"interstate", "highway"}) {
+    if (has_tag(r, tag)) return set(true, std::string("scenario tag ") + tag + (r.version == "2018b" ? " (2018b tags)" : " (2020a scenarioTags)"));
+  }
+  const double along_m = alongside_m(road);
+  const double limit_mps = join_speed_limit_mps(both, by_id);
+  const std::string measured = "the joining lane runs beside the main lane for " + num1(along_m) + " m" +
+                               (limit_mps > 0 ? ", speed limit " + num1(limit_mps * 3.6) + " km/h" : ", no speed limit given");
+  if (along_m >= kRampMinAlongsideM && (limit_mps == 0.0 || limit_mps >= kRampMinSpeedLimitMps)) {
+    return set(true, "geometry and speed limit of a ramp: " + measured);
+  }
+  set(false, "no map attribute says highway, and not the geometry or speed limit of a ramp: " + measured);
+}
+
 }  // namespace
 
 std::vector<Point2> lanelet_centre(const Lanelet& l) {
@@ -208,7 +277,7 @@ RoadLayout build_road_layout(const Recording& r) {
   if (!rc) rc = ramp_by_topology(ch, by_id);
   if (!rc) throw InputError(r.source, "lanelets", "no ramp found (no accessRamp lanelet, no lane joining another, no rightmost lane ending beside a main lane)");
   const std::vector<std::size_t> order = main_lane_order(ch, *rc, by_id);
-  RoadLayout road{ReferenceLine(make_lane(ch.lanes[rc->joins], by_id, r.source).centre), {}, make_lane(ch.lanes[rc->ramp], by_id, r.source), rc->side, 0, 0, 0, rc->found_by};
+  RoadLayout road{ReferenceLine(make_lane(ch.lanes[rc->joins], by_id, r.source).centre), {}, make_lane(ch.lanes[rc->ramp], by_id, r.source), rc->side, 0, 0, 0, rc->found_by, true, ""};
   double width = 0.0;
   for (const std::size_t c : order) {
     road.main_lanes.push_back(make_lane(ch.lanes[c], by_id, r.source));
@@ -224,6 +293,7 @@ RoadLayout build_road_layout(const Recording& r) {
   for (const Lanelet& l : r.lanelets) {
     if (l.speed_limit_mps) road.speed_limit_mps = std::max(road.speed_limit_mps, *l.speed_limit_mps);
   }
+  classify_join(r, ch.lanes[rc->ramp], ch.lanes[rc->joins], by_id, road);
   return road;
 }
 

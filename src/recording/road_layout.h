@@ -40,7 +40,19 @@ struct RoadLayout {
   double ramp_end_s_m = 0.0;     // where the ramp ends, along the reference line
   double speed_limit_mps = 0.0;  // from the lanelets, 0 when none is given
   std::string found_by;          // how the ramp was identified, for the report
+  // Whether the join is a highway on-ramp (classify_join) and what says so: only then are its
+  // merges audited as ramp merges (an urban junction's join is not, docs/audit.md "The road").
+  bool highway_on_ramp = true;
+  std::string on_ramp_basis;
 };
+
+// What makes a lane join a highway on-ramp, in this order: the lanelet types (accessRamp,
+// highway, interstate or mainCarriageWay on the ramp or the lane it joins: yes; intersection on
+// the ramp: no), the scenario's road attributes (2018b tags, 2020a scenarioTags: interstate or
+// highway), else the geometry and speed limits of a ramp: running beside the main lane for at
+// least kRampMinAlongsideM before it ends, and no speed limit below kRampMinSpeedLimitMps.
+inline constexpr double kRampMinAlongsideM = 30.0;
+inline constexpr double kRampMinSpeedLimitMps = 60.0 / 3.6;
 
 // Raises InputError (file, lanelet, problem) when no ramp is found or the lanes are unusable.
 RoadLayout build_road_layout(const Recording& r);

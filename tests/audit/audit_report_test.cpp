@@ -33,7 +33,15 @@ TEST(AuditReport, TheIndexListsEveryMerge) {
   EXPECT_EQ(j["merges"][1]["sensitivity"]["points"].size(), 12u);
   EXPECT_EQ(j["road"]["ramp_side"], "left");
   const std::string md = audit_index_markdown(z.audit);
-  EXPECT_NE(md.find("| 2 | 1 | ramp merge | 5.7 | violated | vehicle 2 | rss_longitudinal -38.39 m"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2 | 1 | ramp merge | 5.7 | violated | vehicle 2 | violated at rho = 1 s; violated even at rho = 0 s (binding: rss_longitudinal"),
+            std::string::npos) << md;
+  EXPECT_NE(md.find("| 1 | 2 | into the ramp | 2.1 | undetermined | - | undetermined: the merge was already under way"), std::string::npos) << md;
+  EXPECT_NE(md.find("merges: 3 found, 2 judged (0 hold, 2 violated), 1 undetermined, 0 not judged"), std::string::npos) << md;
+  EXPECT_EQ(j["counts"]["undetermined"], 1);
+  EXPECT_EQ(j["merges"][0]["verdict"], "undetermined");
+  EXPECT_FALSE(j["merges"][0]["undetermined"]["reason"].get<std::string>().empty());
+  EXPECT_TRUE(j["merges"][1]["frontier"]["max_response_time_s"].is_null());
+  EXPECT_EQ(j["merges"][1]["frontier"]["binding_rule"], "rss_longitudinal");
   EXPECT_NE(md.find("[03-vehicle-2](03-vehicle-2/audit.md)"), std::string::npos);
 }
 
@@ -47,6 +55,8 @@ TEST(AuditReport, AMergesPageSaysWhatItRestsOn) {
   EXPECT_NE(md.find("it deviates from a straight line by up to 1.13 m"), std::string::npos);
   EXPECT_NE(md.find("Ego = CommonRoad obstacle 1"), std::string::npos);
   EXPECT_NE(md.find("Sensitivity: 0 of 12 profile variations hold"), std::string::npos);
+  EXPECT_NE(md.find("Compliance frontier: violated at rho = 1 s; violated even at rho = 0 s"), std::string::npos) << md;
+  EXPECT_NE(md.find("![compliance frontier](frontier.svg)"), std::string::npos);
 }
 
 TEST(AuditReport, HtmlIsSelfContainedWithBothPlots) {

@@ -52,12 +52,14 @@ TEST_P(RoundTrip, TheAuditOfTheRecordedRunAgreesWithCheck) {
   const TraceRecording tr = trace_to_recording(checked.trace, GetParam().bend_radius_m);
   const Recording r = parse_recording(recording_to_xml(tr.recording), "round trip");
   const RoadLayout road = build_road_layout(r);
-  const RecordingAudit a = audit_recording(r, road, profile_of(checked.trace, tr), kTraceObstacleIdBase);
+  const RecordingAudit a = audit_recording(r, road, profile_of(checked.trace, tr), AuditOptions{kTraceObstacleIdBase, false, false});
   ASSERT_EQ(a.merges.size(), 1u) << "the ego's merge (or halt) is found, and only it";
   const MergeAudit& m = a.merges[0];
   // The side lane ends as far ahead of the ego as it did in the simulation.
   EXPECT_NEAR(m.merge.trace.road.side_lane_end_x_m - m.merge.trace.steps[0].vehicles[0].x_m,
               checked.trace.road.side_lane_end_x_m - checked.trace.steps[0].vehicles[0].x_m, 0.1);
+  // A simulated run records everything from its first instant: nothing is censored.
+  EXPECT_EQ(m.verdict, checked.holds ? AuditVerdict::kHolds : AuditVerdict::kViolated) << (m.censoring ? m.censoring->reason : "");
   EXPECT_EQ(m.result.holds, checked.holds) << m.result.liability_detail << " | check: " << checked.liability_detail;
   EXPECT_EQ(trace_party(m), checked.liable_id) << m.result.liability_detail << " | check: " << checked.liability_detail;
 }

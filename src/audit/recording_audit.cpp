@@ -15,10 +15,10 @@ std::string fmt(double v) {
 }  // namespace
 
 std::string MergeAudit::liable_name() const {
-  if (result.liable_id == kEgoId) return "ego (vehicle " + std::to_string(merge.recording_ids.front()) + ")";
-  if (result.liable_id >= 1) {
+  if (result.liable_id.is_ego()) return "ego (vehicle " + std::to_string(merge.recording_ids.front()) + ")";
+  if (result.liable_id.is_vehicle()) {
     for (std::size_t i = 0; i < merge.trace.vehicles.size(); ++i) {
-      if (merge.trace.vehicles[i].id == result.liable_id) return "vehicle " + std::to_string(merge.recording_ids[i]);
+      if (merge.trace.vehicles[i].id == result.liable_id.vehicle_id()) return "vehicle " + std::to_string(merge.recording_ids[i]);
     }
   }
   return party_name(result.liable_id);

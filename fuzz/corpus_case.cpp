@@ -4,6 +4,8 @@
 #include <chrono>
 #include <ctime>
 #include <filesystem>
+#include <optional>
+#include <string_view>
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
@@ -27,10 +29,20 @@ Signature signature_from(const ObjectReader& r) {
   return s;
 }
 
-int liable_from(const ObjectReader& r) { return static_cast<int>(r.integer("liable_id", kNobody, 1000000)); }
+// A liable party as a case writes it (Party::code; the main lane is never liable), refused
+// with an InputError when it names no party.
+Party party_from_code(const ObjectReader& r, std::string_view key, long long code) {
+  const std::optional<Party> party = Party::from_code(static_cast<int>(code));
+  if (!party) r.fail(key, "is not a party code (-1 none, 0 ego, >= 1 a vehicle id)");
+  return *party;
+}
+
+Party liable_from(const ObjectReader& r) {
+  return party_from_code(r, "liable_id", r.integer("liable_id", Party::nobody().code(), 1000000));
+}
 
 json failure_to_json(const PropertyFailure& f) {
-  return {{"property", f.property}, {"rule", f.rule},     {"liable_id", f.liable_id}, {"liable", party_name(f.liable_id)},
+  return {{"property", f.property}, {"rule", f.rule},     {"liable_id", f.liable_id.code()}, {"liable", party_name(f.liable_id)},
           {"time_s", f.time_s},     {"margin", f.margin}, {"detail", f.detail}};
 }
 
@@ -41,7 +53,7 @@ PropertyFailure failure_from(const ObjectReader& r) {
 }
 
 json violation_to_json(const CaseViolation& v) {
-  json j = {{"rule", v.rule}, {"liable_id", v.liable_id}, {"liable", party_name(v.liable_id)},
+  json j = {{"rule", v.rule}, {"liable_id", v.liable_id.code()}, {"liable", party_name(v.liable_id)},
             {"margin", v.margin}, {"unit", v.unit}};
   j["time_s"] = v.time_s ? json(*v.time_s) : json(nullptr);
   return j;
@@ -63,7 +75,7 @@ json verdict_to_json(const CaseVerdict& v) {
   for (const Signature& s : v.failed_properties) properties.push_back(signature_to_json(s));
   return {{"holds", v.holds},
           {"collision", v.collision},
-          {"collision_liable_id", v.collision_liable_id},
+          {"collision_liable_id", v.collision_liable_id.code()},
           {"collision_liable", party_name(v.collision_liable_id)},
           {"violations", violations},
           {"failed_properties", properties},
@@ -85,7 +97,9 @@ CaseVerdict verdict_from(const ObjectReader& r) {
   if (!r.has("holds")) r.fail("holds", "missing");
   v.holds = r.boolean_or("holds", true);
   v.collision = r.boolean_or("collision", false);
-  v.collision_liable_id = static_cast<int>(r.integer_or("collision_liable_id", kNobody, kNobody, 1000000));
+  v.collision_liable_id = party_from_code(
+      r, "collision_liable_id",
+      r.integer_or("collision_liable_id", Party::nobody().code(), Party::nobody().code(), 1000000));
   const json& violations = r.array("violations");
   for (std::size_t i = 0; i < violations.size(); ++i)
     v.violations.push_back(violation_from(ObjectReader(violations[i], r.source(), r.path_of("violations") + "/" + std::to_string(i))));
@@ -124,7 +138,7 @@ CaseVerdict verdict_of(const RunOutcome& outcome) {
     const CheckResult& result = *outcome.result;
     v.holds = result.holds;
     v.collision = result.collision;
-    v.collision_liable_id = result.collision ? result.collision_liable_id : kNobody;
+    v.collision_liable_id = result.collision ? result.collision_liable_id : Party::nobody();
     for (const RuleResult& r : result.rules)
       if (!r.holds) v.violations.push_back({r.rule_id, r.liable_id, r.first_violation_time_s, r.min_margin, r.unit});
     v.trace_digest = result.trace_digest;

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/party.h"
 #include "core/scenario.h"
 #include "fuzz/properties.h"
 #include "planner/exec_protocol.h"
@@ -22,7 +23,7 @@ inline constexpr int kCorpusFormatVersion = 1;
 
 struct CaseViolation {
   std::string rule;
-  int liable_id = kNobody;
+  Party liable_id = Party::nobody();
   std::optional<double> time_s;   // first violation time
   double margin = 0.0;            // minimum robustness margin (< 0)
   std::string unit;
@@ -33,7 +34,7 @@ struct CaseViolation {
 struct CaseVerdict {
   bool holds = true;
   bool collision = false;
-  int collision_liable_id = kNobody;
+  Party collision_liable_id = Party::nobody();
   std::vector<CaseViolation> violations;          // rules that do not hold, in checker order
   std::vector<Signature> failed_properties;       // every property failure's signature, sorted, unique
   std::uint64_t trace_digest = 0;                 // informative: digests differ between builds

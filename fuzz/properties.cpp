@@ -32,8 +32,8 @@ PropertyFailure collision_failure(const char* property, const CheckResult& resul
 
 void ego_never_liable(const CheckResult& result, std::vector<PropertyFailure>& out) {
   for (const RuleResult& r : result.rules)
-    if (!r.holds && r.liable_id == kEgoId) out.push_back(from_rule(property::kEgoNeverLiable, r));
-  if (result.collision && result.collision_liable_id == kEgoId && !has_rule(result, "collision"))
+    if (!r.holds && r.liable_id == Party::ego()) out.push_back(from_rule(property::kEgoNeverLiable, r));
+  if (result.collision && result.collision_liable_id == Party::ego() && !has_rule(result, "collision"))
     out.push_back(collision_failure(property::kEgoNeverLiable, result));
 }
 
@@ -43,7 +43,7 @@ void ego_never_liable(const CheckResult& result, std::vector<PropertyFailure>& o
 // so only the ego's and nobody's count here.
 void compliant_safe(const Scenario& s, const CheckResult& result, std::vector<PropertyFailure>& out) {
   if (!all_compliant(s)) return;
-  auto others_comply = [](int liable_id) { return liable_id == kEgoId || liable_id == kNobody; };
+  auto others_comply = [](Party liable) { return liable.is_ego() || liable.is_nobody(); };
   if (result.collision && others_comply(result.collision_liable_id))
     out.push_back(collision_failure(property::kCompliantSafe, result));
   for (const RuleResult& r : result.rules)
@@ -52,7 +52,7 @@ void compliant_safe(const Scenario& s, const CheckResult& result, std::vector<Pr
 }
 
 void collision_liable(const CheckResult& result, std::vector<PropertyFailure>& out) {
-  if (result.collision && result.collision_liable_id == kNobody)
+  if (result.collision && result.collision_liable_id == Party::nobody())
     out.push_back(collision_failure(property::kCollisionLiable, result));
 }
 
@@ -73,7 +73,7 @@ void side_lane_end(const Scenario& s, const CheckResult& result, std::vector<Pro
     if (ego.y_m >= boundary_y) continue;
     const double margin_m = s.road.side_lane_end_x_m - (ego.x_m + s.ego.size.length_m / 2.0);
     if (margin_m < 0.0) {
-      out.push_back({property::kSideLaneEnd, kRuleSideLaneEnd, kEgoId, step.time_s, margin_m,
+      out.push_back({property::kSideLaneEnd, kRuleSideLaneEnd, Party::ego(), step.time_s, margin_m,
                      "ego front passed the side lane end while its centre was in the side lane"});
       return;
     }
@@ -100,7 +100,7 @@ std::vector<PropertyFailure> evaluate_properties(const Scenario& scenario, const
   side_lane_end(scenario, result, out);
   failed_rules(property::kNoOscillation, kOscillationRules, result, out);
   if (rerun_digest && *rerun_digest != result.trace_digest)
-    out.push_back({property::kDeterminism, kRuleDigest, kNobody, 0.0, -1.0, "a second run gave another trace digest"});
+    out.push_back({property::kDeterminism, kRuleDigest, Party::nobody(), 0.0, -1.0, "a second run gave another trace digest"});
   failed_rules(property::kProgress, {kRuleProgress}, result, out);
   return out;
 }
@@ -116,17 +116,17 @@ RunOutcome run_properties(const Scenario& scenario, const CheckFn& check, const 
     outcome.failures = evaluate_properties(scenario, *outcome.result, rerun);
   } catch (const PlannerFault& fault) {
     outcome.result.reset();
-    outcome.failures = {{property::kPlannerResponds, fault.kind, kEgoId, fault.time_s, -1.0, fault.what()}};
+    outcome.failures = {{property::kPlannerResponds, fault.kind, Party::ego(), fault.time_s, -1.0, fault.what()}};
   } catch (const std::exception& e) {
     outcome.result.reset();
-    outcome.failures = {{property::kCheckCompletes, kRuleException, kNobody, 0.0, -1.0, e.what()}};
+    outcome.failures = {{property::kCheckCompletes, kRuleException, Party::nobody(), 0.0, -1.0, e.what()}};
   }
   return outcome;
 }
 
-std::string party_class(int liable_id) {
-  if (liable_id == kEgoId) return "ego";
-  if (liable_id == kNobody) return "none";
+std::string party_class(Party liable) {
+  if (liable.is_ego()) return "ego";
+  if (liable.is_nobody()) return "none";
   return "vehicle";
 }
 

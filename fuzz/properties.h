@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/party.h"
 #include "core/scenario.h"
 #include "rules/check.h"
 
@@ -42,7 +43,7 @@ inline constexpr const char* kRuleException = "exception";
 struct PropertyFailure {
   std::string property;
   std::string rule;
-  int liable_id = kNobody;
+  Party liable_id = Party::nobody();
   double time_s = 0.0;
   double margin = 0.0;       // the rule's robustness margin (< 0), in its unit
   std::string detail;
@@ -69,7 +70,7 @@ RunOutcome run_properties(const Scenario& scenario, const CheckFn& check, const 
                           bool check_determinism);
 
 // Liable party class: "ego", "vehicle" (vehicle ids change when shrinking renumbers), "none".
-std::string party_class(int liable_id);
+std::string party_class(Party liable);
 
 struct Signature {
   std::string planner;

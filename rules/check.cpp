@@ -21,13 +21,6 @@
 
 namespace mg {
 
-std::string party_name(int party_id) {
-  if (party_id == kNobody) return "none";
-  if (party_id == kEgoId) return "ego";
-  if (party_id == kMainLane) return "main lane";
-  return "vehicle " + std::to_string(party_id);
-}
-
 const std::vector<MonitorEntry>& rule_monitors() {
   static const std::vector<MonitorEntry> monitors = {
       {"rss_longitudinal", monitor_rss_longitudinal},
@@ -105,7 +98,7 @@ nlohmann::json rule_to_json(const RuleResult& r) {
           {"min_margin", number_or_null(r.min_margin)},
           {"min_margin_time_s", std::isfinite(r.min_margin) ? nlohmann::json(r.min_margin_time_s) : nlohmann::json()},
           {"first_violation_time_s", r.first_violation_time_s ? nlohmann::json(*r.first_violation_time_s) : nlohmann::json()},
-          {"liable", party_name(r.holds ? kNobody : r.liable_id)},
+          {"liable", party_name(r.holds ? Party::nobody() : r.liable_id)},
           {"required_value", number_or_null(r.required_value)},
           {"actual_value", number_or_null(r.actual_value)},
           {"detail", r.detail}};
@@ -124,8 +117,8 @@ nlohmann::json check_result_to_json(const CheckResult& r) {
   for (const ChannelEvent& e : r.trace.channel) {
     const V2vMessage& m = e.message;
     timeline.push_back({{"time_s", e.time_s}, {"kind", "message_" + to_string(e.kind)},
-                        {"actor", party_name(m.from_id)},
-                        {"detail", to_string(m.type) + " to " + party_name(m.to_id)}});
+                        {"actor", party_name(Party::from_vehicle_id(m.from_id))},
+                        {"detail", to_string(m.type) + " to " + party_name(Party::from_vehicle_id(m.to_id))}});
   }
   for (const RuleResult& rule : r.rules) {
     if (rule.holds) continue;
@@ -145,7 +138,7 @@ nlohmann::json check_result_to_json(const CheckResult& r) {
           {"liable", party_name(r.liable_id)},
           {"liability_detail", r.liability_detail},
           {"collision", r.collision},
-          {"collision_liable", party_name(r.collision ? r.collision_liable_id : kNobody)},
+          {"collision_liable", party_name(r.collision ? r.collision_liable_id : Party::nobody())},
           {"rules_violated", violated},
           {"rules", rules},
           {"right_of_way", row},

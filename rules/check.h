@@ -12,14 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "core/observed_trace.h"
+#include "core/party.h"
 
 namespace mg {
-
-// Liable party: kNobody, kEgoId (the ego) or a main-lane vehicle id (>= 1).
-inline constexpr int kNobody = -1;
-inline constexpr int kEgoId = 0;
-inline constexpr int kMainLane = -2;  // right-of-way holder: the main-lane traffic as a whole
-std::string party_name(int party_id);  // "none", "ego", "vehicle 3", "main lane"
 
 // One rule's judgement over the whole trace.
 struct RuleResult {
@@ -30,7 +25,7 @@ struct RuleResult {
   double min_margin = 0.0;      // signed robustness: >= 0 holds
   double min_margin_time_s = 0.0;
   std::optional<double> first_violation_time_s;
-  int liable_id = kNobody;      // who broke it (when it does not hold)
+  Party liable_id = Party::nobody();  // who broke it (when it does not hold)
   double required_value = 0.0;  // at the worst moment: what the rule required ...
   double actual_value = 0.0;    // ... and what the trace had
   std::string detail;           // one line for the report
@@ -41,13 +36,14 @@ struct CheckResult {
   bool holds = true;            // every rule holds
   std::vector<RuleResult> rules;
   bool collision = false;
-  int collision_liable_id = kNobody;  // meaningful when collision
-  // Overall liable party: the party whose obligation broke first (spec §8); kNobody when
+  Party collision_liable_id = Party::nobody();  // meaningful when collision
+  // Overall liable party: the party whose obligation broke first (spec §8); nobody when
   // every rule holds, or when a collision has nobody liable (see liability_detail).
-  int liable_id = kNobody;
+  Party liable_id = Party::nobody();
   std::string liability_detail;       // one line: which rule, when, why
-  // Right-of-way holder over time: (time_s, party id) at every change.
-  std::vector<std::pair<double, int>> right_of_way;
+  // Right-of-way holder over time: (time_s, party) at every change; the main lane holds it
+  // as a whole until a merge claims it.
+  std::vector<std::pair<double, Party>> right_of_way;
   std::vector<std::string> right_of_way_observations;  // one line per merge attempt (merge_attempts.h)
   std::vector<double> merge_phase_times_s;            // the observed merge phases (merge_phases.h)
   RuleParams rule_params;                             // what the trace was judged with

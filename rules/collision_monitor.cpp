@@ -48,7 +48,7 @@ MonitorOutput monitor_collision(const MonitorContext& ctx) {
       } else {
         c = check_box_pair_fcl(pose_prev[i], pose_now[i], pose_prev[j], pose_now[j], clearance_m(fp_now[i], fp_now[j]));
       }
-      if (acc.record(k, steps[k].time_s, c.margin_m, kNobody, 0.0, c.margin_m)) {
+      if (acc.record(k, steps[k].time_s, c.margin_m, Party::nobody(), 0.0, c.margin_m)) {
         std::ostringstream os;
         os << party_name(party_of(s, i)) << " and " << party_name(party_of(s, j)) << " collided at t = "
            << steps[k].time_s << " s (x = " << pose_now[i].x_m << " m"

@@ -9,7 +9,7 @@ namespace mg {
 
 BoxPose box_pose_of(const ObservedTrace& s, const ObservedStep& step, std::size_t k);
 
-// The collision rule does not name a liable party itself (kNobody): the liability engine
+// The collision rule does not name a liable party itself (Party::nobody()): the liability engine
 // takes it from the broken obligations before the collision (rules/liability.h).
 MonitorOutput monitor_collision(const MonitorContext& ctx);
 

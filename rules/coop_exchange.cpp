@@ -17,11 +17,11 @@ std::vector<CoopExchange> coop_exchanges(const ObservedTrace& t) {
   std::vector<CoopExchange> out;
   for (const ChannelEvent& e : t.channel) {
     const V2vMessage& m = e.message;
-    if (m.type == MessageType::kRequest && m.from_id == kEgoId) {
+    if (m.type == MessageType::kRequest && Party::from_vehicle_id(m.from_id).is_ego()) {
       if (e.kind == ChannelEventKind::kSent) out.push_back({&m, e.time_s});
       continue;
     }
-    if (m.to_id != kEgoId || (m.type != MessageType::kAccept && m.type != MessageType::kRefuse)) continue;
+    if (!Party::from_vehicle_id(m.to_id).is_ego() || (m.type != MessageType::kAccept && m.type != MessageType::kRefuse)) continue;
     CoopExchange* x = latest_request_to(out, m.from_id);
     if (x == nullptr) continue;
     if (m.type == MessageType::kAccept && e.kind == ChannelEventKind::kSent && x->accept_time_s < 0.0)
@@ -38,7 +38,7 @@ double acceptance_time(const ObservedTrace& t, int partner_id, double time_s) {
   for (const ChannelEvent& e : t.channel) {
     if (e.time_s > time_s + 1e-9) break;
     if (e.kind == ChannelEventKind::kDelivered && e.message.type == MessageType::kAccept &&
-        e.message.from_id == partner_id && e.message.to_id == kEgoId)
+        e.message.from_id == partner_id && Party::from_vehicle_id(e.message.to_id).is_ego())
       when = e.time_s;
   }
   return when;

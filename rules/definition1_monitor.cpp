@@ -24,7 +24,7 @@ MonitorOutput monitor_gap_inequality(const MonitorContext& ctx, GapSide side) {
     if (k < 1) continue;  // open side of the gap: nothing to satisfy
     const Def1Reading& r = a.def1;
     const double m = side == GapSide::kFollower ? r.margin_11_m : r.margin_12_m;
-    if (acc.record(*a.entry_step, *a.entry_time_s, m, kEgoId, 0.0, m)) {
+    if (acc.record(*a.entry_step, *a.entry_time_s, m, Party::ego(), 0.0, m)) {
       std::ostringstream os;
       os << "ego entered the main lane at t = " << *a.entry_time_s << " s (merge started at t = " << a.start_time_s
          << " s) without the right of way: at the best instant "
@@ -49,7 +49,7 @@ MonitorOutput monitor_window_limit(const MonitorContext& ctx, LimitKind kind) {
     if (a.basis != RowBasis::kDef1) continue;
     const int k = kind == LimitKind::kAccel ? a.gap.follower : a.gap.leader;
     if (k < 1) continue;
-    const int other = party_of(s, static_cast<std::size_t>(k));
+    const Party other = party_of(s, static_cast<std::size_t>(k));
     const Limits& lim = limits_of(s, static_cast<std::size_t>(k));
     const double from_s = a.decision_time_s;
     // The paper's windows, [T_dec, T_dec + rho/2] and [T_dec, T_dec + rho], stretched to the
@@ -104,7 +104,7 @@ MonitorOutput monitor_def1_3_halt(const MonitorContext& ctx) {
     // Def. 1.3 binds only while no gap satisfies ineq. (1.1)/(1.2): with one, the ego may go on
     // toward it (whether it then enters with the right of way is the gap rules' question).
     if (m < 0.0 && any_def1_gap_feasible(s, i, ctx.params.merge_duration_s)) continue;
-    if (acc.record(i, steps[i].time_s, m, kEgoId, s.road.side_lane_end_x_m, stop_x)) {
+    if (acc.record(i, steps[i].time_s, m, Party::ego(), s.road.side_lane_end_x_m, stop_x)) {
       std::ostringstream os;
       os << "ego in the side lane without a gap can no longer halt before its end at x = "
          << s.road.side_lane_end_x_m << " m (front would stop at x = " << stop_x << " m)";

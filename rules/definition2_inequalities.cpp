@@ -75,7 +75,7 @@ double soundness_2_2_m(const MonitorContext& ctx, const RequestView& r, std::str
 // counts on it being ahead). Within yield_speed_tolerance_mps of travel per second.
 void responder_positions(const MonitorContext& ctx, const CoopExchange& x, MarginAccumulator& acc) {
   const ObservedTrace& s = ctx.trace;
-  const int partner = x.request->to_id;
+  const Party partner = Party::from_vehicle_id(x.request->to_id);
   const int k = index_of_party(s, partner);
   if (k < 1) return;
   const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
@@ -119,16 +119,16 @@ MonitorOutput monitor_def2_request_sound(const MonitorContext& ctx) {
   if (s.steps.empty()) return acc.finish();
   for (const CoopExchange& x : coop_exchanges(s)) {
     const V2vMessage& m = *x.request;
-    const int k = index_of_party(s, m.to_id);
+    const int k = s.index_of(m.to_id);
     if (k < 1 || !std::isfinite(m.pc_m + m.d_lon_star_m + m.target_speed_mps)) continue;  // def2_1a's
     const std::size_t i = step_at(s, x.request_time_s);
     const RequestView r{m, k, ego_of(s.steps[i]), state_of(s.steps[i], static_cast<std::size_t>(k))};
     std::string what;
     const bool ahead = m.coop_case == CoopCase::kEgoAhead;
     const double margin = ahead ? soundness_2_1_m(ctx, r, what) : soundness_2_2_m(ctx, r, what);
-    if (acc.record(i, x.request_time_s, margin, kEgoId, 0.0, margin)) {
+    if (acc.record(i, x.request_time_s, margin, Party::ego(), 0.0, margin)) {
       std::ostringstream os;
-      os << "the Def. 2." << (ahead ? "1" : "2") << " request to " << party_name(m.to_id) << " at t = "
+      os << "the Def. 2." << (ahead ? "1" : "2") << " request to " << party_name(Party::from_vehicle_id(m.to_id)) << " at t = "
          << x.request_time_s << " s (v_o* = " << m.target_speed_mps << " m/s) was unsound when sent: " << what
          << " by " << -margin << " m";
       acc.set_detail(os.str());

@@ -26,7 +26,7 @@ MonitorOutput monitor_responder(const MonitorContext& ctx, CoopCase which) {
   const double tol = ctx.params.speed_tolerance_mps;
   for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
     if (x.request->coop_case != which || x.accept_time_s < 0.0 || steps.empty()) continue;
-    const int partner = x.request->to_id;
+    const Party partner = Party::from_vehicle_id(x.request->to_id);
     const int k = index_of_party(s, partner);
     if (k < 1) continue;
     const Limits& lim = limits_of(s, k);
@@ -84,14 +84,14 @@ MonitorOutput monitor_def2_1a_request(const MonitorContext& ctx) {
     const V2vMessage& m = *x.request;
     if (m.coop_case != CoopCase::kEgoAhead) continue;
     const std::size_t i = step_at(ctx.trace, x.request_time_s);
-    const int k = index_of_party(s, m.to_id);
+    const int k = s.index_of(m.to_id);
     const double contact = (size_of(s, 0).length_m + (k > 0 ? size_of(s, static_cast<std::size_t>(k)).length_m : 0.0)) / 2.0;
     const double pc_ahead = std::isfinite(m.pc_m) ? m.pc_m - ego_of(ctx.trace.steps[i]).x_m : -1.0;
     const double d_star = std::isfinite(m.d_lon_star_m) ? m.d_lon_star_m - contact : -1.0;
     const double margin = std::min(pc_ahead, d_star);
-    if (acc.record(i, x.request_time_s, margin, kEgoId, contact, m.d_lon_star_m)) {
+    if (acc.record(i, x.request_time_s, margin, Party::ego(), contact, m.d_lon_star_m)) {
       std::ostringstream os;
-      os << "request to " << party_name(m.to_id) << " at t = " << x.request_time_s << " s carries P_c = " << m.pc_m
+      os << "request to " << party_name(Party::from_vehicle_id(m.to_id)) << " at t = " << x.request_time_s << " s carries P_c = " << m.pc_m
          << " m (ego at x = " << ego_of(ctx.trace.steps[i]).x_m << " m) and D*_lon = " << m.d_lon_star_m << " m";
       acc.set_detail(os.str());
     }
@@ -108,7 +108,7 @@ double def2_2a_window_end_s(const MonitorContext& ctx, const CoopExchange& x) {
   for (const ChannelEvent& e : ctx.trace.channel) {
     if (e.time_s > end + kTieS) break;
     if (e.kind == ChannelEventKind::kDelivered && e.message.type == MessageType::kRefuse &&
-        e.message.from_id == x.request->to_id && e.message.to_id == kEgoId && e.time_s >= x.request_time_s) {
+        e.message.from_id == x.request->to_id && Party::from_vehicle_id(e.message.to_id).is_ego() && e.time_s >= x.request_time_s) {
       end = e.time_s;
       break;
     }
@@ -135,7 +135,7 @@ MonitorOutput monitor_def2_2a_ego_brake(const MonitorContext& ctx) {
     for (std::size_t i = first; i < steps.size() && steps[i].time_s <= end; ++i) {
       const double floor_v = v0 - b_min * (steps[i].time_s - x.request_time_s);
       const double v = speed_of(ego_of(steps[i]));
-      if (acc.record(i, steps[i].time_s, v - floor_v + ctx.params.speed_tolerance_mps, kEgoId, floor_v, v)) {
+      if (acc.record(i, steps[i].time_s, v - floor_v + ctx.params.speed_tolerance_mps, Party::ego(), floor_v, v)) {
         std::ostringstream os;
         os << "after its Def. 2.2 request at t = " << x.request_time_s << " s the ego braked harder than b_min = "
            << b_min << " m/s2 (speed " << v << " m/s < " << floor_v << " m/s)";
@@ -158,9 +158,9 @@ MonitorOutput monitor_def2_3_fallback(const MonitorContext& ctx) {
     double m = x.request_time_s + rho_c - x.accept_delivered_time_s;
     if (m < 0.0 && m >= -kTieS) m = 0.0;  // the window is closed: delivered at t_r + rho_c is in time
     const double at_s = a.basis == RowBasis::kDef2 ? a.decision_time_s : a.start_time_s;
-    if (acc.record(step_at(ctx.trace, at_s), at_s, m, kEgoId, x.request_time_s + rho_c, x.accept_delivered_time_s)) {
+    if (acc.record(step_at(ctx.trace, at_s), at_s, m, Party::ego(), x.request_time_s + rho_c, x.accept_delivered_time_s)) {
       std::ostringstream os;
-      os << "ego started a merge with " << party_name(x.request->to_id) << " at t = " << a.start_time_s
+      os << "ego started a merge with " << party_name(Party::from_vehicle_id(x.request->to_id)) << " at t = " << a.start_time_s
          << " s on an acceptance delivered at t = " << x.accept_delivered_time_s << " s, after rho_c (request at t = "
          << x.request_time_s << " s)";
       acc.set_detail(os.str());

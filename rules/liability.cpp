@@ -25,14 +25,14 @@ bool RightOfWay::ego_held_within(double from_s, double to_s) const {
 
 RightOfWay compute_right_of_way(const ObservedTrace& t, const MergeAttempts& attempts) {
   RightOfWay row;
-  const int traffic = t.vehicles.size() <= 1 ? kNobody : kMainLane;
+  const Party traffic = t.vehicles.size() <= 1 ? Party::nobody() : Party::main_lane();
   const double end = std::numeric_limits<double>::infinity();
-  int holder = traffic;
+  Party holder = traffic;
   row.timeline.emplace_back(0.0, holder);
-  auto change = [&](double time_s, int h) {
+  auto change = [&](double time_s, Party h) {
     if (h == holder) return;
-    if (holder == kEgoId) row.ego_holds.back().second = time_s;
-    if (h == kEgoId) row.ego_holds.emplace_back(time_s, end);
+    if (holder == Party::ego()) row.ego_holds.back().second = time_s;
+    if (h == Party::ego()) row.ego_holds.emplace_back(time_s, end);
     holder = h;
     if (row.timeline.back().first == time_s) {
       row.timeline.back().second = h;  // at the same instant: only the outcome counts
@@ -41,9 +41,9 @@ RightOfWay compute_right_of_way(const ObservedTrace& t, const MergeAttempts& att
     }
   };
   for (const MergeAttempt& a : attempts.attempts) {
-    if (a.basis != RowBasis::kNone) change(a.decision_time_s, kEgoId);
+    if (a.basis != RowBasis::kNone) change(a.decision_time_s, Party::ego());
     if (!a.end_time_s) break;
-    change(*a.end_time_s, a.completed ? kNobody : traffic);
+    change(*a.end_time_s, a.completed ? Party::nobody() : traffic);
     if (a.completed) break;
   }
   return row;
@@ -64,7 +64,7 @@ void assign_liability(CheckResult& r) {
   for (const auto& rule : r.rules) {
     if (rule.holds) continue;
     if (rule.rule_id == "collision") collision = &rule;
-    if (rule.liable_id == kNobody) continue;
+    if (rule.liable_id == Party::nobody()) continue;
     if (!first || *rule.first_violation_time_s < *first->first_violation_time_s) first = &rule;
   }
   r.collision = collision != nullptr;
@@ -72,12 +72,12 @@ void assign_liability(CheckResult& r) {
     // The obligation broken last at or before the collision: the danger that led to it.
     const RuleResult* cause = nullptr;
     for (const auto& rule : r.rules) {
-      if (rule.holds || rule.liable_id == kNobody || !can_cause_collision(rule) ||
+      if (rule.holds || rule.liable_id == Party::nobody() || !can_cause_collision(rule) ||
           *rule.first_violation_time_s > *collision->first_violation_time_s + 1e-9)
         continue;
       if (!cause || *rule.first_violation_time_s > *cause->first_violation_time_s) cause = &rule;
     }
-    r.collision_liable_id = cause ? cause->liable_id : kNobody;
+    r.collision_liable_id = cause ? cause->liable_id : Party::nobody();
     if (!cause) first = nullptr;
   }
   if (first) {
@@ -86,7 +86,7 @@ void assign_liability(CheckResult& r) {
                          first->paper_ref + ") first, at t = " +
                          std::to_string(*first->first_violation_time_s) + " s: " + first->detail;
   } else if (collision) {
-    r.liable_id = kNobody;
+    r.liable_id = Party::nobody();
     r.liability_detail = "collision with nobody liable: the rule set did not explain it (" +
                          collision->detail + ")";
   }

@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "core/observed_trace.h"
+#include "core/party.h"
 
 namespace mg {
 
 struct CheckResult;
 
 struct RightOfWay {
-  std::vector<std::pair<double, int>> timeline;      // (time_s, holder) at every change
+  std::vector<std::pair<double, Party>> timeline;    // (time_s, holder) at every change
   std::vector<std::pair<double, double>> ego_holds;  // [from, to) intervals
   bool ego_holds_at(double time_s) const;
   // Whether the ego held it at some instant of [from_s, to_s].

@@ -148,7 +148,7 @@ bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const 
 }
 
 std::string gap_text(const ObservedTrace& t, const GapIndices& g) {
-  const auto side = [&](int k) { return k < 1 ? std::string("open") : party_name(t.vehicles[static_cast<std::size_t>(k)].id); };
+  const auto side = [&](int k) { return k < 1 ? std::string("open") : party_name(Party::from_vehicle_id(t.vehicles[static_cast<std::size_t>(k)].id)); };
   return "(follower " + side(g.follower) + ", leader " + side(g.leader) + ")";
 }
 
@@ -156,7 +156,7 @@ void describe(const ObservedTrace& t, MergeAttempt& a) {
   std::ostringstream os;
   os << "t = " << a.start_time_s << " s: ego starts merging into gap " << gap_text(t, a.gap) << "; ";
   if (a.basis == RowBasis::kDef2) {
-    os << party_name(a.exchange->request->to_id) << "'s acceptance of the request of t = " << a.exchange->request_time_s
+    os << party_name(Party::from_vehicle_id(a.exchange->request->to_id)) << "'s acceptance of the request of t = " << a.exchange->request_time_s
        << " s was delivered at t = " << a.exchange->accept_delivered_time_s << " s, within rho_c -> ego holds (Def. 2)";
   } else if (a.def1_read) {
     const Def1Reading& r = a.def1;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/observed_trace.h"
+#include "core/party.h"
 #include "rules/check.h"
 #include "rules/liability.h"
 #include "rules/merge_attempts.h"
@@ -45,7 +46,7 @@ class MarginAccumulator {
   MarginAccumulator(std::string_view rule_id, std::size_t steps);
   // Records a margin at a step. Returns true when this is the rule's first violation (the
   // caller may then set the detail line).
-  bool record(std::size_t step, double time_s, double margin, int party, double required,
+  bool record(std::size_t step, double time_s, double margin, Party party, double required,
               double actual) {
     if (step < out_.margin.size()) {
       double& m = out_.margin[step];
@@ -82,11 +83,14 @@ class MarginAccumulator {
 // Vehicle k of a trace: 0 = ego, k >= 1 = the others, in ObservedTrace::vehicles order.
 inline const ObservedState& state_of(const ObservedStep& s, std::size_t k) { return s.vehicles[k]; }
 inline const ObservedState& ego_of(const ObservedStep& s) { return s.vehicles[0]; }
-inline int party_of(const ObservedTrace& t, std::size_t k) { return t.vehicles[k].id; }
+inline Party party_of(const ObservedTrace& t, std::size_t k) { return Party::from_vehicle_id(t.vehicles[k].id); }
 inline const VehicleSize& size_of(const ObservedTrace& t, std::size_t k) { return t.vehicles[k].size; }
 inline const Limits& limits_of(const ObservedTrace& t, std::size_t k) { return t.vehicles[k].limits; }
-// Index k of a party id (0 for the ego), or -1.
-inline int index_of_party(const ObservedTrace& t, int party_id) { return t.index_of(party_id); }
+// Index k of a party (0 for the ego), or -1 for one that is no vehicle of the trace.
+inline int index_of_party(const ObservedTrace& t, Party party) {
+  if (party.is_nobody() || party.is_main_lane()) return -1;
+  return t.index_of(party.is_ego() ? 0 : party.vehicle_id());  // the ego is vehicle id 0
+}
 // Index of the trace step nearest to time_s.
 std::size_t step_at(const ObservedTrace& t, double time_s);
 inline double speed_of(const ObservedState& v) { return v.vx_mps; }  // road-frame longitudinal speed

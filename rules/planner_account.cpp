@@ -15,7 +15,7 @@ std::vector<PlannerClaim> planner_account(const CheckResult& r) {
     if (d.contains("reason") && d["reason"].is_string()) c.reason = d["reason"].get<std::string>();
     bool ego_held = false;
     for (const auto& [from, holder] : r.right_of_way)
-      if (from <= c.time_s + 1e-9) ego_held = holder == kEgoId;
+      if (from <= c.time_s + 1e-9) ego_held = holder.is_ego();
     c.disagrees = (c.mode == "def1_merge" || c.mode == "def2_merge") && !ego_held;
     out.push_back(std::move(c));
   }

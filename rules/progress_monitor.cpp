@@ -61,12 +61,12 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
     }
     if (!feasible) {
       run_start = -1.0;
-      acc.record(i, st.time_s, grace, kEgoId, grace, 0.0);
+      acc.record(i, st.time_s, grace, Party::ego(), grace, 0.0);
       continue;
     }
     if (run_start < 0.0) run_start = st.time_s;
     const double needless = st.time_s - run_start;
-    if (acc.record(i, st.time_s, grace - needless, kEgoId, grace, needless)) {
+    if (acc.record(i, st.time_s, grace - needless, Party::ego(), grace, needless)) {
       std::ostringstream os;
       const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
       os << "ego halted in the side lane for " << needless << " s from t = " << run_start

@@ -29,7 +29,7 @@ MonitorOutput monitor_on_road(const MonitorContext& ctx) {
   MarginAccumulator acc("on_road", steps.size());
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const double m = on_road_margin_m(ctx.trace, ego_of(steps[i])) + ctx.params.road_edge_tolerance_m;
-    if (acc.record(i, steps[i].time_s, m, kEgoId, 0.0, m)) {
+    if (acc.record(i, steps[i].time_s, m, Party::ego(), 0.0, m)) {
       std::ostringstream os;
       os << "ego left the road at t = " << steps[i].time_s << " s (x = " << ego_of(steps[i]).x_m
          << " m, y = " << ego_of(steps[i]).y_m << " m)";
@@ -48,7 +48,7 @@ MonitorOutput monitor_side_lane_end(const MonitorContext& ctx) {
     if (e.y_m >= -s.road.lane_width_m / 2.0) continue;
     const double front = e.x_m + size_of(s, 0).length_m / 2.0;
     const double m = s.road.side_lane_end_x_m - front;
-    if (acc.record(i, steps[i].time_s, m, kEgoId, s.road.side_lane_end_x_m, front)) {
+    if (acc.record(i, steps[i].time_s, m, Party::ego(), s.road.side_lane_end_x_m, front)) {
       std::ostringstream os;
       os << "ego still in the side lane passed its end x = " << s.road.side_lane_end_x_m << " m at t = "
          << steps[i].time_s << " s";

@@ -17,7 +17,7 @@ struct Episode {
   bool active = false;
   double blame_time_s = 0.0;
   bool lateral_entrance = false;  // lateral distance became unsafe last (a cut-in)
-  int breach = kNobody;
+  Party breach = Party::nobody();
   double response_speed_mps = 0.0;  // lateral: ego speed toward the other at t_b + T
   bool response_speed_set = false;
   std::size_t rear = 0;       // longitudinal: the pair's rear vehicle (trace index) ...
@@ -100,7 +100,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
       prev_lon_only[p] = g.lon_unsafe() && !g.lat_unsafe();
       if (!g.lat_unsafe() || !g.lon_unsafe()) {
         e.active = false;
-        if (g.lat_unsafe()) acc.record(k, st.time_s, g.gap_m - g.d_lon_m, kNobody, g.d_lon_m, g.gap_m);
+        if (g.lat_unsafe()) acc.record(k, st.time_s, g.gap_m - g.d_lon_m, Party::nobody(), g.d_lon_m, g.gap_m);
         return;
       }
       if (!e.active) {
@@ -109,7 +109,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
         // did not enter: it is where it was, e.g. off-centre in the side lane (docs/rules.md).
         const bool ego_in_pair = i == 0 || j == 0;
         const double ego_toward_mps = g.right == 0 ? ego_of(st).vy_mps : -ego_of(st).vy_mps;
-        e = Episode{true, st.time_s, was_lon_only && ego_in_pair && ego_toward_mps > 0.0, kNobody, 0.0, false,
+        e = Episode{true, st.time_s, was_lon_only && ego_in_pair && ego_toward_mps > 0.0, Party::nobody(), 0.0, false,
                     g.rear, st.time_s};
       }
       if (g.rear != e.rear) {
@@ -118,7 +118,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
       }
       const ObservedState& rear = state_of(st, g.rear);
       std::string why;
-      if (e.breach == kNobody) {
+      if (e.breach == Party::nobody()) {
         if (last_overbrake[g.front] >= e.blame_time_s - T - kTieS) {
           e.breach = party_of(s, g.front);
           why = describe(s, g.front) + " braked harder than its declared b_max " +
@@ -140,7 +140,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
           // and the danger its lateral motion made is not the rear vehicle's either:
           // rss_lateral judges that motion, and the blame waits for the ego to move on.
           if (ego_of(st).y_m > s.road.side_lane_y_m() + ctx.params.merge_start_offset_m) {
-            e.breach = kEgoId;
+            e.breach = Party::ego();
             why = "ego entered the lane of " + describe(s, i == 0 ? j : i) +
                   " at an unsafe longitudinal distance without the right of way";
           }
@@ -156,7 +156,7 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
           why = os.str();
         }
       }
-      const double margin = e.breach == kNobody ? 0.0 : g.gap_m - g.d_lon_m;
+      const double margin = e.breach == Party::nobody() ? 0.0 : g.gap_m - g.d_lon_m;
       if (acc.record(k, st.time_s, margin, e.breach, g.d_lon_m, g.gap_m)) acc.set_detail(why);
     };
     // Pair order as over all pairs: the ego's pairs (p = j - 1) first, then the main-lane pairs
@@ -215,10 +215,10 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
       }
       if (!g.lon_unsafe() || !g.lat_unsafe()) {
         e.active = false;
-        if (g.lon_unsafe()) acc.record(k, st.time_s, g.dy_m - g.d_lat_m, kNobody, g.d_lat_m, g.dy_m);
+        if (g.lon_unsafe()) acc.record(k, st.time_s, g.dy_m - g.d_lat_m, Party::nobody(), g.d_lat_m, g.dy_m);
         continue;
       }
-      if (!e.active) e = Episode{true, st.time_s, false, kNobody, 0.0, false};
+      if (!e.active) e = Episode{true, st.time_s, false, Party::nobody(), 0.0, false};
       // The right of way is the right to merge into the rightmost main lane (centre Y = 0): it
       // waives the ego's lateral duty for the motion of that merge, leftward up to the lane's
       // centre, toward whichever vehicle; not a motion beyond it, nor toward a vehicle on the
@@ -231,7 +231,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
       if (obliged && std::isnan(e.duty_since_s)) e.duty_since_s = st.time_s;
       const double toward = g.right == 0 ? ego_of(st).vy_mps : -ego_of(st).vy_mps;
       std::string why;
-      if (obliged && e.breach == kNobody && st.time_s >= e.duty_since_s + T - 1e-9) {
+      if (obliged && e.breach == Party::nobody() && st.time_s >= e.duty_since_s + T - 1e-9) {
         if (!e.response_speed_set) {
           e.response_speed_mps = toward;
           e.response_speed_set = true;
@@ -239,7 +239,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
         const double allowed =
             std::max(0.0, e.response_speed_mps - limits_of(s, 0).lat_brake_min_mps2 * (st.time_s - e.duty_since_s - T));
         if (toward > allowed + tol) {
-          e.breach = kEgoId;
+          e.breach = Party::ego();
           std::ostringstream os;
           os << "ego kept moving toward " << describe(s, j) << " at " << toward
              << " m/s laterally (allowed " << allowed << " m/s) without the right of way, "
@@ -248,7 +248,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
           why = os.str();
         }
       }
-      const double margin = e.breach == kNobody ? 0.0 : g.dy_m - g.d_lat_m;
+      const double margin = e.breach == Party::nobody() ? 0.0 : g.dy_m - g.d_lat_m;
       if (acc.record(k, st.time_s, margin, e.breach, g.d_lat_m, g.dy_m)) acc.set_detail(why);
     }
   }

@@ -49,8 +49,8 @@ std::pair<double, double> accepted_profile(const MonitorContext& ctx, std::size_
 }
 
 // The main-lane vehicle that broke a declared limit in [from, to] (a follower accelerating
-// beyond a_accel^max, a leader braking beyond a_brake^max), or kNobody.
-int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t leader, double from, double to) {
+// beyond a_accel^max, a leader braking beyond a_brake^max), or Party::nobody().
+Party limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t leader, double from, double to) {
   const double tol = ctx.params.accel_tolerance_mps2;
   for (std::size_t i = step_at(ctx.trace, from); i < ctx.trace.steps.size() && ctx.trace.steps[i].time_s <= to; ++i) {
     const ObservedStep& st = ctx.trace.steps[i];
@@ -59,7 +59,7 @@ int limit_breaker(const MonitorContext& ctx, std::size_t follower, std::size_t l
     if (leader > 0 && state_of(st, leader).accel_mps2 < -(limits_of(ctx.trace, leader).brake_max_mps2 + tol))
       return party_of(ctx.trace, leader);
   }
-  return kNobody;
+  return Party::nobody();
 }
 
 // Whether vehicle k was on the other side of the ego (ahead or not) at some step in [from_s,
@@ -75,9 +75,9 @@ bool changed_side(const MonitorContext& ctx, std::size_t k, double from_s, std::
 // The responder k if it accepted a Def. 2 request before time_s and was farther than the yield
 // tolerance from the v_o* it accepted at time_s, or at any step from the yield deadline t_r +
 // rho_c + T to time_s (Def. 2.1B / 2.2B: a responder that did not yield in time and slowed only
-// later still explains the margin), else kNobody.
-int reneging_responder(const MonitorContext& ctx, std::size_t k, double time_s) {
-  const int id = party_of(ctx.trace, k);
+// later still explains the margin), else Party::nobody().
+Party reneging_responder(const MonitorContext& ctx, std::size_t k, double time_s) {
+  const int id = ctx.trace.vehicles[k].id;
   const auto& steps = ctx.trace.steps;
   const double tol = ctx.params.yield_speed_tolerance_mps;
   const double yield_after_s = ctx.params.comm_threshold_s + ctx.trace.params.rss.response_time_s;
@@ -89,11 +89,11 @@ int reneging_responder(const MonitorContext& ctx, std::size_t k, double time_s) 
       return x.request->coop_case == CoopCase::kEgoAhead ? v > v_star + tol : v < v_star - tol;
     };
     const std::size_t last = step_at(ctx.trace, time_s);
-    if (off(last)) return id;
+    if (off(last)) return party_of(ctx.trace, k);
     for (std::size_t i = step_at(ctx.trace, x.request_time_s + yield_after_s); i < last; ++i)
-      if (off(i)) return id;
+      if (off(i)) return party_of(ctx.trace, k);
   }
-  return kNobody;
+  return Party::nobody();
 }
 
 }  // namespace
@@ -128,7 +128,7 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     // not the partner as Definition 1 does (Definition 2 leaves it to ineq. (1) or (2)), and the
     // partner on the profile it accepted (ineq. (3)/(4): to v_o* by t_r + rho_c, then v_o*).
     const auto partner_prediction = [&](std::size_t k) -> std::optional<std::pair<double, double>> {
-      if (!def2 || party_of(s, k) != dec->exchange->request->to_id) return std::nullopt;
+      if (!def2 || s.vehicles[k].id != dec->exchange->request->to_id) return std::nullopt;
       return accepted_profile(ctx, k, *dec->exchange, dec_time_s, since_dec_s);
     };
     // Margins against the real positions, and against the ones Definition 1 predicted at the
@@ -183,21 +183,21 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
     const bool leader_worse = m_leader < m_follower;
     const std::size_t worst = leader_worse ? leader : follower;
     double m = std::min(m_follower, m_leader);
-    int liable = kEgoId;
+    Party liable = Party::ego();
     if (m < 0.0) {
       const double from_s = def1 || def2 ? dec_time_s : e.time_s - ctx.params.merge_duration_s / 2.0;
-      int breaker = limit_breaker(ctx, follower, leader, from_s, e.time_s);
+      Party breaker = limit_breaker(ctx, follower, leader, from_s, e.time_s);
       // The decision's follower may have raced past the ego beyond its a_accel^max and be the
       // leader at the midpoint: its breach still explains the margin.
-      if (breaker == kNobody && def1 && dec->gap.follower > 0)
+      if (breaker == Party::nobody() && def1 && dec->gap.follower > 0)
         breaker = limit_breaker(ctx, static_cast<std::size_t>(dec->gap.follower), 0, from_s, e.time_s);
       // A vehicle that was on the other side of the ego at some step since the decision owes both
       // of its limits: a leader that braked beyond its b_max until it fell back level with the ego
       // explains the margin as much as a follower that raced past beyond its a_accel^max.
-      if (breaker == kNobody && worst > 0 && changed_side(ctx, worst, from_s, i))
+      if (breaker == Party::nobody() && worst > 0 && changed_side(ctx, worst, from_s, i))
         breaker = limit_breaker(ctx, worst, worst, from_s, e.time_s);
-      if (breaker == kNobody && worst > 0) breaker = reneging_responder(ctx, worst, e.time_s);
-      if (breaker != kNobody)
+      if (breaker == Party::nobody() && worst > 0) breaker = reneging_responder(ctx, worst, e.time_s);
+      if (breaker != Party::nobody())
         liable = breaker;
       else
         m = std::min(std::max(m_follower, m_follower_pred), std::max(m_leader, m_leader_pred));
@@ -207,7 +207,7 @@ MonitorOutput monitor_sigmoid_pc_bounds(const MonitorContext& ctx) {
       std::ostringstream os;
       os << "at the merge midpoint (t = " << e.time_s << " s, X = " << ego.x_m << " m) the ego was " << -m
          << " m inside the safe distance of " << party_name(party_of(s, worst));
-      if (liable != kEgoId) os << ", after " << party_name(liable) << " broke its declared limit or its accepted v_o*";
+      if (liable != Party::ego()) os << ", after " << party_name(liable) << " broke its declared limit or its accepted v_o*";
       acc.set_detail(os.str());
     }
   }

@@ -25,7 +25,7 @@ MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
     const int now = vy > h ? 1 : vy < -h ? -1 : 0;
     if (now != 0 && sign != 0 && now != sign) ++changes;
     if (now != 0) sign = now;
-    if (acc.record(i, steps[i].time_s, allowed - changes, kEgoId, allowed, changes)) {
+    if (acc.record(i, steps[i].time_s, allowed - changes, Party::ego(), allowed, changes)) {
       std::ostringstream os;
       os << "ego lateral velocity changed sign " << changes << " times (" << merges << " merge(s), at most "
          << allowed << " allowed) by t = " << steps[i].time_s << " s: the path oscillates";
@@ -46,7 +46,7 @@ MonitorOutput monitor_sideslip(const MonitorContext& ctx) {
     const double body_vx = e.vx_mps * std::cos(e.yaw_rad) + e.vy_mps * std::sin(e.yaw_rad);
     if (body_vx < ctx.params.sideslip_min_speed_mps) continue;
     const double beta = std::remainder(std::atan2(e.vy_mps, e.vx_mps) - e.yaw_rad, 2.0 * M_PI);
-    if (acc.record(i, steps[i].time_s, limit - std::abs(beta), kEgoId, limit, beta)) {
+    if (acc.record(i, steps[i].time_s, limit - std::abs(beta), Party::ego(), limit, beta)) {
       std::ostringstream os;
       os << "ego sideslip " << beta << " rad exceeds " << limit << " rad at t = " << steps[i].time_s << " s";
       acc.set_detail(os.str());

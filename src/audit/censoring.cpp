@@ -6,6 +6,7 @@
 
 #include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
+#include "rules/monitor.h"
 #include "rules/pair_geometry.h"
 #include "core/demand.h"
 
@@ -130,7 +131,7 @@ const RuleResult* deciding_rule(const CheckResult& r) {
   const RuleResult* best = nullptr;
   for (const RuleResult& x : r.rules) {
     if (x.holds || !x.first_violation_time_s) continue;
-    if (r.liable_id != kNobody && x.liable_id != r.liable_id) continue;
+    if (!r.liable_id.is_nobody() && x.liable_id != r.liable_id) continue;
     if (best == nullptr || *x.first_violation_time_s < *best->first_violation_time_s) best = &x;
   }
   return best;
@@ -139,7 +140,7 @@ const RuleResult* deciding_rule(const CheckResult& r) {
 std::optional<CensoredBlame> censored_blame(const ObservedTrace& whole, const CheckResult& r, const MergeTrace& m) {
   const RuleResult* rule = deciding_rule(r);
   if (!m.window_start.recording_limit || rule == nullptr || (rule->rule_id != "rss_longitudinal" && rule->rule_id != "rss_lateral")) return std::nullopt;
-  const int liable = whole.index_of(rule->liable_id);
+  const int liable = index_of_party(whole, rule->liable_id);
   if (liable < 0) return std::nullopt;
   const std::size_t l = static_cast<std::size_t>(liable);
   const auto dangerous = [&](std::size_t x, const ObservedStep& st) {
@@ -173,7 +174,7 @@ std::vector<std::string> judged_on_record(const CheckResult& r, const MergeTrace
       out.push_back(id + " holds");
       continue;
     }
-    const int k = r.trace.index_of(x.liable_id);
+    const int k = index_of_party(r.trace, x.liable_id);
     out.push_back(id + " violated" + (k >= 0 ? " by " + who(m, static_cast<std::size_t>(k)) : std::string()) + " at t = " +
                   at(x.first_violation_time_s.value_or(0.0)) + ": " + x.detail);
   }

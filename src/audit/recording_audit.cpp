@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "audit/censoring.h"
+#include "rules/monitor.h"
 
 namespace mg {
 namespace {
@@ -21,7 +22,7 @@ bool joins_at_ramp(const LaneChange& c) { return c.from_lane == kRampLane || c.t
 // vehicle's (the follower of a gap), else the ego's.
 double follower_brake_min(const CheckResult& r) {
   const ObservedTrace& t = r.trace;
-  const int k = t.index_of(r.liable_id);
+  const int k = index_of_party(t, r.liable_id);
   if (k >= 1) return t.vehicles[static_cast<std::size_t>(k)].limits.brake_min_mps2;
   return t.vehicles[t.vehicles.size() > 1 ? 1 : 0].limits.brake_min_mps2;
 }
@@ -128,13 +129,13 @@ std::string MergeAudit::recording_name(int trace_id) const {
   for (std::size_t i = 0; i < merge.trace.vehicles.size(); ++i) {
     if (merge.trace.vehicles[i].id == trace_id) return "vehicle " + std::to_string(merge.recording_ids[i]);
   }
-  return party_name(trace_id);
+  return party_name(Party::from_vehicle_id(trace_id));
 }
 
 std::string MergeAudit::liable_name() const {
   if (verdict != AuditVerdict::kViolated) return verdict == AuditVerdict::kHolds ? "none" : "-";
-  if (result.liable_id == kEgoId) return "ego (vehicle " + std::to_string(merge.recording_ids.front()) + ")";
-  if (result.liable_id >= 1) return recording_name(result.liable_id);
+  if (result.liable_id.is_ego()) return "ego (vehicle " + std::to_string(merge.recording_ids.front()) + ")";
+  if (result.liable_id.is_vehicle()) return recording_name(result.liable_id.vehicle_id());
   return party_name(result.liable_id);
 }
 

@@ -35,7 +35,7 @@ struct SensitivityPoint {
   double response_time_s = 0.0;
   double brake_scale = 1.0;
   bool holds = true;
-  int liable_id = kNobody;
+  Party liable_id = Party::nobody();
 };
 
 struct SensitivitySweep {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/party.h"
 #include "core/scenario.h"
 #include "paper/paper_metrics.h"
 #include "sim/trace.h"
@@ -21,9 +22,9 @@ struct PaperRun {
   std::string planner;
   Trace trace;
   PaperMetrics metrics;
-  // Right-of-way holder at every change (rules/liability.h; party ids as CheckResult), when the
+  // Right-of-way holder at every change (rules/liability.h), when the
   // run was judged (run_paper_planners' with_right_of_way); empty otherwise.
-  std::vector<std::pair<double, int>> right_of_way;
+  std::vector<std::pair<double, Party>> right_of_way;
 };
 
 struct PaperClaim {

@@ -185,7 +185,7 @@ std::string right_of_way_svg(const PaperExperiment& e) {
     for (std::size_t k = 0; k < r.right_of_way.size(); ++k) {
       const auto& [t, holder] = r.right_of_way[k];
       const double until = k + 1 < r.right_of_way.size() ? r.right_of_way[k + 1].first : t_end;
-      const double level = holder == 0 ? 1.0 : 0.0;  // party id 0 is the ego
+      const double level = holder.is_ego() ? 1.0 : 0.0;
       x.insert(x.end(), {t, until});
       y.insert(y.end(), {level, level});
     }

@@ -8,6 +8,7 @@
 #include "check/checked_run.h"
 #include "core/atomic_file.h"
 #include "core/fixed_text.h"
+#include "core/party.h"
 #include "paper/paper_figures.h"
 #include "paper/paper_variant.h"
 #include "planner/planner.h"
@@ -16,13 +17,12 @@
 namespace mg {
 namespace {
 
-// Party ids as rules/check.h numbers them (mg_sim cannot include it): 0 the ego, -2 the
-// main-lane traffic, -1 nobody, >= 1 a vehicle.
-std::string holder_name(int holder) {
-  if (holder == 0) return "the ego";
-  if (holder == -2) return "the main lane";
-  if (holder < 0) return "nobody";
-  return "vehicle " + std::to_string(holder);
+// The paper's wording for a right-of-way holder (prose, unlike party_name's report labels).
+std::string holder_name(Party holder) {
+  if (holder.is_ego()) return "the ego";
+  if (holder.is_main_lane()) return "the main lane";
+  if (holder.is_nobody()) return "nobody";
+  return "vehicle " + std::to_string(holder.vehicle_id());
 }
 
 }  // namespace
@@ -40,7 +40,7 @@ std::vector<PaperRun> run_paper_planners(const Scenario& s, bool with_right_of_w
     if (!planner) throw std::logic_error("planner '" + name + "' is not registered");
     Trace trace = simulate(s, *planner);
     PaperMetrics metrics = compute_paper_metrics(s, trace);
-    std::vector<std::pair<double, int>> holders;
+    std::vector<std::pair<double, Party>> holders;
     if (with_right_of_way) holders = check_trace(s, trace).right_of_way;
     runs.push_back({name, std::move(trace), metrics, std::move(holders)});
   }

@@ -286,8 +286,8 @@ std::string report_html(const CheckResult& r) {
   for (std::size_t k = 0; k < std::min(r.trace.channel.size(), kMaxListedEntries); ++k) {
     const ChannelEvent& e = r.trace.channel[k];
     h << "<li>t = " << format_number(e.time_s, 2) << " s &mdash; " << escape(to_string(e.message.type)) << " "
-      << escape(to_string(e.kind)) << " (" << escape(party_name(e.message.from_id)) << " to "
-      << escape(party_name(e.message.to_id)) << ")</li>\n";
+      << escape(to_string(e.kind)) << " (" << escape(party_name(Party::from_vehicle_id(e.message.from_id))) << " to "
+      << escape(party_name(Party::from_vehicle_id(e.message.to_id))) << ")</li>\n";
   }
   more_entries_note(h, r.trace.channel.size());
   h << "</ul>\n</body></html>\n";

@@ -64,7 +64,7 @@ std::string report_markdown(const CheckResult& r) {
   md << "\n## Timeline\n\n";
   for (const ChannelEvent& e : r.trace.channel) {
     md << "- t = " << format_number(e.time_s, 2) << " s - " << to_string(e.message.type) << " " << to_string(e.kind)
-       << " (" << party_name(e.message.from_id) << " to " << party_name(e.message.to_id) << ")\n";
+       << " (" << party_name(Party::from_vehicle_id(e.message.from_id)) << " to " << party_name(Party::from_vehicle_id(e.message.to_id)) << ")\n";
   }
   for (const RuleResult& rule : r.rules) {
     if (!rule.holds) {

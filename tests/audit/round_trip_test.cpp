@@ -34,9 +34,9 @@ AuditProfile profile_of(const ObservedTrace& t, const TraceRecording& tr) {
 }
 
 // The liable party of the audit in the trace's ids.
-int trace_party(const MergeAudit& m) {
-  if (m.result.liable_id < 1) return m.result.liable_id;
-  return m.result.liable_id - kTraceObstacleIdBase;
+Party trace_party(const MergeAudit& m) {
+  if (!m.result.liable_id.is_vehicle()) return m.result.liable_id;
+  return Party::vehicle(m.result.liable_id.vehicle_id() - kTraceObstacleIdBase);
 }
 
 struct Case {

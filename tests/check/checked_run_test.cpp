@@ -37,16 +37,16 @@ const std::vector<std::string> kModes = {"keep_lane", "def1_merge", "def2_reques
 std::string judgement(const CheckResult& r) {
   std::ostringstream out;
   out.precision(17);
-  out << "holds " << r.holds << ", liable " << r.liable_id << ", collision " << r.collision << " liable "
-      << r.collision_liable_id << "\n";
+  out << "holds " << r.holds << ", liable " << r.liable_id.code() << ", collision " << r.collision << " liable "
+      << r.collision_liable_id.code() << "\n";
   for (const RuleResult& rule : r.rules) {
-    out << rule.rule_id << ": holds " << rule.holds << ", liable " << rule.liable_id << ", first violation "
+    out << rule.rule_id << ": holds " << rule.holds << ", liable " << rule.liable_id.code() << ", first violation "
         << (rule.first_violation_time_s ? std::to_string(*rule.first_violation_time_s) : "none") << " ("
         << (rule.first_violation_time_s ? *rule.first_violation_time_s : -1.0) << "), margin " << rule.min_margin
         << "\n";
   }
   out << "right of way:";
-  for (const auto& [t, holder] : r.right_of_way) out << " " << t << "->" << holder;
+  for (const auto& [t, holder] : r.right_of_way) out << " " << t << "->" << holder.code();
   out << "\nmerge phases:";
   for (const double t : r.merge_phase_times_s) out << " " << t;
   out << "\n";

@@ -192,7 +192,7 @@ CheckResult narrow_window_check(const Scenario& s) {
   rule.rule_id = "fake_window";
   rule.min_margin = std::max(std::abs(s.ego.speed_mps - 17.3) / 0.3, std::abs(s.ego.x_m - 30.0) / 3.0) - 1.0;
   rule.holds = rule.min_margin >= 0.0;
-  rule.liable_id = rule.holds ? kNobody : kEgoId;
+  rule.liable_id = rule.holds ? Party::nobody() : Party::ego();
   r.holds = rule.holds;
   return r;
 }

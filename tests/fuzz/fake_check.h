@@ -24,7 +24,7 @@ inline CheckResult fake_check(const Scenario& s) {
   for (const MainVehicle& v : s.vehicles) rule.min_margin = std::min(rule.min_margin, std::abs(v.x_m - s.ego.x_m) - kFakeProximityM);
   rule.holds = rule.min_margin >= 0.0;
   if (!rule.holds) {
-    rule.liable_id = kEgoId;
+    rule.liable_id = Party::ego();
     rule.first_violation_time_s = 0.0;
   }
   r.holds = rule.holds;

@@ -16,7 +16,7 @@ Scenario one_vehicle_scenario(NonComplianceType nc = NonComplianceType::kNone) {
   return s;
 }
 
-RuleResult failing(const std::string& id, int liable) {
+RuleResult failing(const std::string& id, Party liable) {
   RuleResult r;
   r.rule_id = id;
   r.holds = false;
@@ -40,7 +40,7 @@ bool fails(const std::vector<PropertyFailure>& failures, const std::string& prop
 }
 
 TEST(Properties, EgoLiableForAnyRuleFailsEgoNeverLiable) {
-  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("def1_1_gap", kEgoId)}), std::nullopt);
+  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("def1_1_gap", Party::ego())}), std::nullopt);
   EXPECT_TRUE(fails(f, property::kEgoNeverLiable, "def1_1_gap"));
 }
 
@@ -50,7 +50,7 @@ TEST(Properties, VehicleLiableDoesNotFailEgoNeverLiable) {
 }
 
 TEST(Properties, UnansweredRssDangerWithCompliantOthersFails) {
-  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("rss_longitudinal", kEgoId)}), std::nullopt);
+  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("rss_longitudinal", Party::ego())}), std::nullopt);
   EXPECT_TRUE(fails(f, property::kCompliantSafe, "rss_longitudinal"));
 }
 
@@ -66,18 +66,18 @@ TEST(Properties, NonCompliantOthersExcuseRssDanger) {
 }
 
 TEST(Properties, CollisionWithNobodyLiableFails) {
-  CheckResult r = result_with({failing("collision", kNobody)});
+  CheckResult r = result_with({failing("collision", Party::nobody())});
   r.collision = true;
-  r.collision_liable_id = kNobody;
+  r.collision_liable_id = Party::nobody();
   const auto f = evaluate_properties(one_vehicle_scenario(NonComplianceType::kExceedAccel), r, std::nullopt);
   EXPECT_TRUE(fails(f, property::kCollisionLiable, "collision"));
   EXPECT_FALSE(fails(f, property::kCompliantSafe, "collision"));  // the vehicle was non-compliant
 }
 
 TEST(Properties, CollisionBlamedOnTheEgoFailsWithCompliantOthers) {
-  CheckResult r = result_with({failing("collision", kEgoId)});
+  CheckResult r = result_with({failing("collision", Party::ego())});
   r.collision = true;
-  r.collision_liable_id = kEgoId;
+  r.collision_liable_id = Party::ego();
   const auto f = evaluate_properties(one_vehicle_scenario(), r, std::nullopt);
   EXPECT_FALSE(fails(f, property::kCollisionLiable, "collision"));
   EXPECT_TRUE(fails(f, property::kCompliantSafe, "collision"));
@@ -102,7 +102,7 @@ TEST(Properties, SideLaneEndIsCrossCheckedOnTheTrace) {
 
 TEST(Properties, OscillationAndProgressRulesMapToTheirProperties) {
   const auto f = evaluate_properties(
-      one_vehicle_scenario(), result_with({failing("smoothness_oscillation", kEgoId), failing("progress", kEgoId)}),
+      one_vehicle_scenario(), result_with({failing("smoothness_oscillation", Party::ego()), failing("progress", Party::ego())}),
       std::nullopt);
   EXPECT_TRUE(fails(f, property::kNoOscillation, "smoothness_oscillation"));
   EXPECT_TRUE(fails(f, property::kProgress, "progress"));
@@ -133,14 +133,14 @@ TEST(Properties, AMisbehavingPlannerFailsPlannerRespondsWithTheFaultAsItsRule) {
   ASSERT_EQ(o.failures.size(), 1u);
   EXPECT_EQ(o.failures[0].property, property::kPlannerResponds);
   EXPECT_EQ(o.failures[0].rule, kFaultTimeout);
-  EXPECT_EQ(o.failures[0].liable_id, kEgoId);
+  EXPECT_EQ(o.failures[0].liable_id, Party::ego());
   EXPECT_EQ(o.failures[0].time_s, 1.5);
   EXPECT_EQ(signature_of(o.planner, o.failures[0]).key(), "exec:x/planner_responds/planner_timeout/ego");
 }
 
 TEST(Properties, SignatureUsesThePartyClassNotTheVehicleId) {
-  PropertyFailure a{property::kEgoNeverLiable, "r", 3, 0, 0, ""};
-  PropertyFailure b{property::kEgoNeverLiable, "r", 1, 0, 0, ""};
+  PropertyFailure a{property::kEgoNeverLiable, "r", Party::vehicle(3), 0, 0, ""};
+  PropertyFailure b{property::kEgoNeverLiable, "r", Party::vehicle(1), 0, 0, ""};
   EXPECT_EQ(signature_of("rcpp", a), signature_of("rcpp", b));
   EXPECT_EQ(signature_of("rcpp", a).party, "vehicle");
   EXPECT_EQ(signature_of("rcpp", a).file_stem(), "rcpp__ego_never_liable__r__vehicle");

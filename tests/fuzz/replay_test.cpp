@@ -49,7 +49,7 @@ TEST(Replay, MarginsWithinToleranceReproduceAndBeyondDoNot) {
 TEST(Replay, ADifferentLiablePartyDoesNotReproduce) {
   CaseVerdict expected = recorded_case().verdict;
   CaseVerdict actual = expected;
-  actual.violations[0].liable_id = 1;
+  actual.violations[0].liable_id = Party::vehicle(1);
   EXPECT_FALSE(compare_verdicts(expected, actual).empty());
 }
 

@@ -28,7 +28,7 @@ TEST(DeclaredLimitsMonitor, AVehicleBrakingBeyondItsBmaxOutsideAnyDangerIsLiable
   s.vehicles = {vehicle(1, -80.0, 20.0), vehicle(2, 200.0, 20.0)};
   const MonitorOutput out = test::run(monitor_declared_limits, s, constant_accel_trace(s, 1.0, {0.0, 0.0, -9.0}));
   EXPECT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 2);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(2));
   EXPECT_NEAR(out.result.min_margin, -0.95, 1e-9);
   EXPECT_EQ(*out.result.first_violation_time_s, 0.0);
 }
@@ -38,7 +38,7 @@ TEST(DeclaredLimitsMonitor, TheEgoBeyondItsAccelerationLimitIsLiable) {
   s.ego.limits.accel_max_mps2 = 1.5;
   const MonitorOutput out = test::run(monitor_declared_limits, s, constant_accel_trace(s, 1.0, {1.6}));
   EXPECT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
 }
 
 // Whatever the accelerations, the rule holds exactly when every one is within its limits.

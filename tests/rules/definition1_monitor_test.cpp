@@ -55,7 +55,7 @@ TEST(Def1Monitor, Ineq1FailsForCloseFollowerAndBlamesEgo) {
   s.road.speed_limit_mps = 22.0;
   const MonitorOutput out = test::run(monitor_def1_1_gap, s, merging_at_t0(constant_accel_trace(s, 1.0)));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -20.925 + 11.0 - 1.0, 1e-6);  // -10.925 m
 }
 
@@ -72,7 +72,7 @@ TEST(Def1Monitor, Ineq2MarginIsLeaderDistanceMinusDlon) {
   bad.road.speed_limit_mps = 22.0;
   const MonitorOutput broke = test::run(monitor_def1_2_gap, bad, merging_at_t0(constant_accel_trace(bad, 1.0)));
   ASSERT_FALSE(broke.result.holds);
-  EXPECT_EQ(broke.result.liable_id, kEgoId);
+  EXPECT_EQ(broke.result.liable_id, Party::ego());
   EXPECT_LT(broke.result.min_margin, 0.0);
 }
 
@@ -95,7 +95,7 @@ TEST(Def1Monitor, FollowerAcceleratingBeyondItsLimitInTheWindowIsLiable) {
   const MonitorOutput out =
       test::run(monitor_def1_1_follower, s, merging_at_t0(constant_accel_trace(s, 3.0, {0.0, 3.0, 0.0})));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.0, 1e-12);
   EXPECT_NEAR(out.result.min_margin, -0.95, 1e-9);
 }
@@ -125,7 +125,7 @@ TEST(Def1Monitor, LeaderBrakingBeyondBmaxInTheWindowIsLiable) {
   const MonitorOutput out =
       test::run(monitor_def1_2_leader, s, merging_at_t0(constant_accel_trace(s, 1.0, {0.0, 0.0, -9.0})));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 2);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(2));
   EXPECT_NEAR(out.result.min_margin, -0.95, 1e-9);
 }
 
@@ -147,7 +147,7 @@ TEST(Def1Monitor, HaltRuleMarginIsDistanceFromStopPointToSideLaneEnd) {
   s.ego.speed_mps = 30.0;
   const MonitorOutput broke = test::run(monitor_def1_3_halt, s, constant_accel_trace(s, 0.0));
   ASSERT_FALSE(broke.result.holds);
-  EXPECT_EQ(broke.result.liable_id, kEgoId);
+  EXPECT_EQ(broke.result.liable_id, Party::ego());
   EXPECT_NEAR(broke.result.min_margin, 300.0 - (252.4 + 900.0 / 16.0), 1e-9);  // -8.65 m
 }
 

@@ -50,7 +50,7 @@ TEST(Def2Inequalities, A21RequestIsSoundExactlyWhenIneq3Eq1AndTheReachHold) {
   EXPECT_NEAR(ok.result.min_margin, 0.0, 1e-9);
   const MonitorOutput late = test::run(monitor_def2_request_sound, s, with_request(base, CoopCase::kEgoAhead, 16.0, 30.0, 50.0));
   ASSERT_FALSE(late.result.holds);
-  EXPECT_EQ(late.result.liable_id, kEgoId);
+  EXPECT_EQ(late.result.liable_id, Party::ego());
   EXPECT_NEAR(late.result.min_margin, -5.0, 1e-9);
   const MonitorOutput deep = test::run(monitor_def2_request_sound, s, with_request(base, CoopCase::kEgoAhead, 15.0, 24.175, 60.0));
   ASSERT_FALSE(deep.result.holds);
@@ -69,7 +69,7 @@ TEST(Def2Inequalities, A22RequestIsSoundExactlyWhenIneq4Holds) {
   const MonitorOutput bad =
       test::run(monitor_def2_request_sound, near, with_request(constant_accel_trace(near, 1.0), CoopCase::kEgoBehind, 22.0, 0.0, 0.0));
   ASSERT_FALSE(bad.result.holds);
-  EXPECT_EQ(bad.result.liable_id, kEgoId);
+  EXPECT_EQ(bad.result.liable_id, Party::ego());
   EXPECT_NEAR(bad.result.min_margin, -5.925, 1e-9);
 }
 
@@ -82,7 +82,7 @@ TEST(Def2Inequalities, AResponderAheadOfItsAccepted21ProfileIsLiable) {
   const MonitorOutput kept = test::run(
       monitor_def2_positions, s, with_request(constant_accel_trace(s, 3.0), CoopCase::kEgoAhead, 16.0, 24.175, 50.0, true));
   ASSERT_FALSE(kept.result.holds);
-  EXPECT_EQ(kept.result.liable_id, 1);
+  EXPECT_EQ(kept.result.liable_id, Party::vehicle(1));
   EXPECT_GT(*kept.result.first_violation_time_s, 0.44);
   EXPECT_LT(*kept.result.first_violation_time_s, 0.5);
   // Braking at b_min = 4 m/s2 for 1 s from t = 0.1 s (20 -> 16 m/s), then holding.

@@ -40,7 +40,7 @@ TEST(Def2Monitor, RequestMarginIsTheSmallerOfPcAheadAndDstarOverContact) {
   const MonitorOutput bad =
       test::run(monitor_def2_1a_request, s, with_exchange(constant_accel_trace(s, 1.0), CoopCase::kEgoAhead, 16.0, 3.0));
   ASSERT_FALSE(bad.result.holds);
-  EXPECT_EQ(bad.result.liable_id, kEgoId);
+  EXPECT_EQ(bad.result.liable_id, Party::ego());
   EXPECT_NEAR(bad.result.min_margin, -1.8, 1e-9);
 }
 
@@ -51,7 +51,7 @@ TEST(Def2Monitor, ResponderThatAcceptsAndDoesNotYieldIsLiable) {
   const MonitorOutput out =
       test::run(monitor_def2_1b_responder, s, with_exchange(constant_accel_trace(s, 3.0), CoopCase::kEgoAhead, 16.0));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(*out.result.first_violation_time_s, 1.5, 1e-9);
   EXPECT_NEAR(out.result.min_margin, -3.5, 1e-9);
 }
@@ -78,7 +78,7 @@ TEST(Def2Monitor, EgoBrakingHarderThanBminAfterA22RequestIsLiable) {
   const MonitorOutput bad =
       test::run(monitor_def2_2a_ego_brake, s, with_exchange(constant_accel_trace(s, 2.0, {-5.0, 0.0}), CoopCase::kEgoBehind, 22.0));
   ASSERT_FALSE(bad.result.holds);
-  EXPECT_EQ(bad.result.liable_id, kEgoId);
+  EXPECT_EQ(bad.result.liable_id, Party::ego());
   EXPECT_NEAR(bad.result.min_margin, -0.8, 1e-9);
   const MonitorOutput ok =
       test::run(monitor_def2_2a_ego_brake, s, with_exchange(constant_accel_trace(s, 2.0, {-4.0, 0.0}), CoopCase::kEgoBehind, 22.0));
@@ -120,7 +120,7 @@ TEST(Def2Monitor, EgoBrakingHarderThanBminBeforeTheRefusalArrivesIsLiable) {
   t.events.push_back(refusal_delivered(0.5));
   const MonitorOutput out = test::run(monitor_def2_2a_ego_brake, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -0.8, 1e-9);
 }
 
@@ -140,7 +140,7 @@ TEST(Def2Monitor, EgoBrakingAsAnRssProperResponseAfterA22RequestHolds) {
   Trace safe = with_exchange(constant_accel_trace(s, 2.0, {-6.0, 0.0}), CoopCase::kEgoBehind, 22.0);
   const MonitorOutput broke = test::run(monitor_def2_2a_ego_brake, s, safe);
   ASSERT_FALSE(broke.result.holds);
-  EXPECT_EQ(broke.result.liable_id, kEgoId);
+  EXPECT_EQ(broke.result.liable_id, Party::ego());
 }
 
 TEST(Def2Monitor, ResponderThatDoesNotSpeedUpForA22RequestIsLiable) {
@@ -149,7 +149,7 @@ TEST(Def2Monitor, ResponderThatDoesNotSpeedUpForA22RequestIsLiable) {
   const MonitorOutput out =
       test::run(monitor_def2_2b_responder, s, with_exchange(constant_accel_trace(s, 3.0), CoopCase::kEgoBehind, 24.0));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(out.result.min_margin, -3.5, 1e-9);
 }
 
@@ -181,7 +181,7 @@ TEST(Def2Monitor, CooperativeMergeNeedsAnAcceptanceWithinRhoC) {
   late.events = {request, accept, test::delivered_event(accept, 1.4)};
   const MonitorOutput broke = test::run(monitor_def2_3_fallback, s, late);
   ASSERT_FALSE(broke.result.holds);
-  EXPECT_EQ(broke.result.liable_id, kEgoId);
+  EXPECT_EQ(broke.result.liable_id, Party::ego());
   EXPECT_NEAR(broke.result.min_margin, -0.4, 1e-9);
 }
 
@@ -198,7 +198,7 @@ TEST(Def2Monitor, AMergeWithoutAnyAcceptanceIsDefinition1s) {
   EXPECT_FALSE(std::isfinite(fallback.result.min_margin));
   const MonitorOutput gap = test::run(monitor_def1_1_gap, s, t);
   ASSERT_FALSE(gap.result.holds);
-  EXPECT_EQ(gap.result.liable_id, kEgoId);
+  EXPECT_EQ(gap.result.liable_id, Party::ego());
   EXPECT_LT(gap.result.min_margin, -10.0);
 }
 
@@ -226,7 +226,7 @@ TEST(Def2Monitor, AnAcceptanceDeliveredAtTheDeadlineItselfIsInTime) {
   EXPECT_EQ(held.result.min_margin, 0.0);
   const MonitorOutput late = test::run(monitor_def2_3_fallback, s, traced(constant_accel_trace(s, 11.0).steps[516].time_s));
   ASSERT_FALSE(late.result.holds);
-  EXPECT_EQ(late.result.liable_id, kEgoId);
+  EXPECT_EQ(late.result.liable_id, Party::ego());
   EXPECT_NEAR(late.result.min_margin, -0.02, 1e-9);
 }
 

@@ -36,10 +36,10 @@ TEST(RightOfWay, MainLaneHoldsUntilADef1GapIsEstablished) {
   const Trace t = test::with_lateral_move(constant_accel_trace(s, 7.0), 3.0, 1.0);
   const RightOfWay row = right_of_way(s, t);
   ASSERT_EQ(row.timeline.size(), 3u);
-  EXPECT_EQ(row.timeline[0], std::make_pair(0.0, kMainLane));
-  EXPECT_EQ(row.timeline[1].second, kEgoId);
+  EXPECT_EQ(row.timeline[0], std::make_pair(0.0, Party::main_lane()));
+  EXPECT_EQ(row.timeline[1].second, Party::ego());
   EXPECT_NEAR(row.timeline[1].first, 3.06, 1e-9);
-  EXPECT_EQ(row.timeline[2].second, kNobody);
+  EXPECT_EQ(row.timeline[2].second, Party::nobody());
   EXPECT_NEAR(row.timeline[2].first, 6.3, 0.021);
   EXPECT_FALSE(row.ego_holds_at(3.0));
   EXPECT_TRUE(row.ego_holds_at(3.1));
@@ -58,7 +58,7 @@ TEST(RightOfWay, TheEgoThatNeverMovesTowardTheMainLaneNeverHoldsIt) {
   const RightOfWay row = right_of_way(s, constant_accel_trace(s, 7.0));
   EXPECT_TRUE(row.ego_holds.empty());
   ASSERT_EQ(row.timeline.size(), 1u);
-  EXPECT_EQ(row.timeline[0], std::make_pair(0.0, kMainLane));
+  EXPECT_EQ(row.timeline[0], std::make_pair(0.0, Party::main_lane()));
 }
 
 // Vehicle 1 45 m behind the ego, both 20 m/s, speed limit 22 m/s: Definition 1 fails (ahead of it
@@ -88,8 +88,8 @@ TEST(Liability, CollisionWithNobodyLiableIsReportedAndFails) {
   const CheckResult r = check_trace(s, constant_accel_trace(s, 0.2));
   EXPECT_FALSE(r.holds);
   EXPECT_TRUE(r.collision);
-  EXPECT_EQ(r.collision_liable_id, kNobody);
-  EXPECT_EQ(r.liable_id, kNobody);
+  EXPECT_EQ(r.collision_liable_id, Party::nobody());
+  EXPECT_EQ(r.liable_id, Party::nobody());
   EXPECT_NE(r.liability_detail.find("collision with nobody liable"), std::string::npos);
   EXPECT_NE(r.liability_detail.find("already in a dangerous situation at t = 0"), std::string::npos);
 }
@@ -103,8 +103,8 @@ TEST(Liability, CollisionIsBlamedOnTheRearThatDidNotBrake) {
   s.vehicles = {vehicle(1, 0.0, 30.0), vehicle(2, 30.0, 20.0)};
   const CheckResult r = check_trace(s, constant_accel_trace(s, 3.0));
   EXPECT_TRUE(r.collision);
-  EXPECT_EQ(r.collision_liable_id, 1);
-  EXPECT_EQ(r.liable_id, 1);
+  EXPECT_EQ(r.collision_liable_id, Party::vehicle(1));
+  EXPECT_EQ(r.liable_id, Party::vehicle(1));
   const auto it = std::find_if(r.rules.begin(), r.rules.end(), [](const RuleResult& x) { return x.rule_id == "collision"; });
   ASSERT_NE(it, r.rules.end());
   EXPECT_NEAR(*it->first_violation_time_s, 2.52, 0.021);
@@ -116,15 +116,15 @@ TEST(Liability, EarliestBrokenObligationIsTheOverallLiableParty) {
   a.rule_id = "def1_1_follower";
   a.holds = false;
   a.first_violation_time_s = 1.0;
-  a.liable_id = 3;
+  a.liable_id = Party::vehicle(3);
   b.rule_id = "rss_longitudinal";
   b.holds = false;
   b.first_violation_time_s = 2.0;
-  b.liable_id = kEgoId;
+  b.liable_id = Party::ego();
   r.rules = {b, a};
   r.holds = false;
   assign_liability(r);
-  EXPECT_EQ(r.liable_id, 3);
+  EXPECT_EQ(r.liable_id, Party::vehicle(3));
   EXPECT_FALSE(r.collision);
 }
 
@@ -132,7 +132,7 @@ TEST(Liability, EarliestBrokenObligationIsTheOverallLiableParty) {
 // t = 1.02 s, and the ego's side-lane path oscillating from t = 5.74 s: the collision is blamed on
 // the last danger before it, vehicle 2's, not on the ego's comfort rule (nor on its progress).
 TEST(Liability, AComfortOrProgressRuleIsNeverACollisionsCause) {
-  const auto broken = [](const char* id, double time_s, int liable_id) {
+  const auto broken = [](const char* id, double time_s, Party liable_id) {
     RuleResult x;
     x.rule_id = id;
     x.holds = false;
@@ -141,14 +141,14 @@ TEST(Liability, AComfortOrProgressRuleIsNeverACollisionsCause) {
     return x;
   };
   CheckResult r;
-  r.rules = {broken("rss_longitudinal", 1.68, 2), broken("collision", 5.82, kNobody),
-             broken("smoothness_oscillation", 5.74, kEgoId), broken("progress", 5.8, kEgoId),
-             broken("declared_limits", 1.02, 2)};
+  r.rules = {broken("rss_longitudinal", 1.68, Party::vehicle(2)), broken("collision", 5.82, Party::nobody()),
+             broken("smoothness_oscillation", 5.74, Party::ego()), broken("progress", 5.8, Party::ego()),
+             broken("declared_limits", 1.02, Party::vehicle(2))};
   r.holds = false;
   assign_liability(r);
   EXPECT_TRUE(r.collision);
-  EXPECT_EQ(r.collision_liable_id, 2);
-  EXPECT_EQ(r.liable_id, 2);
+  EXPECT_EQ(r.collision_liable_id, Party::vehicle(2));
+  EXPECT_EQ(r.liable_id, Party::vehicle(2));
 }
 
 }  // namespace

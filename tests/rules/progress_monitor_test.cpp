@@ -21,7 +21,7 @@ TEST(ProgressMonitor, HaltingOnAnEmptyRoadIsNeedless) {
   s.ego.speed_mps = 0.0;
   const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 5.0));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(*out.result.first_violation_time_s, 3.02, 1e-9);
   EXPECT_NEAR(out.result.min_margin, -2.0, 1e-9);
 }

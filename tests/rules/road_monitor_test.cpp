@@ -25,7 +25,7 @@ TEST(RoadMonitor, EgoOverTheRightEdgeIsOffRoad) {
   s.ego.y_m = -5.0;
   const MonitorOutput out = test::run(monitor_on_road, s, constant_accel_trace(s, 0.5));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -0.65, 1e-9);
 }
 

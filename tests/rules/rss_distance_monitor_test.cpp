@@ -37,7 +37,7 @@ TEST(RssLongitudinalMonitor, RearThatDoesNotBrakeOnceUnsafeIsLiable) {
   const Scenario s = two_in_lane(40.0);
   const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 2.0));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.5, 1e-9);
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-9);
 }
@@ -56,7 +56,7 @@ TEST(RssLongitudinalMonitor, RearAcceleratingBeyondItsAmaxInsideTheResponseTimeI
   const Scenario s = two_in_lane(40.0);
   const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 0.4, {0.0, 3.0, 0.0}));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.0, 1e-9);
 }
 
@@ -66,7 +66,7 @@ TEST(RssLongitudinalMonitor, FrontBrakingBeyondBmaxIsLiable) {
   const Scenario s = two_in_lane(50.0);
   const MonitorOutput out = test::run(monitor_rss_longitudinal, s, constant_accel_trace(s, 3.0, {0.0, 0.0, -9.0}));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 2);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(2));
 }
 
 // Vehicle 1 (lane centre, Y = 0) drives 5 m behind the ego at its speed: longitudinally unsafe
@@ -91,7 +91,7 @@ TEST(RssLongitudinalMonitor, AnEgoThatStopsMovingAwayHasNotCutIn) {
   const Scenario s = off_centre_beside_rear_vehicle();
   const MonitorOutput out = test::run(monitor_rss_longitudinal, s, stop_moving_away_trace(s, 0.0));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.8, 1e-9);
 }
 
@@ -99,7 +99,7 @@ TEST(RssLongitudinalMonitor, AnEgoMovingTowardALongitudinallyUnsafeVehicleCutsIn
   const Scenario s = off_centre_beside_rear_vehicle();
   const MonitorOutput out = test::run(monitor_rss_longitudinal, s, stop_moving_away_trace(s, 0.1));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.3, 1e-9);
 }
 
@@ -143,13 +143,13 @@ TEST(RssLongitudinalMonitor, AnEgoThatAbortedWithinTheResponseTimeHasNotCutIn) {
   ASSERT_EQ(judged->attempts.attempts.front().basis, RowBasis::kDef2);
   const MonitorOutput out = test::run(monitor_rss_longitudinal, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(*out.result.first_violation_time_s, 1.7, 0.021);
   // Resuming at 1.6 s, more than T after the abort: a cut-in, the ego liable from the step at
   // which it is again past its lane centre by the start offset (0.1 s later).
   const MonitorOutput late = test::run(monitor_rss_longitudinal, s, abort_then_resume(s, 1.6));
   ASSERT_FALSE(late.result.holds);
-  EXPECT_EQ(late.result.liable_id, kEgoId);
+  EXPECT_EQ(late.result.liable_id, Party::ego());
   EXPECT_NEAR(*late.result.first_violation_time_s, 1.7, 0.021);
 }
 
@@ -180,7 +180,7 @@ TEST(RssLongitudinalMonitor, AVehicleThatBecomesTheRearMidEpisodeHasItsOwnRespon
   EXPECT_TRUE(test::run(monitor_rss_longitudinal, s, ego_brakes_from(s, 0.6)).result.holds);
   const MonitorOutput late = test::run(monitor_rss_longitudinal, s, ego_brakes_from(s, 1.0));
   ASSERT_FALSE(late.result.holds);
-  EXPECT_EQ(late.result.liable_id, kEgoId);
+  EXPECT_EQ(late.result.liable_id, Party::ego());
   EXPECT_NEAR(*late.result.first_violation_time_s, 0.8, 0.021);
 }
 
@@ -217,7 +217,7 @@ TEST(RssLateralMonitor, EgoWithoutRightOfWayThatKeepsMovingTowardIsLiable) {
   const Scenario s = side_by_side();
   const MonitorOutput out = test::run(monitor_rss_lateral, s, lateral_trace(s, false));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(*out.result.first_violation_time_s, 0.96, 0.021);
   EXPECT_NEAR(out.margin[48], -0.7725, 1e-6);  // step 48: t = 0.96 s
   // The worst moment is the last step with the ego still outside vehicle 1's lane (|dy| >= W/2 =
@@ -274,7 +274,7 @@ TEST(RssLateralMonitor, TheRightOfWayWaivesTheLateralDutyOnlyUpToTheTargetLanesC
   const auto beyond = test::judge(s, moving_left_for(5.0));
   const MonitorOutput out = monitor_rss_lateral(beyond->context());
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_GE(*out.result.first_violation_time_s, 4.5 - 1e-9);
 }
 

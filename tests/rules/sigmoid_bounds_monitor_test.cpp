@@ -51,7 +51,7 @@ TEST(SigmoidBoundsMonitor, MidpointInsideTheFollowersSafeDistanceBlamesTheEgo) {
   s.vehicles = {vehicle(1, -40.0, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, with_midpoint(constant_accel_trace(s, 2.0)));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-9);
 }
 
@@ -61,7 +61,7 @@ TEST(SigmoidBoundsMonitor, FollowerThatOveracceleratedBeforeTheMidpointIsLiable)
   const MonitorOutput out =
       test::run(monitor_sigmoid_pc_bounds, s, with_midpoint(constant_accel_trace(s, 2.0, {0.0, 3.0})));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
 }
 
 TEST(SigmoidBoundsMonitor, AFollowerThatRacedPastTheEgoBeyondItsAmaxIsLiable) {
@@ -73,7 +73,7 @@ TEST(SigmoidBoundsMonitor, AFollowerThatRacedPastTheEgoBeyondItsAmaxIsLiable) {
   const Trace t = with_midpoint(constant_accel_trace(s, 2.0, {0.0, 10.0}));
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
 }
 
 // The merge started at t = 0 goes behind vehicle 1, 2 m ahead at the ego's 20 m/s. It brakes
@@ -94,7 +94,7 @@ TEST(SigmoidBoundsMonitor, ALeaderThatFellBackBesideTheEgoBeyondItsBmaxIsLiable)
   const Trace t = leader_falling_back(s, 10.0);
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
 }
 
 TEST(SigmoidBoundsMonitor, ALeaderThatFellBackBesideTheEgoWithinItsBmaxLeavesTheEgoLiable) {
@@ -102,7 +102,7 @@ TEST(SigmoidBoundsMonitor, ALeaderThatFellBackBesideTheEgoWithinItsBmaxLeavesThe
   const Trace t = leader_falling_back(s, 7.0);  // 3.5 m fallen back: 1.5 m behind the ego
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
 }
 
 TEST(SigmoidBoundsMonitor, LeaderThatSlowedWithinItsLimitsLeavesThePairToTheRssRules) {
@@ -131,7 +131,7 @@ TEST(SigmoidBoundsMonitor, LeaderAtItsPredictedSpeedButTooCloseBlamesTheEgo) {
   const Trace t = with_midpoint(constant_accel_trace(s, 2.0));
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
 }
 
@@ -159,7 +159,7 @@ TEST(SigmoidBoundsMonitor, PartnerLeaderIsJudgedAtItsRealPositionInADef2Merge) {
   const Trace t = with_def2_exchange(with_midpoint(constant_accel_trace(s, 2.0, {0.0, -3.0})), 1, CoopCase::kEgoBehind, 20.0);
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_LT(out.result.min_margin, -3.0);
 }
 
@@ -170,7 +170,7 @@ TEST(SigmoidBoundsMonitor, NonPartnerLeaderAtItsPredictedSpeedButTooCloseInADef2
   const Trace t = with_def2_exchange(with_midpoint(constant_accel_trace(s, 2.0)), 2, CoopCase::kEgoAhead, 20.0);
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -5.175, 1e-6);
 }
 
@@ -198,7 +198,7 @@ TEST(SigmoidBoundsMonitor, ResponderThatYieldedLateIsLiableEvenAfterItSlowed) {
   s.vehicles = {vehicle(1, -10.0, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.8));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
 }
 
 TEST(SigmoidBoundsMonitor, ResponderThatYieldedInTimeLeavesTheEgoLiable) {
@@ -207,7 +207,7 @@ TEST(SigmoidBoundsMonitor, ResponderThatYieldedInTimeLeavesTheEgoLiable) {
   s.vehicles = {vehicle(1, -10.0, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, responder_slowing_at(s, 1.2));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_LT(out.result.min_margin, -4.0);
 }
 
@@ -238,7 +238,7 @@ TEST(SigmoidBoundsMonitor, PartnerTooCloseEvenOnItsAcceptedProfileBlamesTheEgo) 
   s.vehicles = {vehicle(1, -30.0, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -13.75, 0.01);
 }
 
@@ -281,7 +281,7 @@ TEST(SigmoidBoundsMonitor, EgoSlowerThanPlannedWithoutAnRssDangerIsLiableBeforeT
   s.vehicles = {vehicle(1, -50.0, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, slowed_ego_before_partner(s));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -6.11, 0.02);
 }
 

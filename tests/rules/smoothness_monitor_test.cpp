@@ -36,7 +36,7 @@ TEST(SmoothnessMonitor, WeavingPathViolates) {
       monitor_smoothness_oscillation, s,
       with_lateral_speed(constant_accel_trace(s, 6.0), [](double t) { return 0.5 * std::sin(std::numbers::pi * t); }));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -3.0, 1e-12);
 }
 
@@ -78,7 +78,7 @@ TEST(SmoothnessMonitor, ThreeSignChangesInOneMergeViolate) {
   ASSERT_EQ(test::judge(s, t)->phases.count(MergePhaseKind::kStart), 1);
   const MonitorOutput out = test::run(monitor_smoothness_oscillation, s, t);
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
   EXPECT_NEAR(out.result.min_margin, -2.0, 1e-12);
 }
 

@@ -20,6 +20,7 @@
 #include "fuzz/corpus_case.h"
 #include "fuzz/properties.h"
 #include "planner/planner.h"
+#include "planner/planner_params.h"
 #include "recording/commonroad_reader.h"
 #include "recording/road_layout.h"
 #include "rules/check.h"
@@ -46,7 +47,7 @@ void load_json(const std::uint8_t* data, std::size_t size) {
     const nlohmann::json j = mg::parse_json_text(std::string(reinterpret_cast<const char*>(data), size), "fuzz input");
     if (j.is_object() && j.contains("scenario")) mg::fuzz::case_from_json(j, "fuzz input");
     else if (j.is_object() && j.contains("format")) mg::observed_trace_from_json(j, "fuzz input");
-    else mg::scenario_from_json(j, "fuzz input");
+    else mg::planner_scenario_from_json(j, "fuzz input");
   } catch (const mg::InputError&) {
   }
 }

@@ -11,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/output_path.h"
 #include "core/scenario.h"
+#include "planner/planner_params.h"
 #include "sim/checked_run.h"
 #include "rules/liability.h"
 #include "sim/paper_report.h"
@@ -51,7 +52,7 @@ int run(const std::vector<std::string>& args) {
   app.add_option("--search-scenario", search_scenario, "also write the best candidate as a scenario file");
   if (!parse_args(app, args)) return kExitOk;
 
-  const Scenario scenario = load_scenario(scenario_path);
+  const Scenario scenario = load_planner_scenario(scenario_path);
   if (search) {
     // Before a minute of search, not after it.
     check_output_file("--search-out", search_out);

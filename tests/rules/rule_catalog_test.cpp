@@ -3,6 +3,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -26,12 +27,13 @@ TEST(RuleCatalog, EveryRuleHasExactlyOneMonitorAndEveryMonitorARule) {
   const Trace trace = test::constant_accel_trace(s, 1.0);
   std::map<std::string, int> monitors_of;
   for (const MonitorFn fn : rule_monitors()) {
-    const std::string id = test::run(fn, s, trace).result.rule_id;
-    EXPECT_NO_THROW(rule_spec(id)) << id << " is judged by a monitor but not in rules/catalog.json";
-    ++monitors_of[id];
+    try {  // a monitor of a rule the catalogue lacks throws as it names its rule
+      ++monitors_of[test::run(fn, s, trace).result.rule_id];
+    } catch (const std::logic_error& e) {
+      ADD_FAILURE() << "a monitor judges a rule that is not in the catalogue: " << e.what();
+    }
   }
-  for (const RuleSpec& r : rule_catalog()) EXPECT_EQ(monitors_of[r.id], 1) << r.id;
-  EXPECT_EQ(monitors_of.size(), rule_catalog().size());
+  for (const RuleSpec& r : rule_catalog()) EXPECT_EQ(monitors_of[r.id], 1) << r.id << ": monitors judging it";
 }
 
 // The checker reports the rules in catalogue order, whatever order the monitors run in.

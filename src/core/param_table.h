@@ -156,7 +156,7 @@ std::vector<ParamInfo> param_infos(const ParamTable<Owner>& t) {
   return out;
 }
 
-// The keys of the table, for ObjectReader::only_keys and pass-through decisions.
+// Whether the table declares `key` (the others are unknown, or another owner's).
 template <class Owner>
 bool declares(const ParamTable<Owner>& t, std::string_view key) {
   for (const Param<Owner>& p : t.params)

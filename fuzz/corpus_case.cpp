@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "core/json_reader.h"
+#include "planner/planner_params.h"
 
 namespace mg::fuzz {
 namespace {
@@ -188,7 +189,7 @@ CorpusCase case_from_json(const json& j, const std::string& source) {
     c.planner_hello = PlannerIdentity{hello.string("name"), hello.string("version")};
   }
   if (!j.contains("scenario")) r.fail("scenario", "missing");
-  c.scenario = scenario_from_json(j.at("scenario"), source + " (/scenario)");
+  c.scenario = planner_scenario_from_json(j.at("scenario"), source + " (/scenario)");
   return c;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <utility>
 
 #include "rules/collision_monitor.h"
@@ -21,42 +22,49 @@
 
 namespace mg {
 
-const std::vector<MonitorEntry>& rule_monitors() {
-  static const std::vector<MonitorEntry> monitors = {
-      {"rss_longitudinal", monitor_rss_longitudinal},
-      {"rss_lateral", monitor_rss_lateral},
-      {"def1_1_gap", monitor_def1_1_gap},
-      {"def1_1_follower", monitor_def1_1_follower},
-      {"def1_2_gap", monitor_def1_2_gap},
-      {"def1_2_leader", monitor_def1_2_leader},
-      {"def1_3_halt", monitor_def1_3_halt},
-      {"def2_1a_request", monitor_def2_1a_request},
-      {"def2_1b_responder", monitor_def2_1b_responder},
-      {"def2_2a_ego_brake", monitor_def2_2a_ego_brake},
-      {"def2_2b_responder", monitor_def2_2b_responder},
-      {"def2_3_fallback", monitor_def2_3_fallback},
-      {"def2_request_sound", monitor_def2_request_sound},
-      {"def2_positions", monitor_def2_positions},
-      {"sigmoid_pc_bounds", monitor_sigmoid_pc_bounds},
-      {"collision", monitor_collision},
-      {"on_road", monitor_on_road},
-      {"side_lane_end", monitor_side_lane_end},
-      {"smoothness_oscillation", monitor_smoothness_oscillation},
-      {"sideslip", monitor_sideslip},
-      {"progress", monitor_progress},
-      {"declared_limits", monitor_declared_limits},
+std::span<const MonitorFn> rule_monitors() {
+  static constexpr MonitorFn kMonitors[] = {
+      monitor_rss_longitudinal,
+      monitor_rss_lateral,
+      monitor_def1_1_gap,
+      monitor_def1_1_follower,
+      monitor_def1_2_gap,
+      monitor_def1_2_leader,
+      monitor_def1_3_halt,
+      monitor_def2_1a_request,
+      monitor_def2_1b_responder,
+      monitor_def2_2a_ego_brake,
+      monitor_def2_2b_responder,
+      monitor_def2_3_fallback,
+      monitor_def2_request_sound,
+      monitor_def2_positions,
+      monitor_sigmoid_pc_bounds,
+      monitor_collision,
+      monitor_on_road,
+      monitor_side_lane_end,
+      monitor_smoothness_oscillation,
+      monitor_sideslip,
+      monitor_progress,
+      monitor_declared_limits,
   };
-  return monitors;
+  return kMonitors;
 }
 
 std::vector<RuleResult> run_monitors(const MonitorContext& ctx, std::vector<std::vector<double>>* margins) {
-  std::vector<RuleResult> results;
-  results.reserve(rule_monitors().size());
-  for (const MonitorEntry& m : rule_monitors()) {
-    MonitorOutput out = m.run(ctx);
-    results.push_back(std::move(out.result));
-    if (margins) margins->push_back(std::move(out.margin));
+  const std::size_t rules = rule_catalog().size();
+  std::vector<RuleResult> results(rules);
+  std::vector<bool> judged(rules, false);
+  if (margins) margins->assign(rules, {});
+  for (const MonitorFn run : rule_monitors()) {
+    MonitorOutput out = run(ctx);
+    const std::size_t i = rule_index(out.result.rule_id);
+    if (judged[i]) throw std::logic_error("two monitors judge rule " + out.result.rule_id);
+    judged[i] = true;
+    results[i] = std::move(out.result);
+    if (margins) (*margins)[i] = std::move(out.margin);
   }
+  for (std::size_t i = 0; i < rules; ++i)
+    if (!judged[i]) throw std::logic_error("no monitor judges rule " + rule_catalog()[i].id);
   return results;
 }
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -112,13 +113,12 @@ inline constexpr double kTieS = 1e-9;
 namespace mg {
 
 using MonitorFn = MonitorOutput (*)(const MonitorContext&);
-struct MonitorEntry {
-  std::string_view rule_id;
-  MonitorFn run;
-};
-// Every monitor, in catalogue order (rules/catalog.json lists exactly these ids).
-const std::vector<MonitorEntry>& rule_monitors();
-// Runs every monitor; margins are kept only when `margins` is not null (reports).
+// Every monitor. Each judges one rule of rules/catalog.json and names it in its RuleResult (the
+// monitor is the one place in code that writes the rule's id); together they judge every rule
+// of the catalogue exactly once.
+std::span<const MonitorFn> rule_monitors();
+// Runs every monitor; the results (and margins, kept only when `margins` is not null) come in
+// catalogue order (= report order). A rule judged twice or not at all is a std::logic_error.
 std::vector<RuleResult> run_monitors(const MonitorContext& ctx, std::vector<std::vector<double>>* margins);
 
 }  // namespace mg

@@ -17,39 +17,20 @@ const std::vector<RuleSpec>& rule_catalog() {
     for (const auto& r : rule_catalog_json().at("rules")) {
       out.push_back({r.at("id").get<std::string>(), r.at("paper_ref").get<std::string>(),
                      r.at("unit").get<std::string>(), r.at("statement").get<std::string>(),
-                     r.at("liability").get<std::string>()});
+                     r.at("liability").get<std::string>(), r.at("parameters").get<std::vector<std::string>>()});
     }
     return out;
   }();
   return specs;
 }
 
-const RuleSpec& rule_spec(std::string_view id) {
-  for (const auto& s : rule_catalog()) {
-    if (s.id == id) return s;
-  }
-  throw std::logic_error("rule not in rules/catalog.json: " + std::string(id));
-}
+const RuleSpec& rule_spec(std::string_view id) { return rule_catalog()[rule_index(id)]; }
 
-const CatalogParams& catalog_params() {
-  static const CatalogParams params = [] {
-    const auto& p = rule_catalog_json().at("parameters");
-    CatalogParams c;
-    c.accel_tolerance_mps2 = p.at("accel_tolerance_mps2").get<double>();
-    c.speed_tolerance_mps = p.at("speed_tolerance_mps").get<double>();
-    c.yield_speed_tolerance_mps = p.at("yield_speed_tolerance_mps").get<double>();
-    c.halted_speed_mps = p.at("halted_speed_mps").get<double>();
-    c.road_edge_tolerance_m = p.at("road_edge_tolerance_m").get<double>();
-    c.lat_speed_hysteresis_mps = p.at("lat_speed_hysteresis_mps").get<double>();
-    c.max_lat_speed_sign_changes_per_merge = p.at("max_lat_speed_sign_changes_per_merge").get<int>();
-    c.sideslip_max_rad = p.at("sideslip_max_rad").get<double>();
-    c.sideslip_min_speed_mps = p.at("sideslip_min_speed_mps").get<double>();
-    c.progress_grace_s = p.at("progress_grace_s").get<double>();
-    c.progress_gap_margin_m = p.at("progress_gap_margin_m").get<double>();
-    c.progress_leader_braking_mps2 = p.at("progress_leader_braking_mps2").get<double>();
-    return c;
-  }();
-  return params;
+std::size_t rule_index(std::string_view id) {
+  const auto& specs = rule_catalog();
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    if (specs[i].id == id) return i;
+  throw std::logic_error("rule not in rules/catalog.json: " + std::string(id));
 }
 
 }  // namespace mg

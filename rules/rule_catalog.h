@@ -1,7 +1,11 @@
 // The rule catalogue (rules/catalog.json, embedded at build time): per rule its id, paper
-// reference, unit, temporal-logic statement and liability logic, plus the monitors' thresholds.
+// reference, unit, temporal-logic statement, liability logic and the rule parameters it reads
+// (their defaults and ranges are RuleParams' and RssParams', core/params.h). The catalogue is
+// where rule ids are declared: a monitor names the rule it judges (MarginAccumulator), which must
+// be in it, and rules/check.cpp orders the monitors' results as it does.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,27 +20,12 @@ struct RuleSpec {
   std::string unit;
   std::string statement;
   std::string liability;
-};
-
-// Thresholds shared by the monitors ("parameters" of catalog.json).
-struct CatalogParams {
-  double accel_tolerance_mps2 = 0.0;
-  double speed_tolerance_mps = 0.0;
-  double yield_speed_tolerance_mps = 0.0;
-  double halted_speed_mps = 0.0;
-  double road_edge_tolerance_m = 0.0;
-  double lat_speed_hysteresis_mps = 0.0;
-  int max_lat_speed_sign_changes_per_merge = 0;
-  double sideslip_max_rad = 0.0;
-  double sideslip_min_speed_mps = 0.0;
-  double progress_grace_s = 0.0;
-  double progress_gap_margin_m = 0.0;
-  double progress_leader_braking_mps2 = 0.0;
+  std::vector<std::string> parameters;  // keys of params.rules and params.rss
 };
 
 const nlohmann::json& rule_catalog_json();
 const std::vector<RuleSpec>& rule_catalog();       // in catalogue order (= report order)
 const RuleSpec& rule_spec(std::string_view id);    // std::logic_error for an unknown id
-const CatalogParams& catalog_params();
+std::size_t rule_index(std::string_view id);       // its place in rule_catalog(); std::logic_error likewise
 
 }  // namespace mg

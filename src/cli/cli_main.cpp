@@ -21,7 +21,8 @@ std::string one_line(std::string text) {
 
 int usage(std::ostream& out) {
   out << "usage: mergeguard <command> [options]\n\ncommands:\n";
-  for (const auto& [name, cmd] : cli::commands()) out << "  mergeguard " << cmd.usage << "\n";
+  for (const auto& [name, cmd] : cli::commands())
+    if (!cmd.hidden) out << "  mergeguard " << cmd.usage << "\n";
   out << "\nexit codes: 0 holds, 1 violation found, 2 bad input, usage or I/O, 3 fuzz interrupted by a signal\n";
   return cli::kExitBadInput;
 }

@@ -17,6 +17,7 @@
 #include "core/scenario.h"
 #include "planner/planner.h"
 #include "planner/planner_fault.h"
+#include "planner/planner_params.h"
 #include "rules/check.h"
 
 namespace mg::cli {
@@ -45,7 +46,7 @@ int run_check(const std::vector<std::string>& args) {
   add_check_output_options(app, output);
   app.add_option("--save-trace", trace_path, "write the run's observable trace (docs/trace_format.md) to this file");
   if (!parse_args(app, args)) return kExitOk;
-  const Scenario scenario = load_scenario(path);
+  const Scenario scenario = load_planner_scenario(path);
   prepare_check_output(output);
   if (!trace_path.empty()) check_output_file("--save-trace", trace_path);
   start_planner(planner.name, planner);

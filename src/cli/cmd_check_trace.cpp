@@ -14,6 +14,7 @@
 #include "core/json_reader.h"
 #include "core/observed_trace_json.h"
 #include "core/params.h"
+#include "planner/planner_params.h"
 #include "rules/check.h"
 
 namespace mg::cli {
@@ -27,7 +28,8 @@ namespace {
 // and "sim" are accepted and validated but change nothing.
 void apply_params_file(const std::string& path, ObservedTrace& trace) {
   const nlohmann::json j = parse_json_file(path, DuplicateKeys::kReject);
-  const Params p = params_from_json(j, path, "");
+  Params p = params_from_json(j, path, "");
+  check_planner_tunables(p.planner, path, "/planner");
   if (j.contains("rss")) trace.params.rss = p.rss;
   if (j.contains("rules")) trace.params.rules = p.rules;
 }

@@ -13,6 +13,7 @@
 #include "core/scenario.h"
 #include "planner/planner.h"
 #include "planner/planner_fault.h"
+#include "planner/planner_params.h"
 
 namespace mg::cli {
 namespace {
@@ -45,7 +46,7 @@ int run_plan(const std::vector<std::string>& args) {
   add_planner_options(app, choice, "a registered planner (built in: rcpp, rcpp-coop, tripfield) or 'exec:COMMAND ARGS'");
   app.add_flag("--json", json, "print one JSON document");
   if (!parse_args(app, args)) return kExitOk;
-  const Scenario scenario = load_scenario(path);
+  const Scenario scenario = load_planner_scenario(path);
   const std::string& planner_name = choice.name;
   start_planner(planner_name, choice);
   auto planner = make_planner(planner_name);

@@ -45,7 +45,7 @@ int run(const std::vector<std::string>& args) {
   app.add_option("--search-scenario", search_scenario, "also write the best candidate as a scenario file");
   if (!parse_args(app, args)) return kExitOk;
 
-  const Scenario scenario = load_scenario(scenario_path);
+  const Scenario scenario = load_planner_scenario(scenario_path);
   if (search) {
     // Before a minute of search, not after it.
     check_output_file("--search-out", search_out);

@@ -24,6 +24,7 @@ struct Command {
   std::string name;   // e.g. "plan"
   std::string usage;  // one line, e.g. "plan SCENARIO.json [--planner P] [--json]"
   CommandFn run;
+  bool hidden = false;  // a maintainer's tool: runs, but the usage does not list it
 };
 
 // Every subcommand by name. The list is explicit (command.cpp), not filled by static
@@ -36,6 +37,7 @@ Command check_command();
 Command check_trace_command();
 Command corpus_command();
 Command fuzz_command();
+Command params_command();
 Command plan_command();
 Command replay_command();
 Command report_command();

@@ -177,6 +177,19 @@ double ObjectReader::positive_or(std::string_view key, double fallback, double h
   return has(key) ? positive(key, hi) : fallback;
 }
 
+double ObjectReader::number_in(std::string_view key, const NumberRange& range) const {
+  const double x = number(key, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
+  const auto end = [](double v, const std::string& name) { return name.empty() ? format_number(v) : name + " = " + format_number(v); };
+  const std::string interval = std::string(range.lo_open ? "(" : "[") + end(range.lo, range.lo_name) + ", " +
+                               end(range.hi, range.hi_name) + (range.hi_open ? ")" : "]");
+  const bool below_lo = range.lo_open ? !(x > range.lo) : x < range.lo;
+  const bool above_hi = range.hi_open ? !(x < range.hi) : x > range.hi;
+  // An open lower end alone reads "> lo", as positive() has always said of a value at or below 0.
+  if (below_lo && range.lo_open && range.lo_name.empty()) fail(key, "must be > " + format_number(range.lo) + ", got " + format_number(x));
+  if (below_lo || above_hi) fail(key, "must be in " + interval + ", got " + format_number(x));
+  return x;
+}
+
 long long ObjectReader::integer(std::string_view key, long long lo, long long hi) const {
   const auto& v = get(key);
   if (!v.is_number_integer()) fail(key, "must be an integer, got " + type_name(v));

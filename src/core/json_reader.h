@@ -31,6 +31,17 @@ nlohmann::json parse_json_file(const std::string& path, DuplicateKeys duplicates
 inline constexpr std::size_t kMaxInputBytes = 64u * 1024u * 1024u;
 inline constexpr int kMaxJsonDepth = 64;
 
+// A range whose ends may each be excluded. An end with a name is another parameter's value, and
+// errors show it as "name = value".
+struct NumberRange {
+  double lo = 0.0;
+  bool lo_open = false;
+  std::string lo_name;
+  double hi = 0.0;
+  bool hi_open = false;
+  std::string hi_name;
+};
+
 // A view of one JSON object being read, with its path for error messages.
 class ObjectReader {
  public:
@@ -46,6 +57,8 @@ class ObjectReader {
   // Exclusive lower bound variant: value > lo.
   double positive(std::string_view key, double hi) const;
   double positive_or(std::string_view key, double fallback, double hi) const;
+  // Number in `range`; finite. The messages of number() and positive() for their ranges.
+  double number_in(std::string_view key, const NumberRange& range) const;
   long long integer(std::string_view key, long long lo, long long hi) const;
   long long integer_or(std::string_view key, long long fallback, long long lo, long long hi) const;
   bool boolean_or(std::string_view key, bool fallback) const;

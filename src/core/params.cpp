@@ -5,162 +5,168 @@
 namespace mg {
 namespace {
 
-RuleParams read_rules(const ObjectReader& r) {
-  r.only_keys({"merge_duration_s", "comm_threshold_s", "merge_start_offset_m", "merge_abort_offset_m", "merge_abort_reversal_m",
-               "merge_complete_offset_m", "merge_complete_yaw_rad", "merge_decision_window_s",
-               "accel_tolerance_mps2", "speed_tolerance_mps", "yield_speed_tolerance_mps", "halted_speed_mps",
-               "road_edge_tolerance_m", "lat_speed_hysteresis_mps", "max_lat_speed_sign_changes_per_merge",
-               "sideslip_max_rad", "sideslip_min_speed_mps", "progress_grace_s", "progress_gap_margin_m",
-               "progress_leader_braking_mps2", "progress_min_merge_speed_mps", "progress_min_room_m"});
-  RuleParams p;
-  p.merge_duration_s = r.number_or("merge_duration_s", p.merge_duration_s, 0.5, 20.0);
-  p.comm_threshold_s = r.number_or("comm_threshold_s", p.comm_threshold_s, 0.05, 10.0);
-  p.merge_start_offset_m = r.number_or("merge_start_offset_m", p.merge_start_offset_m, 0.01, 2.0);
-  p.merge_abort_offset_m = r.number_or("merge_abort_offset_m", p.merge_abort_offset_m, 0.0, p.merge_start_offset_m);
-  if (p.merge_abort_offset_m >= p.merge_start_offset_m)
-    r.fail("merge_abort_offset_m", "must be below merge_start_offset_m (the hysteresis)");
-  p.merge_abort_reversal_m = r.number_or("merge_abort_reversal_m", p.merge_abort_reversal_m, 0.0, 1.0);
-  p.merge_complete_offset_m = r.positive_or("merge_complete_offset_m", p.merge_complete_offset_m, 2.0);
-  p.merge_complete_yaw_rad = r.positive_or("merge_complete_yaw_rad", p.merge_complete_yaw_rad, 0.5);
-  p.merge_decision_window_s = r.number_or("merge_decision_window_s", p.merge_decision_window_s, 0.0, 20.0);
-  p.accel_tolerance_mps2 = r.number_or("accel_tolerance_mps2", p.accel_tolerance_mps2, 0.0, 2.0);
-  p.speed_tolerance_mps = r.number_or("speed_tolerance_mps", p.speed_tolerance_mps, 0.0, 5.0);
-  p.yield_speed_tolerance_mps = r.number_or("yield_speed_tolerance_mps", p.yield_speed_tolerance_mps, 0.0, 5.0);
-  p.halted_speed_mps = r.number_or("halted_speed_mps", p.halted_speed_mps, 0.0, 1.0);
-  p.road_edge_tolerance_m = r.number_or("road_edge_tolerance_m", p.road_edge_tolerance_m, 0.0, 1.0);
-  p.lat_speed_hysteresis_mps = r.number_or("lat_speed_hysteresis_mps", p.lat_speed_hysteresis_mps, 0.0, 2.0);
-  p.max_lat_speed_sign_changes_per_merge = static_cast<int>(
-      r.integer_or("max_lat_speed_sign_changes_per_merge", p.max_lat_speed_sign_changes_per_merge, 0, 100));
-  p.sideslip_max_rad = r.positive_or("sideslip_max_rad", p.sideslip_max_rad, 1.0);
-  p.sideslip_min_speed_mps = r.number_or("sideslip_min_speed_mps", p.sideslip_min_speed_mps, 0.0, 100.0);
-  p.progress_grace_s = r.number_or("progress_grace_s", p.progress_grace_s, 0.0, 600.0);
-  p.progress_gap_margin_m = r.number_or("progress_gap_margin_m", p.progress_gap_margin_m, 0.0, 100.0);
-  p.progress_leader_braking_mps2 =
-      r.number_or("progress_leader_braking_mps2", p.progress_leader_braking_mps2, 0.0, 15.0);
-  p.progress_min_merge_speed_mps =
-      r.number_or("progress_min_merge_speed_mps", p.progress_min_merge_speed_mps, 0.0, 50.0);
-  p.progress_min_room_m = r.number_or("progress_min_room_m", p.progress_min_room_m, 0.0, 1000.0);
-  return p;
-}
+using R = RuleParams;
 
-RssParams read_rss(const ObjectReader& r) {
-  r.only_keys({"response_time_s", "fluctuation_margin_m"});
-  RssParams p;
-  p.response_time_s = r.number_or("response_time_s", p.response_time_s, 0.0, 5.0);
-  p.fluctuation_margin_m = r.number_or("fluctuation_margin_m", p.fluctuation_margin_m, 0.0, 5.0);
-  return p;
-}
+constexpr Param<RssParams> kRssRows[] = {
+    param("response_time_s", &RssParams::response_time_s, "s", at_least(0.0), at_most(5.0),
+          "T_lag: response time plus communication delay (RCPP eq. 1, 2)"),
+    param("fluctuation_margin_m", &RssParams::fluctuation_margin_m, "m", at_least(0.0), at_most(5.0),
+          "μ of eq. 2: lateral fluctuation margin"),
+};
+static_assert(well_formed<RssParams>(kRssRows));
 
+constexpr Param<PlannerParams> kPlannerRows[] = {
+    param("merge_duration_s", &PlannerParams::merge_duration_s, "s", at_least(0.5), at_most(20.0),
+          "ρ_m the planner plans with: decision to completion of the merge"),
+    param("comm_threshold_s", &PlannerParams::comm_threshold_s, "s", at_least(0.05), at_most(10.0),
+          "ρ_c the planner plans with: time allowed for the V2V exchange"),
+    param("halt_margin_m", &PlannerParams::halt_margin_m, "m", at_least(0.0), at_most(100.0),
+          "Definition 1.3: stop this far before the side lane's end"),
+};
+static_assert(well_formed<PlannerParams>(kPlannerRows));
+
+constexpr Param<SimParams> kSimRows[] = {
+    param("step_s", &SimParams::step_s, "s", at_least(1e-3), at_most(0.5), "fixed integration step"),
+    param("planner_cycle_s", &SimParams::planner_cycle_s, "s", at_least_param("step_s"), at_most(5.0),
+          "planner period, a multiple of step_s"),
+    param("horizon_s", &SimParams::horizon_s, "s", above(0.0), at_most(3600.0), "simulated duration"),
+};
+static_assert(well_formed<SimParams>(kSimRows));
+
+// Bounds the work of one simulation (a hostile-input guard, docs/scenario_format.md).
+constexpr ParamCheck<SimParams> kSimChecks[] = {
+    {"horizon_s", "horizon_s / step_s ≤ 1e6", "horizon_s / step_s must be <= 1e6 steps",
+     [](const SimParams& p) { return p.horizon_s / p.step_s <= 1e6; }},
+};
+
+constexpr Param<RuleParams> kRuleRows[] = {
+    param("merge_duration_s", &R::merge_duration_s, "s", at_least(0.5), at_most(20.0),
+          "ρ_m the rules judge Definition 1 with"),
+    param("comm_threshold_s", &R::comm_threshold_s, "s", at_least(0.05), at_most(10.0),
+          "ρ_c the rules judge Definition 2 with"),
+    param("merge_start_offset_m", &R::merge_start_offset_m, "m", at_least(0.01), at_most(2.0),
+          "a merge starts when the ego's centre is this far left of the side-lane centre (moving left)"),
+    param("merge_abort_offset_m", &R::merge_abort_offset_m, "m", at_least(0.0), below_param("merge_start_offset_m"),
+          "back within this of the side-lane centre before the lane line: aborted (below the start: hysteresis)"),
+    param("merge_abort_reversal_m", &R::merge_abort_reversal_m, "m", at_least(0.0), at_most(1.0),
+          "turned back toward the side lane by more than this from the attempt's furthest Y, before the line: "
+          "aborted"),
+    param("merge_complete_offset_m", &R::merge_complete_offset_m, "m", above(0.0), at_most(2.0),
+          "within this of the main-lane centre (and the yaw below): complete"),
+    param("merge_complete_yaw_rad", &R::merge_complete_yaw_rad, "rad", above(0.0), at_most(0.5),
+          "heading bound for completion"),
+    param("merge_decision_window_s", &R::merge_decision_window_s, "s", at_least(0.0), at_most(20.0),
+          "how long before a merge's observed start its decision may lie"),
+    param("accel_tolerance_mps2", &R::accel_tolerance_mps2, "m/s²", at_least(0.0), at_most(2.0),
+          "accelerations beyond a declared limit by less are within it"),
+    param("speed_tolerance_mps", &R::speed_tolerance_mps, "m/s", at_least(0.0), at_most(5.0), "speed comparisons"),
+    param("yield_speed_tolerance_mps", &R::yield_speed_tolerance_mps, "m/s", at_least(0.0), at_most(5.0),
+          "a Definition 2 responder counts as at v_o* within this"),
+    param("halted_speed_mps", &R::halted_speed_mps, "m/s", at_least(0.0), at_most(1.0),
+          "below this a vehicle is at rest"),
+    param("road_edge_tolerance_m", &R::road_edge_tolerance_m, "m", at_least(0.0), at_most(1.0),
+          "road-edge containment (`on_road`)"),
+    param("lat_speed_hysteresis_mps", &R::lat_speed_hysteresis_mps, "m/s", at_least(0.0), at_most(2.0),
+          "lateral motion below this has no direction"),
+    param("max_lat_speed_sign_changes_per_merge", &R::max_lat_speed_sign_changes_per_merge, "", at_least(0.0),
+          at_most(100.0), "`smoothness_oscillation` allowance per merge attempt"),
+    param("sideslip_max_rad", &R::sideslip_max_rad, "rad", above(0.0), at_most(1.0), "`sideslip` bound"),
+    param("sideslip_min_speed_mps", &R::sideslip_min_speed_mps, "m/s", at_least(0.0), at_most(100.0),
+          "`sideslip` judged above this speed"),
+    param("progress_grace_s", &R::progress_grace_s, "s", at_least(0.0), at_most(600.0),
+          "`progress`: how long a feasible gap may go unused"),
+    param("progress_gap_margin_m", &R::progress_gap_margin_m, "m", at_least(0.0), at_most(100.0),
+          "`progress`: slack a gap must have to count as feasible"),
+    param("progress_leader_braking_mps2", &R::progress_leader_braking_mps2, "m/s²", at_least(0.0), at_most(15.0),
+          "`progress`: a leader braking harder excuses waiting"),
+    param("progress_min_merge_speed_mps", &R::progress_min_merge_speed_mps, "m/s", at_least(0.0), at_most(50.0),
+          "`progress`: the slowest v_e* that counts as a drivable merge"),
+    param("progress_min_room_m", &R::progress_min_room_m, "m", at_least(0.0), at_most(1000.0),
+          "`progress`: side lane left ahead of the ego's front below which no merge is claimed possible"),
+};
+static_assert(well_formed<RuleParams>(kRuleRows));
+
+// params.planner: the common keys by the table, every other key kept for the planner that owns it.
 PlannerParams read_planner(const ObjectReader& r) {
-  r.only_keys({"merge_duration_s", "comm_threshold_s", "halt_margin_m", "lat_accel_comfort_mps2",
-               "kappa_min_per_m", "kappa_max_per_m", "pc_candidates", "kappa_candidates",
-               "pf_road_beta", "pf_obstacle_gamma", "pf_obstacle_u", "pf_lane_xi",
-               "pf_search_distance_m", "cost_time_weight", "cost_speed_change_weight",
-               "cost_traffic_speed_weight"});
   PlannerParams p;
-  p.merge_duration_s = r.number_or("merge_duration_s", p.merge_duration_s, 0.5, 20.0);
-  p.comm_threshold_s = r.number_or("comm_threshold_s", p.comm_threshold_s, 0.05, 10.0);
-  p.halt_margin_m = r.number_or("halt_margin_m", p.halt_margin_m, 0.0, 100.0);
-  p.lat_accel_comfort_mps2 = r.positive_or("lat_accel_comfort_mps2", p.lat_accel_comfort_mps2, 10.0);
-  p.kappa_min_per_m = r.positive_or("kappa_min_per_m", p.kappa_min_per_m, 10.0);
-  p.kappa_max_per_m = r.number_or("kappa_max_per_m", p.kappa_max_per_m, p.kappa_min_per_m, 10.0);
-  p.pc_candidates = static_cast<int>(r.integer_or("pc_candidates", p.pc_candidates, 1, 200));
-  p.kappa_candidates = static_cast<int>(r.integer_or("kappa_candidates", p.kappa_candidates, 1, 200));
-  p.pf_road_beta = r.number_or("pf_road_beta", p.pf_road_beta, 0.0, 1e6);
-  p.pf_obstacle_gamma = r.number_or("pf_obstacle_gamma", p.pf_obstacle_gamma, 0.0, 1e6);
-  p.pf_obstacle_u = r.number_or("pf_obstacle_u", p.pf_obstacle_u, 0.0, 1.0);
-  p.pf_lane_xi = r.number_or("pf_lane_xi", p.pf_lane_xi, 0.0, 1e6);
-  p.pf_search_distance_m = r.positive_or("pf_search_distance_m", p.pf_search_distance_m, 1000.0);
-  p.cost_time_weight = r.number_or("cost_time_weight", p.cost_time_weight, 0.0, 1e3);
-  p.cost_speed_change_weight = r.number_or("cost_speed_change_weight", p.cost_speed_change_weight, 0.0, 1e3);
-  p.cost_traffic_speed_weight = r.number_or("cost_traffic_speed_weight", p.cost_traffic_speed_weight, 0.0, 1e3);
-  return p;
-}
-
-SimParams read_sim(const ObjectReader& r) {
-  r.only_keys({"step_s", "planner_cycle_s", "horizon_s"});
-  SimParams p;
-  p.step_s = r.number_or("step_s", p.step_s, 1e-3, 0.5);
-  p.planner_cycle_s = r.number_or("planner_cycle_s", p.planner_cycle_s, p.step_s, 5.0);
-  p.horizon_s = r.positive_or("horizon_s", p.horizon_s, 3600.0);
-  // Bound the work of one simulation (hostile input guard, documented in docs/scenario_format.md).
-  if (p.horizon_s / p.step_s > 1e6) r.fail("horizon_s", "horizon_s / step_s must be <= 1e6 steps");
+  read_param_values(planner_param_table(), r, p);
+  for (const auto& item : r.value().items())
+    if (!declares(planner_param_table(), item.key())) p.tunables[item.key()] = item.value();
   return p;
 }
 
 }  // namespace
 
+const ParamTable<RssParams>& rss_param_table() {
+  static constexpr ParamTable<RssParams> table{kRssRows};
+  return table;
+}
+
+const ParamTable<PlannerParams>& planner_param_table() {
+  static constexpr ParamTable<PlannerParams> table{kPlannerRows};
+  return table;
+}
+
+const ParamTable<SimParams>& sim_param_table() {
+  static constexpr ParamTable<SimParams> table{kSimRows, kSimChecks};
+  return table;
+}
+
+const ParamTable<RuleParams>& rule_param_table() {
+  static constexpr ParamTable<RuleParams> table{kRuleRows};
+  return table;
+}
+
+std::vector<ParamSection> core_param_sections() {
+  return {
+      {"rss", "RSS model parameters shared by planners, monitors and liability (RCPP eq. 1, 2); every key optional.",
+       param_infos(rss_param_table())},
+      {"planner", "What every planner is told about the merge (PlannerParams, src/core/params.h); every key optional.",
+       param_infos(planner_param_table())},
+      {"sim", "Simulation parameters (spec §7); every key optional.", param_infos(sim_param_table())},
+      {"rules", "The rule monitors' own parameters (RuleParams, src/core/params.h); every key optional.",
+       param_infos(rule_param_table())},
+  };
+}
+
+std::vector<ParamSection> trace_param_sections() {
+  std::vector<ParamSection> sections;
+  for (ParamSection& s : core_param_sections())
+    if (s.name == "rss" || s.name == "rules") sections.push_back(std::move(s));
+  return sections;
+}
+
 Params params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
   ObjectReader r(j, source, path);
   r.only_keys({"rss", "planner", "sim", "rules"});
   Params p;
-  if (r.has("rules")) p.rules = read_rules(r.object("rules"));
-  if (r.has("rss")) p.rss = read_rss(r.object("rss"));
+  if (r.has("rules")) p.rules = read_params(rule_param_table(), r.object("rules"));
+  if (r.has("rss")) p.rss = read_params(rss_param_table(), r.object("rss"));
   if (r.has("planner")) p.planner = read_planner(r.object("planner"));
-  if (r.has("sim")) p.sim = read_sim(r.object("sim"));
+  if (r.has("sim")) p.sim = read_params(sim_param_table(), r.object("sim"));
   return p;
 }
 
 RuleParams rule_params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
-  return read_rules(ObjectReader(j, source, path));
+  return read_params(rule_param_table(), ObjectReader(j, source, path));
 }
 
 RssParams rss_params_from_json(const nlohmann::json& j, const std::string& source, const std::string& path) {
-  return read_rss(ObjectReader(j, source, path));
+  return read_params(rss_param_table(), ObjectReader(j, source, path));
 }
 
-nlohmann::json rss_params_to_json(const RssParams& p) {
-  return {{"response_time_s", p.response_time_s}, {"fluctuation_margin_m", p.fluctuation_margin_m}};
-}
+nlohmann::json rss_params_to_json(const RssParams& p) { return params_to_json(rss_param_table(), p); }
 
-nlohmann::json rule_params_to_json(const RuleParams& p) {
-  return {{"merge_duration_s", p.merge_duration_s},
-          {"comm_threshold_s", p.comm_threshold_s},
-          {"merge_start_offset_m", p.merge_start_offset_m},
-          {"merge_abort_offset_m", p.merge_abort_offset_m},
-          {"merge_abort_reversal_m", p.merge_abort_reversal_m},
-          {"merge_complete_offset_m", p.merge_complete_offset_m},
-          {"merge_complete_yaw_rad", p.merge_complete_yaw_rad},
-          {"merge_decision_window_s", p.merge_decision_window_s},
-          {"accel_tolerance_mps2", p.accel_tolerance_mps2},
-          {"speed_tolerance_mps", p.speed_tolerance_mps},
-          {"yield_speed_tolerance_mps", p.yield_speed_tolerance_mps},
-          {"halted_speed_mps", p.halted_speed_mps},
-          {"road_edge_tolerance_m", p.road_edge_tolerance_m},
-          {"lat_speed_hysteresis_mps", p.lat_speed_hysteresis_mps},
-          {"max_lat_speed_sign_changes_per_merge", p.max_lat_speed_sign_changes_per_merge},
-          {"sideslip_max_rad", p.sideslip_max_rad},
-          {"sideslip_min_speed_mps", p.sideslip_min_speed_mps},
-          {"progress_grace_s", p.progress_grace_s},
-          {"progress_gap_margin_m", p.progress_gap_margin_m},
-          {"progress_leader_braking_mps2", p.progress_leader_braking_mps2},
-          {"progress_min_merge_speed_mps", p.progress_min_merge_speed_mps},
-          {"progress_min_room_m", p.progress_min_room_m}};
-}
+nlohmann::json rule_params_to_json(const RuleParams& p) { return params_to_json(rule_param_table(), p); }
 
 nlohmann::json params_to_json(const Params& p) {
-  const auto& pl = p.planner;
+  nlohmann::json planner = params_to_json(planner_param_table(), p.planner);
+  for (const auto& item : p.planner.tunables.items()) planner[item.key()] = item.value();
   return {
       {"rss", rss_params_to_json(p.rss)},
       {"rules", rule_params_to_json(p.rules)},
-      {"planner",
-       {{"merge_duration_s", pl.merge_duration_s},
-        {"comm_threshold_s", pl.comm_threshold_s},
-        {"halt_margin_m", pl.halt_margin_m},
-        {"lat_accel_comfort_mps2", pl.lat_accel_comfort_mps2},
-        {"kappa_min_per_m", pl.kappa_min_per_m},
-        {"kappa_max_per_m", pl.kappa_max_per_m},
-        {"pc_candidates", pl.pc_candidates},
-        {"kappa_candidates", pl.kappa_candidates},
-        {"pf_road_beta", pl.pf_road_beta},
-        {"pf_obstacle_gamma", pl.pf_obstacle_gamma},
-        {"pf_obstacle_u", pl.pf_obstacle_u},
-        {"pf_lane_xi", pl.pf_lane_xi},
-        {"pf_search_distance_m", pl.pf_search_distance_m},
-        {"cost_time_weight", pl.cost_time_weight},
-        {"cost_speed_change_weight", pl.cost_speed_change_weight},
-        {"cost_traffic_speed_weight", pl.cost_traffic_speed_weight}}},
-      {"sim", {{"step_s", p.sim.step_s}, {"planner_cycle_s", p.sim.planner_cycle_s}, {"horizon_s", p.sim.horizon_s}}},
+      {"planner", planner},
+      {"sim", params_to_json(sim_param_table(), p.sim)},
   };
 }
 

@@ -9,6 +9,7 @@
 #include "core/rss.h"
 #include "planner/field_timeline.h"
 #include "planner/merge_path.h"
+#include "planner/rcpp_params.h"
 #include "planner/rcpp_world.h"
 #include "planner/world_view.h"
 
@@ -86,7 +87,7 @@ std::optional<PcBounds> def1_pc_bounds(const Def1Search& f, const LaneGap& gap, 
 // with the progress rule within it. The grid is over v_e*, not P_c: an ego that cannot reach
 // v_e* by rho/2 has the same P_c for a range of v_e*, which differ after P_c.
 std::vector<double> def1_candidate_speeds(const Def1Search& f, double lo_mps, double v_hi_mps) {
-  std::vector<double> speeds = even_grid(lo_mps, v_hi_mps, f.s.params.planner.pc_candidates);
+  std::vector<double> speeds = even_grid(lo_mps, v_hi_mps, rcpp_params(f.s).pc_candidates);
   const double grid_step_mps = f.ctx.speed_limit_mps / kDef1SpeedGridSteps;
   for (int i = static_cast<int>(std::ceil(lo_mps / grid_step_mps)); i * grid_step_mps <= v_hi_mps; ++i)
     speeds.push_back(i * grid_step_mps);
@@ -99,7 +100,7 @@ std::vector<double> def1_candidate_speeds(const Def1Search& f, double lo_mps, do
 std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, const SpeedInterval& iv,
                                          const PcBounds& b) {
   const PlannerSetup& s = f.s;
-  const PlannerParams& p = s.params.planner;
+  const RcppParams p = rcpp_params(s);
   const Def1Context& ctx = f.ctx;
   const double v_e = ctx.ego_speed_mps;
   const double v_traffic = gap_traffic_speed_mps(gap, v_e);
@@ -197,7 +198,7 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why) {
   const PlannerSetup& s = *w.setup;
   const double rho_base_s =
-      merge_duration_base_s(planned_rho_m_s(s), s.road.lane_width_m, s.params.planner.lat_accel_comfort_mps2);
+      merge_duration_base_s(planned_rho_m_s(s), s.road.lane_width_m, rcpp_params(s).lat_accel_comfort_mps2);
   for (const double factor : kMergeDurationFactors) {
     if ((factor == 1.0) != (durations == MergeDurations::kRhoM)) continue;
     std::string this_why;

@@ -9,6 +9,7 @@
 #include "core/rss.h"
 #include "planner/field_timeline.h"
 #include "planner/merge_path.h"
+#include "planner/rcpp_params.h"
 #include "planner/rcpp_world.h"
 #include "planner/world_view.h"
 
@@ -130,7 +131,7 @@ Def2Plan coop_plan(const CoopCandidate& x, const CoopBounds& b, double pc_m, dou
 std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
                                        std::size_t i, CoopCase k, double* cost_out) {
   const PlannerSetup& s = *w.setup;
-  const PlannerParams& p = s.params.planner;
+  const RcppParams p = rcpp_params(s);
   const CoopContext c = coop_context(w);
   const MainLaneVehicle& o = lane[i];
   const VoStar vo = solve_vo_star(c, o, k);

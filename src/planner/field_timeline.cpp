@@ -50,7 +50,7 @@ FieldTimeline field_timeline(const WorldSnapshot& w, double duration_s,
   return field;
 }
 
-double field_cost_floor(const PlannerParams& p) {
+double field_cost_floor(const RcppParams& p) {
   const double floor = field_potential_floor(p, LaneCentreMode::kMerging);
   double sum = 0.0;
   for (int k = 0; k <= kFieldSamples; ++k) sum += floor;

@@ -26,7 +26,7 @@ FieldTimeline field_timeline(const WorldSnapshot& w, double duration_s,
 // Potential field cost of a candidate path: the mean over the timeline's instants of the
 // potential at the ego, at ego_x_at(t) on the sigmoid.
 template <class EgoXAt>
-double field_cost(const PlannerParams& p, const FieldTimeline& field, const Sigmoid& sig, EgoXAt ego_x_at) {
+double field_cost(const RcppParams& p, const FieldTimeline& field, const Sigmoid& sig, EgoXAt ego_x_at) {
   double sum = 0.0;
   for (int k = 0; k <= kFieldSamples; ++k) {
     const double x = ego_x_at(field.duration_s * k / kFieldSamples);
@@ -38,6 +38,6 @@ double field_cost(const PlannerParams& p, const FieldTimeline& field, const Sigm
 // A lower bound of field_cost for any candidate, in floating point: its sum with every term at
 // field_potential_floor (each term is at least that, and each addition and the division are
 // monotone), divided as field_cost divides.
-double field_cost_floor(const PlannerParams& p);
+double field_cost_floor(const RcppParams& p);
 
 }  // namespace mg

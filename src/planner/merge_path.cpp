@@ -6,6 +6,7 @@
 
 #include "core/demand.h"
 #include "core/rss.h"
+#include "planner/rcpp_params.h"
 
 namespace mg {
 
@@ -30,13 +31,13 @@ double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
 }
 
 double kappa_cap_per_m(const PlannerSetup& s) {
-  return std::min(s.params.planner.kappa_max_per_m,
+  return std::min(rcpp_params(s).kappa_max_per_m,
                   std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s) / s.road.lane_width_m));
 }
 
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m) {
-  const PlannerParams& p = s.params.planner;
+  const RcppParams p = rcpp_params(s);
   const double before_m = pc_m - start_x_m;
   const double after_m = complete_by_x_m - pc_m;
   const double exit_room_m = side_exit_limit_x_m(s, std::max(ramp.v0_mps, ramp.v_target_mps)) - pc_m;

@@ -34,7 +34,7 @@ double lane_centre_potential(double d_m, double xi, double search_distance_m, La
   return search_distance_m * xi * d_m - 0.5 * xi * search_distance_m * search_distance_m;
 }
 
-double field_potential(const FieldScene& scene, const PlannerParams& p, double x_m, double y_m) {
+double field_potential(const FieldScene& scene, const RcppParams& p, double x_m, double y_m) {
   MG_DEMAND(scene.road != nullptr);
   const Road& road = *scene.road;
   const double w = road.lane_width_m;
@@ -52,7 +52,7 @@ double field_potential(const FieldScene& scene, const PlannerParams& p, double x
   return total;
 }
 
-double field_potential_floor(const PlannerParams& p, LaneCentreMode mode) {
+double field_potential_floor(const RcppParams& p, LaneCentreMode mode) {
   return lane_centre_potential(p.pf_search_distance_m, p.pf_lane_xi, p.pf_search_distance_m, mode);
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/scenario.h"
+#include "planner/rcpp_params.h"
 
 namespace mg {
 
@@ -41,10 +42,10 @@ struct FieldScene {
   double target_lane_y_m = 0.0;
   LaneCentreMode mode = LaneCentreMode::kMerging;
 };
-double field_potential(const FieldScene& scene, const PlannerParams& p, double x_m, double y_m);
+double field_potential(const FieldScene& scene, const RcppParams& p, double x_m, double y_m);
 // A lower bound of field_potential at any position of any scene in `mode`, exact in floating
 // point: the lane-centre term at distance D* (d = hypot(D*, dY) >= D*, and the term does not fall
 // with d); the road-mark and obstacle terms are >= 0, and each addition is monotone.
-double field_potential_floor(const PlannerParams& p, LaneCentreMode mode);
+double field_potential_floor(const RcppParams& p, LaneCentreMode mode);
 
 }  // namespace mg

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/rss.h"
+#include "planner/rcpp_params.h"
 #include "planner/sigmoid.h"
 #include "planner/world_view.h"
 
@@ -77,7 +78,7 @@ double constant_speed_x(const ObservedVehicle& o, double t_s) {
 }
 
 double standstill_merge_length_m(const PlannerSetup& s) {
-  const PlannerParams& p = s.params.planner;
+  const RcppParams p = rcpp_params(s);
   const double kappa = std::max(
       p.kappa_min_per_m,
       std::min(kappa_comfort_max_per_m(kStandstillMergeSpeedMps, s.road.lane_width_m, p.lat_accel_comfort_mps2),

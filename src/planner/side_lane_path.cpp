@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "planner/merge_path.h"
+#include "planner/rcpp_params.h"
 #include "planner/rcpp_world.h"
 #include "planner/sigmoid.h"
 #include "planner/world_view.h"
@@ -33,7 +34,7 @@ ReturnLimits return_limits(const WorldSnapshot& w) {
       std::min(path_curvature_cap_per_m(s),
                kPathSideslipMaxRad / std::abs(steady_sideslip_per_curvature_m(s.ego.dynamics, v)));
   limits.comfort_curvature_per_m =
-      v >= kReturnTangentMinSpeedMps ? s.params.planner.lat_accel_comfort_mps2 / (v * v) : limits.cap_curvature_per_m;
+      v >= kReturnTangentMinSpeedMps ? rcpp_params(s).lat_accel_comfort_mps2 / (v * v) : limits.cap_curvature_per_m;
   limits.y_max_m = -0.5 * s.road.lane_width_m - kReturnLaneLineMarginM;
   return limits;
 }

@@ -6,6 +6,7 @@
 #include "core/fixed_text.h"
 #include "planner/definition1.h"
 #include "planner/potential_field.h"
+#include "planner/rcpp_params.h"
 #include "planner/world_view.h"
 
 namespace mg {
@@ -19,6 +20,7 @@ constexpr double kLookaheadS = 1.0;       // speed adaptation looks this far ahe
 struct FieldModel {
   const WorldSnapshot* w;
   const TripFieldCoefficients* k;
+  double road_beta;  // RCPP's (eq. 3): the two fields draw the road marks alike
 
   double obstacles(double x, double y, double t) const {
     const PlannerSetup& s = *w->setup;
@@ -44,8 +46,8 @@ struct FieldModel {
     const bool side_lane_here = x >= road.side_lane_start_x_m && x <= road.side_lane_end_x_m;
     const double right_y = side_lane_here ? -1.5 * road.lane_width_m : -0.5 * road.lane_width_m;
     const double left_y = (road.main_lanes - 0.5) * road.lane_width_m;
-    return road_mark_potential(y, right_y, false, s.ego.size.width_m, s.params.planner.pf_road_beta) +
-           road_mark_potential(y, left_y, true, s.ego.size.width_m, s.params.planner.pf_road_beta) +
+    return road_mark_potential(y, right_y, false, s.ego.size.width_m, road_beta) +
+           road_mark_potential(y, left_y, true, s.ego.size.width_m, road_beta) +
            obstacles(x, y, t) + 0.5 * k->lane_attraction * urgency_at_x * y * y;
   }
 };
@@ -63,7 +65,7 @@ double tripfield_obstacle_potential(double dx_m, double dy_m, double obstacle_sp
 PlanOutput TripFieldPlanner::plan(const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
   const Road& road = s.road;
-  const FieldModel field{&w, &k_};
+  const FieldModel field{&w, &k_, rcpp_params(s).pf_road_beta};
   const double v_e = ego_speed_mps(w);
   const double v_path = std::max(v_e, 1.0);
   const double y_min = road.side_lane_y_m();

@@ -41,6 +41,9 @@ const std::vector<Expectation> kFiles = {
     {"overlapping_vehicles.json", "/vehicles/1/x_m: overlaps vehicle id 1"},
     {"unknown_behaviour.json", "/vehicles/0/behaviour/type: unknown behaviour 'kamikaze'"},
     {"unknown_key.json", "/ego/turbo: unknown key"},
+    {"unknown_planner_key.json", "/params/planner/turbo: unknown key"},
+    {"kappa_inverted.json", "/params/planner/kappa_max_per_m: must be in [kappa_min_per_m = 0.5, 10], got 0.1"},
+    {"negative_field_coefficient.json", "/params/planner/pf_road_beta: must be in [0, 1000000], got -1"},
     {"future_version_scenario.json", "/format_version: unsupported"},
     {"future_version_case.json", ": /"},
 };

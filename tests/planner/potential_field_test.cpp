@@ -51,7 +51,7 @@ RC_GTEST_PROP(PotentialField, LaneCentreModesMeetAtTheSearchDistance, ()) {
 TEST(PotentialField, TargetLaneIsLowerThanSideLaneWithoutObstacles) {
   Road road;
   FieldScene scene{&road, 1.9, {}, 0.0, LaneCentreMode::kMerging};
-  PlannerParams p;
+  RcppParams p;
   EXPECT_LT(field_potential(scene, p, 100, 0.0), field_potential(scene, p, 100, -3.5));
 }
 
@@ -60,7 +60,7 @@ TEST(PotentialField, TargetLaneIsLowerThanSideLaneWithoutObstacles) {
 RC_GTEST_PROP(PotentialField, TheFloorIsNeverAboveTheField, ()) {
   Road road;
   road.main_lanes = *rc::gen::inRange(1, 4);
-  PlannerParams p;
+  RcppParams p;
   p.pf_road_beta = *rc::gen::inRange(0, 1000) / 100.0;
   p.pf_obstacle_gamma = *rc::gen::inRange(0, 2000) / 100.0;
   p.pf_obstacle_u = *rc::gen::inRange(0, 100) / 100.0;

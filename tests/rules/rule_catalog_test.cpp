@@ -1,11 +1,15 @@
 #include "rules/rule_catalog.h"
 
 #include <fstream>
+#include <map>
 #include <set>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
+#include "core/params.h"
 #include "rules/monitor.h"
+#include "trace_builder.h"
 
 namespace mg {
 namespace {
@@ -16,11 +20,37 @@ TEST(RuleCatalog, EmbeddedCatalogIsTheFileInTheRepository) {
   EXPECT_EQ(nlohmann::json::parse(in), rule_catalog_json());
 }
 
-TEST(RuleCatalog, EveryRuleHasExactlyOneMonitorInCatalogueOrder) {
-  const auto& specs = rule_catalog();
-  const auto& monitors = rule_monitors();
-  ASSERT_EQ(specs.size(), monitors.size());
-  for (std::size_t i = 0; i < specs.size(); ++i) EXPECT_EQ(specs[i].id, monitors[i].rule_id);
+// The catalogue declares the rule ids; a monitor names the one it judges. Every monitor's rule is
+// in the catalogue and every rule of the catalogue has exactly one monitor.
+TEST(RuleCatalog, EveryRuleHasExactlyOneMonitorAndEveryMonitorARule) {
+  const Scenario s = test::base_scenario();
+  const Trace trace = test::constant_accel_trace(s, 1.0);
+  std::map<std::string, int> monitors_of;
+  for (const MonitorFn fn : rule_monitors()) {
+    try {  // a monitor of a rule the catalogue lacks throws as it names its rule
+      ++monitors_of[test::run(fn, s, trace).result.rule_id];
+    } catch (const std::logic_error& e) {
+      ADD_FAILURE() << "a monitor judges a rule that is not in the catalogue: " << e.what();
+    }
+  }
+  for (const RuleSpec& r : rule_catalog()) EXPECT_EQ(monitors_of[r.id], 1) << r.id << ": monitors judging it";
+}
+
+// The checker reports the rules in catalogue order, whatever order the monitors run in.
+TEST(RuleCatalog, ResultsComeInCatalogueOrder) {
+  const Scenario s = test::base_scenario();
+  const CheckResult r = check_observed(test::observed(s, test::constant_accel_trace(s, 1.0)));
+  ASSERT_EQ(r.rules.size(), rule_catalog().size());
+  for (std::size_t i = 0; i < r.rules.size(); ++i) EXPECT_EQ(r.rules[i].rule_id, rule_catalog()[i].id);
+}
+
+// A rule's "parameters" are keys of params.rules or params.rss (core/params.h): their defaults
+// and ranges live there, not in the catalogue.
+TEST(RuleCatalog, EveryRuleParameterIsARuleOrRssParameter) {
+  for (const RuleSpec& r : rule_catalog())
+    for (const std::string& p : r.parameters)
+      EXPECT_TRUE(declares(rule_param_table(), p) || declares(rss_param_table(), p)) << r.id << ": " << p;
+  EXPECT_FALSE(rule_catalog_json().contains("parameters")) << "defaults belong to the parameter tables";
 }
 
 TEST(RuleCatalog, EveryRuleNamesItsPaperReferenceStatementAndLiability) {

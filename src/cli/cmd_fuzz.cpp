@@ -108,7 +108,7 @@ void parse_shard(const std::string& text, fuzz::CampaignOptions& o) {
   o.shard_count = n;
 }
 
-// A liability report (rules/report_*.h) per new corpus case, in DIR/cases/<case name>/;
+// A liability report (report/report_*.h) per new corpus case, in DIR/cases/<case name>/;
 // returns case path -> report.html relative to DIR.
 std::map<std::string, std::string> write_liability_reports(const std::string& dir, const fuzz::CampaignResult& r) {
   std::map<std::string, std::string> links;

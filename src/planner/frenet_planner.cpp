@@ -25,7 +25,7 @@ std::vector<double> durations(const FrenetPlannerParams& p) {
 
 // The trajectory's positions over the check horizon, then straight on at its end offset.
 std::vector<PathPoint> path_of(const FrenetTrajectory& t, const WorldSnapshot& w, const FrenetPlannerParams& p) {
-  std::vector<PathPoint> path{{w.ego.x_m - kPathBehindM, w.ego.y_m}};
+  std::vector<PathPoint> path{{w.ego.x_m - kPathBehindM, t.d_at(0.0)}};
   const double horizon_s = std::max(p.max_duration_s, t.duration_s);
   for (double time_s = 0.0; time_s <= horizon_s + 1e-9; time_s += p.check_step_s) {
     const double x = t.s_at(time_s);
@@ -134,11 +134,16 @@ FrenetStart FrenetPlanner::start_of(const WorldSnapshot& w) const {
   a.s_ddot_mps2 = w.ego.accel_mps2;
   a.d_m = w.ego.y_m;
   a.d_dot_mps = ego_lat_speed_mps(w);
-  if (memory_.driving) {  // the lateral acceleration the driven trajectory has now
-    const FrenetTrajectory& t = *memory_.driving;
-    const double elapsed_s = w.time_s - memory_.planned_at_s;
-    a.d_ddot_mps2 = elapsed_s <= t.duration_s ? t.lateral.d2(elapsed_s) : 0.0;
-  }
+  if (!memory_.driving) return a;
+  // Laterally, plan on from where the driven trajectory has the ego now, while the ego is near it
+  // (Werling et al.'s start from the previous trajectory): a plan from the measured state would
+  // take the path tracker's lag for the planner's intent each cycle, and drift with it.
+  const FrenetTrajectory& t = *memory_.driving;
+  const double elapsed_s = w.time_s - memory_.planned_at_s;
+  if (std::abs(t.d_at(elapsed_s) - w.ego.y_m) > kReplanFromMeasuredOffsetM) return a;
+  a.d_m = t.d_at(elapsed_s);
+  a.d_dot_mps = t.d_dot_at(elapsed_s);
+  a.d_ddot_mps2 = elapsed_s <= t.duration_s ? t.lateral.d2(elapsed_s) : 0.0;
   return a;
 }
 

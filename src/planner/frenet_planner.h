@@ -61,8 +61,10 @@ std::vector<double> frenet_lateral_targets(const WorldSnapshot& w);
 FrenetChoice choose_frenet_trajectory(const FrenetStart& start, const std::vector<double>& lateral_targets_m,
                                       double desired_speed_mps, const FrenetScene& scene, const FrenetPlannerParams& p);
 
-// What the planner remembers: the trajectory it drives, from when (its lateral acceleration is
-// the next cycle's start, as Werling et al. start from the previous trajectory).
+// What the planner remembers: the trajectory it drives, from when. The next cycle's lateral start
+// state is that trajectory's now (as Werling et al. start from the previous trajectory) while the
+// ego is within kReplanFromMeasuredOffsetM of it, its measured one otherwise.
+inline constexpr double kReplanFromMeasuredOffsetM = 0.5;
 struct FrenetMemory {
   std::optional<FrenetTrajectory> driving;
   double planned_at_s = 0.0;

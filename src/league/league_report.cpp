@@ -58,8 +58,8 @@ std::string headline(const LeagueOptions& o, const LeagueResult& r) {
   out << r.scenarios << " scenarios (seed " << o.seed << ", "
       << (o.runs ? std::to_string(*o.runs) + " runs" : "a budget of " + fixed_text(o.time_s.value_or(0.0), 0) + " s") << ", "
       << (o.gen.targeted_families ? "mixed" : "uniform") << " families, up to " << o.gen.max_vehicles
-      << " vehicles), each driven by the " << r.standings.size() << " planners, in " << fixed_text(r.seconds, 1) << " s with "
-      << o.jobs << " jobs" << (r.interrupted ? ", interrupted" + (r.stop_signal.empty() ? "" : " by " + r.stop_signal) : "")
+      << " vehicles), each driven by the " << r.standings.size() << " planners, in " << fixed_text(r.seconds, 1)
+      << " s (--jobs " << o.jobs << ")" << (r.interrupted ? ", interrupted" + (r.stop_signal.empty() ? "" : " by " + r.stop_signal) : "")
       << ".";
   return out.str();
 }

@@ -100,6 +100,41 @@ void draw_series(std::ostringstream& out, const Plot& p, Range xr, int ox, int o
   }
 }
 
+// The notes beside their points. A note that would overlap an earlier one or a marker moves up or
+// down by a line (the nearest free place of a few), so that close points keep legible names.
+void draw_notes(std::ostringstream& out, const Plot& p, const std::function<double(double)>& px,
+                const std::function<double(double)>& py) {
+  constexpr double kCharWidthPx = 7.0, kLineHeightPx = 14.0;  // 12 px sans-serif
+  struct Box {
+    double x0, y0, x1, y1;
+    bool meets(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+  };
+  std::vector<Box> taken;
+  for (const Series& s : p.series)
+    if (s.marker_radius_px > 0.0)
+      for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
+        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
+          const double r = s.marker_radius_px;
+          taken.push_back({px(s.x[i]) - r, py(s.y[i]) - r, px(s.x[i]) + r, py(s.y[i]) + r});
+        }
+  for (const PointNote& n : p.notes) {
+    if (!std::isfinite(n.x) || !std::isfinite(n.y)) continue;
+    const double x = px(n.x) + 9, width = kCharWidthPx * static_cast<double>(n.text.size());
+    double y = py(n.y) + 4;  // the baseline
+    for (const double shift : {0.0, -1.0, 1.0, -2.0, 2.0, -3.0, 3.0}) {
+      const double candidate = py(n.y) + 4 + shift * kLineHeightPx;
+      const Box box{x, candidate - 10, x + width, candidate + 2};
+      if (std::none_of(taken.begin(), taken.end(), [&](const Box& b) { return b.meets(box); })) {
+        y = candidate;
+        break;
+      }
+    }
+    taken.push_back({x, y - 10, x + width, y + 2});
+    out << "<text x=\"" << num(x) << "\" y=\"" << num(y) << "\" font-size=\"12\" fill=\"" << n.colour << "\">"
+        << xml_escape(n.text) << "</text>\n";
+  }
+}
+
 // The legend inside the axes [x0, x1] x [y1, y0] (y0 the bottom edge), on a white box so that it
 // stays readable over the data.
 void draw_legend(std::ostringstream& out, const Plot& p, double x0, double x1, double y0, double y1) {
@@ -181,10 +216,7 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
   out << "<text transform=\"translate(" << ox + 16 << "," << num(0.5 * (y0 + y1))
       << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(p.y_label) << "</text>\n";
   draw_series(out, p, xr, ox, oy, px, py);
-  for (const PointNote& n : p.notes)
-    if (std::isfinite(n.x) && std::isfinite(n.y))
-      out << "<text x=\"" << num(px(n.x) + 9) << "\" y=\"" << num(py(n.y) + 4) << "\" font-size=\"12\" fill=\"" << n.colour
-          << "\">" << xml_escape(n.text) << "</text>\n";
+  draw_notes(out, p, px, py);
   draw_legend(out, p, x0, x1, y0, y1);
   out << "</g>\n";
 }

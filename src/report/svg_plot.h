@@ -37,8 +37,9 @@ struct Band {
 
 enum class LegendCorner { kTopRight, kBottomRight, kTopLeft, kBottomLeft };
 
-// A text beside a data point (a scatter plot's names), in the point's colour, starting
-// just right of it, vertically centred on it.
+// A text beside a data point (a scatter plot's names), in the point's colour, starting just right
+// of it, vertically centred on it; a line up or down where it would overlap another note or a
+// marker.
 struct PointNote {
   double x = 0.0, y = 0.0;
   std::string text;

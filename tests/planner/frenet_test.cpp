@@ -15,12 +15,13 @@
 #include "planner/mobil_planner.h"
 #include "planner/planner.h"
 
-#include "baseline_docs.h"
+#include "baseline_fixtures.h"
 
 namespace mg {
 namespace {
 
-double real_in(int lo_tenths, int hi_tenths) { return *rc::gen::inRange(lo_tenths, hi_tenths + 1) / 10.0; }
+using test::ramp;
+using test::real_in;
 
 bool near(double a, double b, double scale) { return std::abs(a - b) <= 1e-9 * (1.0 + scale); }
 
@@ -123,16 +124,6 @@ RC_GTEST_PROP(Frenet, TheChosenTrajectoryMeetsNoPredictedObstacle, ()) {
   RC_ASSERT(!collides_finely(*choice.best, sc));
   for (const FrenetCandidate& c : choice.candidates)  // the cheapest of the valid
     if (c.verdict == FrenetVerdict::kValid) RC_ASSERT(choice.best->cost <= c.trajectory.cost);
-}
-
-// A straight on-ramp: the ego in the side lane at x = 0, 20 m/s, the side lane ending at 200 m.
-Scenario ramp() {
-  Scenario s;
-  s.road.side_lane_end_x_m = 200.0;
-  s.road.speed_limit_mps = 25.0;
-  s.ego.y_m = -s.road.lane_width_m;
-  s.ego.speed_mps = 20.0;
-  return s;
 }
 
 TEST(FrenetPlanner, MergesIntoAnEmptyMainLane) {

@@ -15,12 +15,13 @@
 #include "planner/mobil_planner.h"
 #include "planner/planner.h"
 
-#include "baseline_docs.h"
+#include "baseline_fixtures.h"
 
 namespace mg {
 namespace {
 
-double real_in(int lo_tenths, int hi_tenths) { return *rc::gen::inRange(lo_tenths, hi_tenths + 1) / 10.0; }
+using test::ramp;
+using test::real_in;
 
 IdmParams random_idm() {
   IdmParams p;
@@ -100,17 +101,6 @@ TEST(Mobil, PolitenessWeighsTheNewFollowersLoss) {
   polite.politeness = 1.0;
   EXPECT_TRUE(mobil_changes_lane(s, selfish));
   EXPECT_FALSE(mobil_changes_lane(s, polite));  // 0.5 - 1.0 = -0.5 < 0.1 - 0.3
-}
-
-// A straight on-ramp: the ego in the side lane at x = 0, 20 m/s, the side lane ending at 200 m.
-Scenario ramp() {
-  Scenario s;
-  s.road.side_lane_end_x_m = 200.0;
-  s.road.speed_limit_mps = 25.0;
-  s.ego.x_m = 0.0;
-  s.ego.y_m = -s.road.lane_width_m;
-  s.ego.speed_mps = 20.0;
-  return s;
 }
 
 MainVehicle main_lane_vehicle(int id, double x_m, double speed_mps) {

@@ -49,6 +49,15 @@ TEST(SvgPlot, MarkersDrawAScatterAndTheLegendShowsThem) {
   EXPECT_EQ(render(lines).find("<circle"), std::string::npos);
   p.notes.push_back({2, 2, "b & c", "#2ca02c"});
   EXPECT_NE(render(p).find("fill=\"#2ca02c\">b &amp; c</text>"), std::string::npos);
+  // A second note at the same point moves a line away instead of overlapping the first.
+  p.notes.push_back({2, 2, "d", "#000000"});
+  const std::string two = render(p);
+  auto y_of = [&two](const std::string& text) {
+    const std::size_t end = two.find(">" + text + "</text>");
+    const std::size_t at = two.rfind(" y=\"", end);
+    return std::stod(two.substr(at + 4));
+  };
+  EXPECT_NEAR(std::abs(y_of("d") - y_of("b &amp; c")), 14.0, 1e-9);
 }
 
 TEST(SvgPlot, NonFiniteValuesBreakTheLine) {

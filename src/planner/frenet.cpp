@@ -90,6 +90,7 @@ std::string to_string(FrenetVerdict v) {
     case FrenetVerdict::kCurvature: return "curvature";
     case FrenetVerdict::kCollision: return "collision";
     case FrenetVerdict::kSideLaneEnd: return "side lane end";
+    case FrenetVerdict::kNotChecked: return "not checked";
   }
   return "?";
 }

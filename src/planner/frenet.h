@@ -104,7 +104,7 @@ struct FrenetScene {
   std::vector<PredictedObstacle> obstacles;
 };
 
-enum class FrenetVerdict { kValid, kReverses, kAccel, kLatAccel, kCurvature, kCollision, kSideLaneEnd };
+enum class FrenetVerdict { kValid, kReverses, kAccel, kLatAccel, kCurvature, kCollision, kSideLaneEnd, kNotChecked };
 std::string to_string(FrenetVerdict v);
 
 // The curvature of the path (s(t), d(t)): |s' d'' - d' s''| / |v|^3, with |v| no lower than

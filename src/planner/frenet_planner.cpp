@@ -113,13 +113,24 @@ FrenetChoice choose_frenet_trajectory(const FrenetStart& start, const std::vecto
     for (double duration : durations(p))
       for (int i = 0; i < p.speed_samples; ++i) {
         const double end_speed = desired_speed_mps * i / (p.speed_samples - 1);
-        FrenetCandidate c{frenet_trajectory(start, end_d, end_speed, duration), FrenetVerdict::kValid};
+        FrenetCandidate c{frenet_trajectory(start, end_d, end_speed, duration), FrenetVerdict::kNotChecked};
         c.trajectory.cost = frenet_cost(c.trajectory, 0.0, desired_speed_mps, k, p.check_step_s);
-        c.verdict = check_trajectory(c.trajectory, scene);
-        if (c.verdict == FrenetVerdict::kValid && (!choice.best || c.trajectory.cost < choice.best->cost))
-          choice.best = c.trajectory;
         choice.candidates.push_back(std::move(c));
       }
+  // Werling et al. §III-C: the candidates are checked in increasing cost, and the first valid one
+  // is driven; the dearer ones need no check.
+  std::vector<std::size_t> order(choice.candidates.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return choice.candidates[a].trajectory.cost < choice.candidates[b].trajectory.cost;
+  });
+  for (const std::size_t i : order) {
+    FrenetCandidate& c = choice.candidates[i];
+    c.verdict = check_trajectory(c.trajectory, scene);
+    if (c.verdict != FrenetVerdict::kValid) continue;
+    choice.best = c.trajectory;
+    break;
+  }
   return choice;
 }
 

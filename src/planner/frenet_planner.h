@@ -41,10 +41,11 @@ struct FrenetPlannerParams {
 };
 const std::vector<ParamRow<FrenetPlannerParams>>& frenet_parameter_table();
 
-// The candidates of one cycle with their verdicts, cheapest valid one first among the valid.
+// The candidates of one cycle with their verdicts: every candidate cheaper than the chosen one is
+// invalid, the dearer ones are not checked (kNotChecked).
 struct FrenetCandidate {
   FrenetTrajectory trajectory;
-  FrenetVerdict verdict = FrenetVerdict::kValid;
+  FrenetVerdict verdict = FrenetVerdict::kNotChecked;
 };
 struct FrenetChoice {
   std::vector<FrenetCandidate> candidates;  // in sampling order
@@ -57,7 +58,7 @@ FrenetScene frenet_scene(const WorldSnapshot& w, const FrenetPlannerParams& p);
 // The lateral end offsets sampled from the ego's position: the side lane's centre while the ego's
 // front is short of the side lane's end, and the main lane's centre.
 std::vector<double> frenet_lateral_targets(const WorldSnapshot& w);
-// Samples, checks and chooses (ties: the first sampled).
+// Samples, then checks in increasing cost until a candidate is valid (ties: the first sampled).
 FrenetChoice choose_frenet_trajectory(const FrenetStart& start, const std::vector<double>& lateral_targets_m,
                                       double desired_speed_mps, const FrenetScene& scene, const FrenetPlannerParams& p);
 

@@ -122,8 +122,10 @@ RC_GTEST_PROP(Frenet, TheChosenTrajectoryMeetsNoPredictedObstacle, ()) {
   if (!choice.best) return;
   RC_ASSERT(check_trajectory(*choice.best, sc) == FrenetVerdict::kValid);
   RC_ASSERT(!collides_finely(*choice.best, sc));
-  for (const FrenetCandidate& c : choice.candidates)  // the cheapest of the valid
-    if (c.verdict == FrenetVerdict::kValid) RC_ASSERT(choice.best->cost <= c.trajectory.cost);
+  for (const FrenetCandidate& c : choice.candidates) {  // the cheapest of the valid: every cheaper one is invalid
+    if (c.trajectory.cost < choice.best->cost) RC_ASSERT(check_trajectory(c.trajectory, sc) != FrenetVerdict::kValid);
+    if (c.verdict != FrenetVerdict::kNotChecked) RC_ASSERT(c.verdict == check_trajectory(c.trajectory, sc));
+  }
 }
 
 TEST(FrenetPlanner, MergesIntoAnEmptyMainLane) {

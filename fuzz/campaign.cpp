@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <filesystem>
 #include <limits>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "fuzz/corpus_case.h"
+#include "fuzz/worker_pool.h"
 #include "planner/exec_planner.h"
 
 namespace mg::fuzz {
@@ -38,12 +37,15 @@ class Campaign {
 
   CampaignResult run() {
     std::vector<WorkerStats> stats(static_cast<std::size_t>(opt_.jobs));
-    std::vector<std::thread> threads;
-    active_ = opt_.jobs;
-    for (int w = 0; w < opt_.jobs; ++w) threads.emplace_back([this, &stats, w] { work(stats[static_cast<std::size_t>(w)]); });
-    report_progress_until_done();
-    for (std::thread& t : threads) t.join();
-    if (error_) std::rethrow_exception(error_);
+    Ticks ticks(opt_);
+    run_workers(
+        opt_.jobs, [this, &stats](int w) { work(stats[static_cast<std::size_t>(w)]); }, [this, &ticks] { tick(ticks); },
+        [this] {
+          abort_ = true;
+          if (history_) history_->wake();  // guided runs waiting for the failed worker's batch give up
+        });
+    if (opt_.on_progress) opt_.on_progress(progress());
+    timeline_.push_back(progress());
     return collect(stats);
   }
 
@@ -55,22 +57,12 @@ class Campaign {
   }
 
   void work(WorkerStats& stats) {
-    try {
-      const CheckFn check = make_check_();
-      while (!should_stop()) {
-        const std::uint64_t j = next_.fetch_add(1);
-        if (shard_runs_ && j >= *shard_runs_) break;
-        run_one(check, static_cast<std::uint64_t>(opt_.shard_index) + static_cast<std::uint64_t>(opt_.shard_count) * j, j, stats);
-      }
-    } catch (...) {
-      {
-        std::lock_guard lock(mutex_);
-        if (!error_) error_ = std::current_exception();
-        abort_ = true;
-      }
-      if (history_) history_->wake();  // guided runs waiting for this worker's batch give up
+    const CheckFn check = make_check_();
+    while (!should_stop()) {
+      const std::uint64_t j = next_.fetch_add(1);
+      if (shard_runs_ && j >= *shard_runs_) break;
+      run_one(check, static_cast<std::uint64_t>(opt_.shard_index) + static_cast<std::uint64_t>(opt_.shard_count) * j, j, stats);
     }
-    --active_;
   }
 
   // Run i's scenario: the random campaign's, or in a guided run a perturbed elite. The spec is
@@ -228,29 +220,31 @@ class Campaign {
     return p;
   }
 
-  void report_progress_until_done() {
-    auto next_report = Clock::now();
-    const auto period = [](double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); };
-    auto next_checkpoint = Clock::now() + period(opt_.checkpoint_period_s);
-    auto next_sample = Clock::now();
+  static Clock::duration period(double s) {
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+  }
+
+  // When the progress thread next reports, samples the timeline and writes a checkpoint.
+  struct Ticks {
+    explicit Ticks(const CampaignOptions& o)
+        : next_report(Clock::now()), next_checkpoint(Clock::now() + period(o.checkpoint_period_s)), next_sample(Clock::now()) {}
+    Clock::time_point next_report, next_checkpoint, next_sample;
     double sample_every_s = 1.0;
-    while (active_.load() > 0) {
-      if (opt_.on_progress && Clock::now() >= next_report) {
-        opt_.on_progress(progress());
-        next_report += period(opt_.progress_period_s);
-      }
-      if (Clock::now() >= next_sample) {
-        sample_timeline(sample_every_s);
-        next_sample += period(sample_every_s);
-      }
-      if (opt_.on_checkpoint && Clock::now() >= next_checkpoint) {
-        opt_.on_checkpoint(snapshot());
-        next_checkpoint += period(opt_.checkpoint_period_s);
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  };
+
+  void tick(Ticks& t) {
+    if (opt_.on_progress && Clock::now() >= t.next_report) {
+      opt_.on_progress(progress());
+      t.next_report += period(opt_.progress_period_s);
     }
-    if (opt_.on_progress) opt_.on_progress(progress());
-    timeline_.push_back(progress());
+    if (Clock::now() >= t.next_sample) {
+      sample_timeline(t.sample_every_s);
+      t.next_sample += period(t.sample_every_s);
+    }
+    if (opt_.on_checkpoint && Clock::now() >= t.next_checkpoint) {
+      opt_.on_checkpoint(snapshot());
+      t.next_checkpoint += period(opt_.checkpoint_period_s);
+    }
   }
 
   // Keeps at most kMaxTimelineSamples: when full, every other sample goes and the period doubles.
@@ -305,13 +299,11 @@ class Campaign {
   std::set<Signature> known_;
   std::atomic<std::uint64_t> next_{0}, scenarios_{0}, failing_{0}, guided_runs_{0}, guided_failing_{0};
   std::unique_ptr<PoolHistory> history_;  // guided search only
-  std::atomic<int> active_{0};
   std::atomic<bool> abort_{false};
-  std::mutex mutex_;  // guards signatures_, first_failure_*, error_ and corpus writes
+  std::mutex mutex_;  // guards signatures_, first_failure_* and corpus writes
   std::map<Signature, SignatureRecord> signatures_;
   std::optional<std::uint64_t> first_failure_run_;
   std::optional<double> first_failure_s_;
-  std::exception_ptr error_;
   std::vector<CampaignProgress> timeline_;  // the progress thread's only
 };
 

@@ -22,7 +22,7 @@ std::map<std::string, std::string> definition2_rules() {
 std::map<std::string, std::string> rules_not_applicable(const std::string& planner) {
   // Definition 1 judges every observed merge, whoever drives it; only the built-ins that never
   // use V2V leave Definition 2's rules without anything to judge.
-  if (planner == "rcpp" || planner == "tripfield") return definition2_rules();
+  if (planner == "rcpp" || planner == "tripfield" || planner == "mobil" || planner == "frenet") return definition2_rules();
   return {};
 }
 

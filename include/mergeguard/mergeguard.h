@@ -3,7 +3,8 @@
 // (planner/planner_registry.h), then either call the checker (check/checked_run.h: check_scenario
 // simulates and judges; rules/check.h: check_observed judges an observable trace), the properties
 // (fuzz/properties.h), the scenario generators (fuzz/scenario_gen.h) and the campaign
-// (fuzz/campaign.h) from your own GoogleTest/RapidCheck suite, or hand the whole command line
+// (fuzz/campaign.h) and the league of planners (league/league.h) from your own
+// GoogleTest/RapidCheck suite, or hand the whole command line
 // your argv (cli/cli_main.h). Every other header of the modules is installed too and is included
 // the same way, e.g. "paper/paper_report.h".
 #pragma once
@@ -18,6 +19,7 @@
 #include "fuzz/properties.h"
 #include "fuzz/replay.h"
 #include "fuzz/scenario_gen.h"
+#include "league/league.h"
 #include "planner/planner.h"
 #include "planner/planner_registry.h"
 #include "rules/check.h"

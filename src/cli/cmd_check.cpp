@@ -42,7 +42,7 @@ int run_check(const std::vector<std::string>& args) {
   std::string trace_path;
   CheckOutput output;
   app.add_option("scenario", path, "scenario JSON file")->required();
-  add_planner_options(app, planner, "a registered planner (built in: rcpp, rcpp-coop, tripfield) or 'exec:COMMAND ARGS'");
+  add_planner_options(app, planner, "a registered planner (built in: rcpp, rcpp-coop, tripfield, mobil, frenet) or 'exec:COMMAND ARGS'");
   add_check_output_options(app, output);
   app.add_option("--save-trace", trace_path, "write the run's observable trace (docs/trace_format.md) to this file");
   if (!parse_args(app, args)) return kExitOk;
@@ -64,7 +64,7 @@ int run_check(const std::vector<std::string>& args) {
 }  // namespace
 
 Command check_command() {
-  return {"check", "check SCENARIO.json [--planner rcpp|rcpp-coop|tripfield|exec:CMD] [--planner-timeout S] [--report DIR] [--json] [--save-trace FILE]", run_check};
+  return {"check", "check SCENARIO.json [--planner rcpp|rcpp-coop|tripfield|mobil|frenet|exec:CMD] [--planner-timeout S] [--planner-start-timeout S] [--report DIR] [--json] [--save-trace FILE]", run_check};
 }
 
 }  // namespace mg::cli

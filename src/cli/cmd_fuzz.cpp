@@ -1,16 +1,12 @@
 // mergeguard fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P] [--planner-timeout S]
-//                 [--search random|guided] [--corpus DIR] [--report DIR] [--json]: a property-based fuzzing campaign
+//                 [--planner-start-timeout S] [--search random|guided] [--corpus DIR] [--report DIR] [--json]: a property-based fuzzing campaign
 // (spec §9, §10; docs/fuzzing.md). Exit 0 when no scenario failed a property, 1 when one did,
 // 3 when a signal (SIGINT, SIGTERM, SIGHUP) stopped it early (its report and summary still written).
 // An exec planner's children (one per worker) log their stderr into the report directory, or a
 // temporary one without --report; the summary names the files.
 #include <unistd.h>
 
-#include <atomic>
-#include <filesystem>
-#include <csignal>
 #include <cstdio>
-#include <iterator>
 #include <map>
 #include <iostream>
 #include <string>
@@ -19,8 +15,8 @@
 
 #include "check/checked_run.h"
 #include "cli/command.h"
-#include "cli/fatal_signals.h"
 #include "cli/planner_option.h"
+#include "cli/stop_signals.h"
 #include "core/atomic_file.h"
 #include "core/output_path.h"
 #include "fuzz/campaign.h"
@@ -34,70 +30,6 @@
 
 namespace mg::cli {
 namespace {
-
-std::atomic<bool> g_stop{false};
-std::atomic<int> g_stop_signal{0};
-
-extern "C" void on_stop_signal(int sig) {  // lock-free atomics and kill(2) only: async-signal-safe
-  if (g_stop.load()) end_planners_and_die(sig);  // the second: no more waiting
-  g_stop_signal.store(sig);
-  g_stop.store(true);
-}
-
-// SIGINT (Ctrl-C), SIGTERM (what Kubernetes, Slurm and CI runners send on preemption or
-// time-out) and SIGHUP (a closed terminal) stop the campaign after the runs in flight (shrinking
-// keeps its best so far); a second one kills mergeguard at once, and its planner processes with
-// it (cli/fatal_signals.h). The previous handlers are restored on scope exit.
-class StopSignalGuard {
- public:
-  static constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
-  StopSignalGuard() {
-    g_stop = false;
-    g_stop_signal = 0;
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    for (std::size_t k = 0; k < std::size(kSignals); ++k) sigaction(kSignals[k], &sa, &previous_[k]);
-  }
-  ~StopSignalGuard() {
-    for (std::size_t k = 0; k < std::size(kSignals); ++k) sigaction(kSignals[k], &previous_[k], nullptr);
-  }
-  StopSignalGuard(const StopSignalGuard&) = delete;
-  StopSignalGuard& operator=(const StopSignalGuard&) = delete;
-
- private:
-  struct sigaction previous_[std::size(kSignals)] {};
-};
-
-std::string signal_name(int sig) {
-  switch (sig) {
-    case SIGINT: return "SIGINT";
-    case SIGTERM: return "SIGTERM";
-    case SIGHUP: return "SIGHUP";
-    default: return sig == 0 ? "" : "signal " + std::to_string(sig);
-  }
-}
-
-std::string clock_time(double seconds) {
-  const long s = static_cast<long>(seconds + 0.5);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%02ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
-  return buf;
-}
-
-// One status line on stderr: rewritten in place on a terminal, one line per 10 s in logs.
-std::function<void(const fuzz::CampaignProgress&)> progress_printer(bool tty) {
-  return [tty, last_logged = -1e9](const fuzz::CampaignProgress& p) mutable {
-    if (!tty && p.elapsed_s - last_logged < 10.0) return;
-    last_logged = p.elapsed_s;
-    char line[256];
-    std::snprintf(line, sizeof line, "fuzz: %llu scenarios (%.1f/s), %llu violations, %zu signatures, %s elapsed, %s left",
-                  static_cast<unsigned long long>(p.scenarios), p.elapsed_s > 0 ? p.scenarios / p.elapsed_s : 0.0,
-                  static_cast<unsigned long long>(p.failing_scenarios), p.signatures, clock_time(p.elapsed_s).c_str(),
-                  p.remaining_s ? clock_time(*p.remaining_s).c_str() : "--:--:--");
-    std::cerr << (tty ? "\r" : "") << line << (tty ? "\033[K" : "\n") << std::flush;
-  };
-}
 
 void parse_shard(const std::string& text, fuzz::CampaignOptions& o) {
   int k = -1, n = 0;
@@ -128,18 +60,6 @@ std::map<std::string, std::string> write_liability_reports(const std::string& di
     links[path] = rel + "/report.html";
   }
   return links;
-}
-
-// Where an exec planner's children write their stderr: the report directory, or a fresh
-// temporary directory (named in the summary) when there is none.
-std::string planner_log_dir(const std::string& report_dir) {
-  if (!report_dir.empty()) return report_dir;
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("mergeguard-planner-logs-" + std::to_string(::getpid()));
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw UsageError("cannot create the planner log directory " + dir.string() + ": " + ec.message());
-  return dir.string();
 }
 
 void print_human(const fuzz::CampaignOptions& o, const fuzz::CampaignResult& r) {
@@ -176,7 +96,7 @@ int run_fuzz(const std::vector<std::string>& args) {
   app.add_option("--jobs", o.jobs, "parallel workers (results do not depend on it)");
   app.add_option("--shard", shard, "K/N: run only the indices i with i mod N = K");
   PlannerChoice choice{"rcpp"};
-  add_planner_options(app, choice, "a registered planner (built in: rcpp, rcpp-coop, tripfield) or 'exec:COMMAND ARGS'");
+  add_planner_options(app, choice, "a registered planner (built in: rcpp, rcpp-coop, tripfield, mobil, frenet) or 'exec:COMMAND ARGS'");
   app.add_option("--corpus", o.corpus_dir, "corpus directory (minimal cases are added here, one per new signature)");
   app.add_option("--report", report_dir, "write report.json, report.md, report.html here");
   app.add_flag("--json", json, "print one JSON summary on stdout");
@@ -210,12 +130,12 @@ int run_fuzz(const std::vector<std::string>& args) {
   const std::string log_dir = is_exec_planner(o.planner) ? planner_log_dir(report_dir) : "";
   const PlannerIdentity hello = start_planner(o.planner, choice, log_dir);
   StopSignalGuard guard;
-  o.stop = &g_stop;
-  o.on_progress = progress_printer(::isatty(STDERR_FILENO) != 0);
+  o.stop = StopSignalGuard::stop_flag();
+  o.on_progress = progress_printer("fuzz", ::isatty(STDERR_FILENO) != 0);
   if (!report_dir.empty())  // a killed campaign still leaves a report at most a minute old
     o.on_checkpoint = [&o, &report_dir](const fuzz::CampaignResult& r) { fuzz::write_campaign_report(report_dir, o, r, {}); };
   fuzz::CampaignResult result = fuzz::run_campaign(o, make_check);
-  if (result.interrupted) result.stop_signal = signal_name(g_stop_signal.load());
+  if (result.interrupted) result.stop_signal = StopSignalGuard::stop_signal_name();
   if (::isatty(STDERR_FILENO)) std::cerr << "\n";
   const auto liability_reports = report_dir.empty() ? std::map<std::string, std::string>{} : write_liability_reports(report_dir, result);
   if (is_exec_planner(o.planner))  // after the liability reports: their runs have a log too
@@ -231,7 +151,7 @@ int run_fuzz(const std::vector<std::string>& args) {
 
 Command fuzz_command() {
   return {"fuzz",
-          "fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P|exec:CMD] [--planner-timeout S] [--search random|guided] [--corpus DIR] [--report DIR] [--json]",
+          "fuzz [--time S | --runs N] [--seed S] [--jobs J] [--shard K/N] [--planner P|exec:CMD] [--planner-timeout S] [--planner-start-timeout S] [--search random|guided] [--corpus DIR] [--report DIR] [--json]",
           run_fuzz};
 }
 

@@ -43,7 +43,7 @@ int run_plan(const std::vector<std::string>& args) {
   PlannerChoice choice{"rcpp"};
   bool json = false;
   app.add_option("scenario", path, "scenario JSON file")->required();
-  add_planner_options(app, choice, "a registered planner (built in: rcpp, rcpp-coop, tripfield) or 'exec:COMMAND ARGS'");
+  add_planner_options(app, choice, "a registered planner (built in: rcpp, rcpp-coop, tripfield, mobil, frenet) or 'exec:COMMAND ARGS'");
   app.add_flag("--json", json, "print one JSON document");
   if (!parse_args(app, args)) return kExitOk;
   const Scenario scenario = load_planner_scenario(path);
@@ -76,7 +76,7 @@ int run_plan(const std::vector<std::string>& args) {
 }  // namespace
 
 Command plan_command() {
-  return {"plan", "plan SCENARIO.json [--planner rcpp|rcpp-coop|tripfield|exec:CMD] [--planner-timeout S] [--json]", run_plan};
+  return {"plan", "plan SCENARIO.json [--planner rcpp|rcpp-coop|tripfield|mobil|frenet|exec:CMD] [--planner-timeout S] [--planner-start-timeout S] [--json]", run_plan};
 }
 
 }  // namespace mg::cli

@@ -92,7 +92,7 @@ int run_replay(const std::vector<std::string>& args) {
 }  // namespace
 
 Command replay_command() {
-  return {"replay", "replay [CASE.json | DIR]... [--planner P|exec:CMD] [--planner-timeout S] [--json] [--update]", run_replay};
+  return {"replay", "replay [CASE.json | DIR]... [--planner P|exec:CMD] [--planner-timeout S] [--planner-start-timeout S] [--json] [--update]", run_replay};
 }
 
 }  // namespace mg::cli

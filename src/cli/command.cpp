@@ -9,7 +9,7 @@ namespace mg::cli {
 const std::map<std::string, Command>& commands() {
   static const std::map<std::string, Command> registry = [] {
     std::map<std::string, Command> by_name;
-    for (Command c : {audit_command(), check_command(), check_trace_command(), corpus_command(), fuzz_command(), params_command(), plan_command(), replay_command(),
+    for (Command c : {audit_command(), check_command(), check_trace_command(), corpus_command(), fuzz_command(), league_command(), params_command(), plan_command(), replay_command(),
                       report_command(), reproduce_paper_command(), rss_command()}) {
       std::string name = c.name;
       by_name.emplace(std::move(name), std::move(c));

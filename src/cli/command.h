@@ -15,7 +15,7 @@ namespace mg::cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitViolation = 1;
 inline constexpr int kExitBadInput = 2;
-inline constexpr int kExitInterrupted = 3;  // fuzz stopped by SIGINT, SIGTERM or SIGHUP
+inline constexpr int kExitInterrupted = 3;  // fuzz or league stopped by SIGINT, SIGTERM or SIGHUP
 
 // args excludes the program and subcommand names.
 using CommandFn = std::function<int(const std::vector<std::string>& args)>;
@@ -37,6 +37,7 @@ Command check_command();
 Command check_trace_command();
 Command corpus_command();
 Command fuzz_command();
+Command league_command();
 Command params_command();
 Command plan_command();
 Command replay_command();

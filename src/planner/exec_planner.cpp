@@ -34,6 +34,11 @@ double call_timeout_s() {  // read on every call: without copying the options
   return shared().options.timeout_s;
 }
 
+double start_timeout_s() {
+  const std::lock_guard lock(shared().mutex);
+  return shared().options.start_timeout_s;
+}
+
 std::string seconds_text(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g s", s);
@@ -51,9 +56,9 @@ class ExecSession {
   const std::string& name() const { return name_; }
   const PlannerIdentity& identity() const { return identity_; }
 
-  // Starts the child and exchanges hello; ExecStartError otherwise.
+  // Starts the child and exchanges hello within the start timeout; ExecStartError otherwise.
   void start() {
-    const double timeout_s = call_timeout_s();
+    const double timeout_s = start_timeout_s();
     try {
       child_ = std::make_unique<ChildProcess>(name_.substr(kExecPlannerPrefix.size()), log_path_);
     } catch (const ChildStartError& e) {

@@ -25,6 +25,9 @@ bool is_exec_planner(const std::string& name);
 
 struct ExecOptions {
   double timeout_s = 1.0;  // per call: the reply must arrive within it (--planner-timeout)
+  // hello, at each start of a child: a planner may load a model or a runtime first, which a call
+  // never waits for (--planner-start-timeout)
+  double start_timeout_s = 30.0;
   // Children started by make_exec_planner append their stderr to <log_dir>/planner-worker-<k>.log
   // (k = 0, 1, ... in the order threads start one); empty: their stderr is mergeguard's.
   std::string log_dir;

@@ -121,7 +121,8 @@ class Planner {
 };
 
 // A planner of the registry (planner/planner_registry.h): the built-ins "rcpp" (Definition 1
-// only), "rcpp-coop" (Definition 1 and 2), "tripfield" (baseline), then any registered by the
+// only), "rcpp-coop" (Definition 1 and 2), "tripfield" (the paper's baseline), "mobil" and "frenet"
+// (classic baselines, docs/baselines.md), then any registered by the
 // program, or an exec planner for "exec:COMMAND" (planner/exec_planner.h). Returns nullptr for an
 // unknown name. planner_names() lists the registered ones in registration order.
 std::unique_ptr<Planner> make_planner(const std::string& name);

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "planner/exec_planner.h"
+#include "planner/frenet_planner.h"
+#include "planner/mobil_planner.h"
 #include "planner/rcpp_planner.h"
 #include "planner/tripfield_planner.h"
 
@@ -42,6 +44,8 @@ std::vector<Entry> built_in_entries() {
   add(entries, "rcpp", [] { return std::make_unique<RcppPlanner>(false); });
   add(entries, "rcpp-coop", [] { return std::make_unique<RcppPlanner>(true); });
   add(entries, "tripfield", [] { return std::make_unique<TripFieldPlanner>(); });
+  add(entries, "mobil", [] { return std::make_unique<MobilPlanner>(); });
+  add(entries, "frenet", [] { return std::make_unique<FrenetPlanner>(); });
   return entries;
 }
 

@@ -1,10 +1,11 @@
 // The open planner registry: make_planner and planner_names (planner/planner.h) look
 // planners up here, so a planner registered by a program linking mergeguard is accepted wherever
 // a built-in one is (`check`, `fuzz`, `replay`, `plan`, the campaign and property functions).
-// The built-ins "rcpp", "rcpp-coop" and "tripfield" are registered first, in that order, the same
-// way. Register before starting a campaign: lookups may run on many threads, registration is
-// meant for start-up (both are safe to call concurrently, under one mutex). Names "exec:COMMAND"
-// are not registered: make_planner makes an exec planner for them (planner/exec_planner.h).
+// The built-ins "rcpp", "rcpp-coop", "tripfield" and the baselines "mobil" and "frenet"
+// (docs/baselines.md) are registered first, in that order, the same way. Register before
+// starting a campaign: lookups may run on many threads, registration is meant for start-up (both
+// are safe to call concurrently, under one mutex). Names "exec:COMMAND" are not registered:
+// make_planner makes an exec planner for them (planner/exec_planner.h).
 #pragma once
 
 #include <functional>

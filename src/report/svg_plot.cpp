@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <sstream>
@@ -72,6 +73,100 @@ std::vector<Series> shown_series(const Plot& p, Range xr) {
   return out;
 }
 
+// The series, clipped to the axes; px and py map data to pixels.
+void draw_series(std::ostringstream& out, const Plot& p, Range xr, int ox, int oy, const std::function<double(double)>& px,
+                 const std::function<double(double)>& py) {
+  for (const Series& s : shown_series(p, xr)) {
+    std::string d;
+    bool pen_down = false;
+    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
+        pen_down = false;
+        continue;
+      }
+      d += (pen_down ? " L" : " M") + num(px(s.x[i])) + " " + num(py(s.y[i]));
+      pen_down = true;
+    }
+    if (d.empty()) continue;
+    out << "<path clip-path=\"url(#clip" << ox << "_" << oy << ")\" d=\"" << d << "\" fill=\"none\" stroke=\""
+        << s.colour << "\" stroke-width=\"" << num(s.width_px) << "\"";
+    if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
+    out << "/>\n";
+    if (s.marker_radius_px <= 0.0) continue;
+    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+        out << "<circle clip-path=\"url(#clip" << ox << "_" << oy << ")\" cx=\"" << num(px(s.x[i])) << "\" cy=\""
+            << num(py(s.y[i])) << "\" r=\"" << num(s.marker_radius_px) << "\" fill=\"" << s.colour << "\"/>\n";
+  }
+}
+
+// The notes beside their points. A note that would overlap an earlier one or a marker moves up or
+// down by a line (the nearest free place of a few), so that close points keep legible names.
+void draw_notes(std::ostringstream& out, const Plot& p, const std::function<double(double)>& px,
+                const std::function<double(double)>& py) {
+  constexpr double kCharWidthPx = 7.0, kLineHeightPx = 14.0;  // 12 px sans-serif
+  struct Box {
+    double x0, y0, x1, y1;
+    bool meets(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+  };
+  std::vector<Box> taken;
+  for (const Series& s : p.series)
+    if (s.marker_radius_px > 0.0)
+      for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
+        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
+          const double r = s.marker_radius_px;
+          taken.push_back({px(s.x[i]) - r, py(s.y[i]) - r, px(s.x[i]) + r, py(s.y[i]) + r});
+        }
+  for (const PointNote& n : p.notes) {
+    if (!std::isfinite(n.x) || !std::isfinite(n.y)) continue;
+    const double x = px(n.x) + 9, width = kCharWidthPx * static_cast<double>(n.text.size());
+    double y = py(n.y) + 4;  // the baseline
+    for (const double shift : {0.0, -1.0, 1.0, -2.0, 2.0, -3.0, 3.0}) {
+      const double candidate = py(n.y) + 4 + shift * kLineHeightPx;
+      const Box box{x, candidate - 10, x + width, candidate + 2};
+      if (std::none_of(taken.begin(), taken.end(), [&](const Box& b) { return b.meets(box); })) {
+        y = candidate;
+        break;
+      }
+    }
+    taken.push_back({x, y - 10, x + width, y + 2});
+    out << "<text x=\"" << num(x) << "\" y=\"" << num(y) << "\" font-size=\"12\" fill=\"" << n.colour << "\">"
+        << xml_escape(n.text) << "</text>\n";
+  }
+}
+
+// The legend inside the axes [x0, x1] x [y1, y0] (y0 the bottom edge), on a white box so that it
+// stays readable over the data.
+void draw_legend(std::ostringstream& out, const Plot& p, double x0, double x1, double y0, double y1) {
+  int entries = 0;
+  for (const Series& s : p.series) entries += s.label.empty() ? 0 : 1;
+  if (entries > 0) {
+    constexpr double kBoxW = 200.0, kRowH = 16.0;
+    const double box_h = 8.0 + kRowH * entries;
+    const bool right = p.legend == LegendCorner::kTopRight || p.legend == LegendCorner::kBottomRight;
+    const bool top = p.legend == LegendCorner::kTopRight || p.legend == LegendCorner::kTopLeft;
+    const double bx = right ? x1 - kBoxW - 6 : x0 + 6, by = top ? y1 + 6 : y0 - box_h - 6;
+    out << "<rect x=\"" << num(bx) << "\" y=\"" << num(by) << "\" width=\"" << num(kBoxW) << "\" height=\""
+        << num(box_h) << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#bbb\"/>\n";
+    int row = 0;
+    for (const Series& s : p.series) {
+      if (s.label.empty()) continue;
+      const double ly = by + 12 + kRowH * row++, lx = bx + 6;
+      if (s.marker_radius_px > 0.0) {
+        out << "<circle cx=\"" << num(lx + 14) << "\" cy=\"" << num(ly) << "\" r=\"" << num(s.marker_radius_px)
+            << "\" fill=\"" << s.colour << "\"/>\n";
+      } else {
+        out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 28) << "\" y2=\"" << num(ly)
+            << "\" stroke=\"" << s.colour << "\" stroke-width=\"" << num(s.width_px + 0.4) << "\"";
+        if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
+        out << "/>\n";
+      }
+      out << "<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">" << xml_escape(s.label)
+          << "</text>\n";
+    }
+  }
+}
+
 // Draws one plot into `out` with its top-left corner at (ox, oy).
 void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
   const Range xr = p.x_range.value_or(data_range(p, true));
@@ -120,46 +215,9 @@ void draw(std::ostringstream& out, const Plot& p, int ox, int oy) {
       << xml_escape(p.x_label) << "</text>\n";
   out << "<text transform=\"translate(" << ox + 16 << "," << num(0.5 * (y0 + y1))
       << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(p.y_label) << "</text>\n";
-  // Data.
-  for (const Series& s : shown_series(p, xr)) {
-    std::string d;
-    bool pen_down = false;
-    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
-        pen_down = false;
-        continue;
-      }
-      d += (pen_down ? " L" : " M") + num(px(s.x[i])) + " " + num(py(s.y[i]));
-      pen_down = true;
-    }
-    if (d.empty()) continue;
-    out << "<path clip-path=\"url(#clip" << ox << "_" << oy << ")\" d=\"" << d << "\" fill=\"none\" stroke=\""
-        << s.colour << "\" stroke-width=\"" << num(s.width_px) << "\"";
-    if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
-    out << "/>\n";
-  }
-  // Legend inside the axes, on a white box so that it stays readable over the data.
-  int entries = 0;
-  for (const Series& s : p.series) entries += s.label.empty() ? 0 : 1;
-  if (entries > 0) {
-    constexpr double kBoxW = 200.0, kRowH = 16.0;
-    const double box_h = 8.0 + kRowH * entries;
-    const bool right = p.legend == LegendCorner::kTopRight || p.legend == LegendCorner::kBottomRight;
-    const bool top = p.legend == LegendCorner::kTopRight || p.legend == LegendCorner::kTopLeft;
-    const double bx = right ? x1 - kBoxW - 6 : x0 + 6, by = top ? y1 + 6 : y0 - box_h - 6;
-    out << "<rect x=\"" << num(bx) << "\" y=\"" << num(by) << "\" width=\"" << num(kBoxW) << "\" height=\""
-        << num(box_h) << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#bbb\"/>\n";
-    int row = 0;
-    for (const Series& s : p.series) {
-      if (s.label.empty()) continue;
-      const double ly = by + 12 + kRowH * row++, lx = bx + 6;
-      out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 28) << "\" y2=\"" << num(ly)
-          << "\" stroke=\"" << s.colour << "\" stroke-width=\"" << num(s.width_px + 0.4) << "\"";
-      if (!s.dash.empty()) out << " stroke-dasharray=\"" << s.dash << "\"";
-      out << "/>\n<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">" << xml_escape(s.label)
-          << "</text>\n";
-    }
-  }
+  draw_series(out, p, xr, ox, oy, px, py);
+  draw_notes(out, p, px, py);
+  draw_legend(out, p, x0, x1, y0, y1);
   out << "</g>\n";
 }
 

@@ -16,6 +16,9 @@ struct Series {
   std::string colour = "#1f77b4";
   std::string dash;                // SVG stroke-dasharray, e.g. "6 3"; empty = solid
   double width_px = 1.6;
+  // > 0: a filled circle of this radius at every finite point (a scatter plot's points), which
+  // the legend then shows instead of a line.
+  double marker_radius_px = 0.0;
 };
 
 struct Range {
@@ -34,12 +37,22 @@ struct Band {
 
 enum class LegendCorner { kTopRight, kBottomRight, kTopLeft, kBottomLeft };
 
+// A text beside a data point (a scatter plot's names), in the point's colour, starting just right
+// of it, vertically centred on it; a line up or down where it would overlap another note or a
+// marker.
+struct PointNote {
+  double x = 0.0, y = 0.0;
+  std::string text;
+  std::string colour = "#333333";
+};
+
 struct Plot {
   std::string title;
   std::string x_label;             // with unit, e.g. "time t [s]"
   std::string y_label;
   std::vector<Series> series;
   std::vector<Band> bands;
+  std::vector<PointNote> notes;
   std::optional<Range> x_range;    // default: data extent
   std::optional<Range> y_range;    // default: data extent with 5 % padding
   LegendCorner legend = LegendCorner::kTopRight;  // inside the axes, on a white box

@@ -5,12 +5,12 @@
 # listed is forbidden. The data flow these follow is one way:
 #
 #   scenario -> planner -> sim (dynamics, behaviours, channel, trace) -> check (observe, judge)
-#            -> rules (situations, rules, liability) -> report -> audit / paper / fuzz -> cli
+#            -> rules (situations, rules, liability) -> report -> audit / paper / fuzz -> league -> cli
 #
 # rules/ judges an observable trace alone (it knows no planner and no simulator), so that a
 # recording (recording/, audit/) is judged exactly as a simulated run; the simulator simulates
 # and judges nothing.
-set(MG_MODULES core recording planner sim rules check report audit paper fuzz cli)
+set(MG_MODULES core recording planner sim rules check report audit paper fuzz league cli)
 set(MG_ALLOWED_core "")
 set(MG_ALLOWED_recording core)
 set(MG_ALLOWED_planner core)
@@ -21,4 +21,5 @@ set(MG_ALLOWED_report rules core)
 set(MG_ALLOWED_audit report recording rules core)
 set(MG_ALLOWED_paper check report rules sim planner core)
 set(MG_ALLOWED_fuzz check report rules sim planner core)
-set(MG_ALLOWED_cli audit paper fuzz check report recording rules sim planner core)
+set(MG_ALLOWED_league fuzz check report rules sim planner core)
+set(MG_ALLOWED_cli audit paper league fuzz check report recording rules sim planner core)

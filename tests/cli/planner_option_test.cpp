@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -82,12 +83,31 @@ TEST(ExecPlannerCli, APlannerThatCannotStartIsAUsageError) {
   EXPECT_TRUE(marked_processes_gone("c2"));
 }
 
-TEST(ExecPlannerCli, TheTimeoutMustBeSecondsInRange) {
-  for (const char* bad : {"nan", "inf", "0", "-1", "1e9", "x"}) {
-    const auto r = test::run_cli({"check", kScenario, "--planner-timeout", bad});
-    EXPECT_EQ(r.exit_code, 2) << bad;
-    EXPECT_NE(r.err.find("--planner-timeout"), std::string::npos) << r.err;
-  }
+TEST(ExecPlannerCli, TheTimeoutsMustBeSecondsInRange) {
+  for (const std::string option : {"--planner-timeout", "--planner-start-timeout"})
+    for (const char* bad : {"nan", "inf", "0", "-1", "1e9", "x"}) {
+      const auto r = test::run_cli({"check", kScenario, option, bad});
+      EXPECT_EQ(r.exit_code, 2) << option << " " << bad;
+      EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+    }
+}
+
+// Start-up is not a call: a planner that takes 3 s to answer hello (one loading a model) starts
+// with the default options, though a call may take 1 s; one that never answers hello is still a
+// usage error, once the start timeout has passed.
+TEST(ExecPlannerCli, APlannerThatTakesSecondsToStartStartsWithTheDefaultOptions) {
+  const auto r = test::run_cli({"check", kScenario, "--planner", fake("slow-hello", "c7"), "--json"});
+  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("planner"), fake("slow-hello", "c7"));
+  EXPECT_TRUE(marked_processes_gone("c7"));
+}
+
+TEST(ExecPlannerCli, APlannerThatNeverAnswersHelloIsAUsageErrorAfterTheStartTimeout) {
+  const auto r = test::run_cli({"check", kScenario, "--planner", fake("silent-hello", "c8"), "--planner-start-timeout", "0.5"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("did not answer hello within 0.5 s"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;  // one line
+  EXPECT_TRUE(marked_processes_gone("c8"));
 }
 
 TEST(ExecPlannerCli, ACrashIsShrunkIntoACaseThatReplaysThroughTheSameCommand) {

@@ -62,7 +62,7 @@ void PrintTo(const Misbehaviour& m, std::ostream* os) { *os << m.mode; }
 class ExecPlannerFault : public ::testing::TestWithParam<Misbehaviour> {};
 
 TEST_P(ExecPlannerFault, IsAFindingOfItsKindAndLeavesNoProcess) {
-  set_exec_options({0.5, ""});
+  set_exec_options({0.5, 30.0, ""});
   auto planner = make_exec_planner(fake(GetParam().mode));
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -109,6 +109,22 @@ TEST(ExecPlanner, ACommandThatExitsBeforeHelloCannotStart) {
     EXPECT_TRUE(test::group_gone_soon(pid_in(e.what())));
   }
   EXPECT_THROW(start_exec_planner("exec:/nonexistent/planner"), ExecStartError);
+}
+
+// hello has its own timeout: a planner that loads a model for 3 s starts, whatever the per-call
+// timeout; one that never answers fails after the start timeout.
+TEST(ExecPlanner, HelloWaitsForTheStartTimeoutNotTheCallTimeout) {
+  set_exec_options({0.5, 30.0, ""});
+  EXPECT_EQ(start_exec_planner(fake("slow-hello")).name, "fake-slow-hello");
+  set_exec_options({30.0, 0.3, ""});
+  try {
+    start_exec_planner(fake("silent-hello"));
+    FAIL() << "started";
+  } catch (const ExecStartError& e) {
+    EXPECT_NE(std::string(e.what()).find("did not answer hello within 0.3 s"), std::string::npos) << e.what();
+    EXPECT_TRUE(test::group_gone_soon(pid_in(e.what())));
+  }
+  set_exec_options({});
 }
 
 TEST(ExecPlanner, StartReturnsTheHelloAndEndsTheChild) {

@@ -36,9 +36,9 @@ void register_once() {
 
 TEST(PlannerRegistry, BuiltInsComeFirstInTheirOrder) {
   const std::vector<std::string> names = planner_names();
-  ASSERT_GE(names.size(), 3u);
-  EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + 3),
-            (std::vector<std::string>{"rcpp", "rcpp-coop", "tripfield"}));
+  ASSERT_GE(names.size(), 5u);
+  EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + 5),
+            (std::vector<std::string>{"rcpp", "rcpp-coop", "tripfield", "mobil", "frenet"}));
 }
 
 TEST(PlannerRegistry, ARegisteredPlannerIsMadeAndListedLast) {

@@ -35,6 +35,31 @@ TEST(SvgPlot, RendersAxesLabelsLegendAndEscapedText) {
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
 }
 
+TEST(SvgPlot, MarkersDrawAScatterAndTheLegendShowsThem) {
+  Plot p;
+  p.series.push_back({"points", {1, 2, NAN}, {1, 2, 3}, "#2ca02c", "", 1.0, 4.0});
+  const std::string svg = render(p);
+  std::size_t circles = 0;
+  for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+  EXPECT_EQ(circles, 3u);  // two finite points and the legend's marker
+  EXPECT_NE(svg.find("r=\"4.00\" fill=\"#2ca02c\""), std::string::npos);
+  EXPECT_EQ(svg.find("stroke=\"#2ca02c\" stroke-width=\"1.40\""), std::string::npos);  // no legend line for it
+  Plot lines;
+  lines.series.push_back({"line", {1, 2}, {1, 2}, "#000", "", 1.0});
+  EXPECT_EQ(render(lines).find("<circle"), std::string::npos);
+  p.notes.push_back({2, 2, "b & c", "#2ca02c"});
+  EXPECT_NE(render(p).find("fill=\"#2ca02c\">b &amp; c</text>"), std::string::npos);
+  // A second note at the same point moves a line away instead of overlapping the first.
+  p.notes.push_back({2, 2, "d", "#000000"});
+  const std::string two = render(p);
+  auto y_of = [&two](const std::string& text) {
+    const std::size_t end = two.find(">" + text + "</text>");
+    const std::size_t at = two.rfind(" y=\"", end);
+    return std::stod(two.substr(at + 4));
+  };
+  EXPECT_NEAR(std::abs(y_of("d") - y_of("b &amp; c")), 14.0, 1e-9);
+}
+
 TEST(SvgPlot, NonFiniteValuesBreakTheLine) {
   Plot p;
   p.series.push_back({"s", {0, 1, 2, 3}, {0, 1, NAN, 3}, "#000", "", 1.0});

@@ -10,6 +10,8 @@
 //   bad-path   answers observe with a path whose x decreases
 //   stubborn   as echo, but takes 0.3 s per observe and ignores the end of its input (it stays
 //              until killed)
+//   slow-hello as echo, but takes 3 s to answer hello (a planner loading a model at start-up)
+//   silent-hello  never answers hello (it stays until killed)
 #include <signal.h>
 #include <unistd.h>
 
@@ -59,6 +61,8 @@ std::string command_for(const std::string& observe) {
 std::string reply_to(const std::string& mode, const std::string& line) {
   const bool observe = line.find(R"("type":"observe")") != std::string::npos;
   const std::string type = observe ? "observe" : nlohmann::json::parse(line).at("type").get<std::string>();
+  if (type == "hello" && mode == "silent-hello") pause();
+  if (type == "hello" && mode == "slow-hello") sleep(3);
   if (type == "hello") return R"({"type":"hello","name":"fake-)" + mode + R"(","version":"1"})";
   if (type == "reset") return R"({"type":"ready"})";
   if (type == "bye") return "";

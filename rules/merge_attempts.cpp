@@ -126,6 +126,8 @@ std::optional<CoopExchange> accepted_exchange(const ObservedTrace& t, const Rule
   return found;
 }
 
+}  // namespace
+
 // Definition 2 grants the right of way toward the partner; the gap's other vehicle stays
 // Definition 1's (spec §8, review point 15). At the request: for 2.1 (ego ahead of o) the vehicle
 // ahead of o must satisfy ineq. (1.2) over rho_c + rho_m with the ego at its speed; for 2.2 the
@@ -146,6 +148,8 @@ bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const 
   }
   return true;
 }
+
+namespace {
 
 std::string gap_text(const ObservedTrace& t, const GapIndices& g) {
   const auto side = [&](int k) { return k < 1 ? std::string("open") : party_name(t.vehicles[static_cast<std::size_t>(k)].id); };

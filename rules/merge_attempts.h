@@ -74,6 +74,11 @@ struct MergeAttempts {
   std::vector<MergeAttempt> attempts;
 };
 
+// Whether the gap's vehicle other than the partner of an accepted request leaves room for the
+// Definition 2 merge, judged at the request (the vehicle ahead of the partner for 2.1, behind it for
+// 2.2, by Definition 1's inequalities).
+bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x);
+
 MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p, const MergePhases& phases);
 
 }  // namespace mg

@@ -15,6 +15,12 @@ std::optional<MergePhaseEvent> MergePhases::first(MergePhaseKind k, double from_
   return std::nullopt;
 }
 
+double ego_left_edge_y_m(const ObservedTrace& t, const ObservedState& ego) {
+  const VehicleSize& size = t.vehicles[0].size;
+  return ego.y_m + 0.5 * size.width_m * std::abs(std::cos(ego.yaw_rad)) +
+         0.5 * size.length_m * std::abs(std::sin(ego.yaw_rad));
+}
+
 MergePhases observe_merge_phases(const ObservedTrace& t, const RuleParams& p) {
   MergePhases out;
   if (t.steps.empty()) return out;
@@ -26,13 +32,15 @@ MergePhases observe_merge_phases(const ObservedTrace& t, const RuleParams& p) {
     const ObservedState& ego = t.steps[k].vehicles[0];
     const auto emit = [&](MergePhaseKind kind) { out.events.push_back({kind, k, t.steps[k].time_s}); };
     if (started) furthest_y = std::max(furthest_y, ego.y_m);
+    const bool over_line = ego_left_edge_y_m(t, ego) > line_y;
     // A start is motion toward the main lane, not an offset alone: an ego placed off its lane
-    // centre, or drifting back to it, has not started merging.
-    if (!started && ego.y_m > side_y + p.merge_start_offset_m && ego.vy_mps > p.lat_speed_hysteresis_mps) {
+    // centre, or drifting back to it, has not started merging. A body over the lane line is in the
+    // main lane whatever its lateral speed.
+    if (!started && ((ego.y_m > side_y + p.merge_start_offset_m && ego.vy_mps > p.lat_speed_hysteresis_mps) || over_line)) {
       started = true;
       furthest_y = ego.y_m;
       emit(MergePhaseKind::kStart);
-    } else if (started && !midpoint &&
+    } else if (started && !midpoint && !over_line &&
                (ego.y_m < side_y + p.merge_abort_offset_m ||
                 (ego.y_m < furthest_y - p.merge_abort_reversal_m && ego.vy_mps < -p.lat_speed_hysteresis_mps))) {
       // Back in the side lane, or turned back toward it by more than the reversal hysteresis

@@ -2,80 +2,201 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
+#include <utility>
 #include <vector>
 
+#include "rules/coop_exchange.h"
 #include "rules/definition1_gap.h"
 
 namespace mg {
 namespace {
 
+// Feasibility is re-evaluated every kProgressEvalS (no planner reacts instantly).
 constexpr double kProgressEvalS = 0.1;
-// At rest. (Braking toward a stop cannot be told from braking toward a merge speed by observation
-// alone, so the grace period counts from the standstill.)
-bool halting(const MonitorContext& ctx, const ObservedState& ego) { return speed_of(ego) < ctx.params.halted_speed_mps; }
+
+// What the ego is doing at a step, as far as progress is concerned.
+enum class Activity {
+  kWaiting,   // centre in the side lane, no merge under way: the clock runs while a merge is offered
+  kPaused,    // in an attempt that has not reached into the main lane, moving toward it
+  kMerging,   // in an attempt whose body reached into the main lane, or its centre past the lane line
+};
+
+// An attempt is a merge once the ego's body reaches into the main lane (its entry): from its start
+// to its end, the ego is merging, and an offer it lets pass after that begins a new run. Before
+// the entry, and in an attempt that never enters, the clock pauses while the ego moves toward the
+// main lane (v_Y > lat_speed_hysteresis_mps) and runs otherwise: a planner that aborts and tries
+// again loses no credit for its outward motion, one that drifts out and back, or stalls off its
+// lane centre, keeps the clock running on the way back and while it stalls. The unbroken lateral
+// approach that led into a start (v_Y > 0, however slow: a long sigmoid leaves its lane centre
+// gently) pauses the clock too: the merge began there.
+std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, const MergeAttempts& attempts) {
+  std::vector<Activity> out(t.steps.size(), Activity::kWaiting);
+  const double line_y = -0.5 * t.road.lane_width_m;
+  for (const MergeAttempt& a : attempts.attempts) {
+    for (std::size_t i = a.start_step; i > 0 && ego_of(t.steps[i - 1]).vy_mps > 0.0; --i)
+      if (out[i - 1] == Activity::kWaiting) out[i - 1] = Activity::kPaused;
+    const std::size_t end = a.end_time_s ? step_at(t, *a.end_time_s) : t.steps.size() - 1;
+    for (std::size_t i = a.start_step; i <= end && i < out.size(); ++i) {
+      if (a.entry_step) out[i] = Activity::kMerging;
+      else if (ego_of(t.steps[i]).vy_mps > p.lat_speed_hysteresis_mps) out[i] = Activity::kPaused;
+    }
+  }
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (!(ego_of(t.steps[i]).y_m < line_y)) out[i] = Activity::kMerging;
+  return out;
+}
+
+// A Definition 2 acceptance in force: delivered to the ego within [t_r, t_r + rho_c] (a later one
+// grants nothing, Def. 2.3), from [delivery, t_r + rho_c + rho_m] (the cooperation's span,
+// def2_1b_responder's window), and only when the gap's other vehicle leaves room for it
+// (other_gap_vehicle_clear, as for the right of way).
+struct Acceptance {
+  int partner_id = 0;
+  double from_s = 0.0, to_s = 0.0;
+};
+std::vector<Acceptance> acceptances(const ObservedTrace& t, const RuleParams& p) {
+  std::vector<Acceptance> out;
+  for (const CoopExchange& x : coop_exchanges(t)) {
+    const double d = x.accept_delivered_time_s;
+    if (d < 0.0 || d > x.request_time_s + p.comm_threshold_s + kTieS) continue;
+    if (!other_gap_vehicle_clear(t, p, x)) continue;
+    out.push_back({x.request->to_id, d, x.request_time_s + p.comm_threshold_s + p.merge_duration_s});
+  }
+  return out;
+}
+
+// What is offered to the ego at one evaluation.
+struct Offer {
+  std::vector<FeasibleMerge> gaps;
+  int partner_id = -1;  // an acceptance in force, or -1
+  bool any() const { return !gaps.empty() || partner_id >= 0; }
+};
+
+Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepted, std::size_t i) {
+  Offer o;
+  o.gaps = def1_gaps_feasible(ctx.trace, ctx.params, i);
+  const double now = ctx.trace.steps[i].time_s;
+  for (const Acceptance& a : accepted)
+    if (now >= a.from_s - kTieS && now <= a.to_s + kTieS) o.partner_id = a.partner_id;
+  return o;
+}
+
+std::string side_text(int id) { return id < 0 ? std::string("open") : std::to_string(id); }
+
+// What the ego let pass over the whole trace: the distinct feasible gaps (by their vehicles) it did
+// not enter, the accepted requests it did not use, and the time a merge was offered and unused.
+struct Tally {
+  std::set<std::pair<int, int>> gaps;
+  std::set<int> partners;
+  double unused_s = 0.0;
+  double longest_s = 0.0;
+};
+
+void note(Tally& tally, const Offer& o) {
+  for (const FeasibleMerge& g : o.gaps) tally.gaps.insert({g.follower_id, g.leader_id});
+  if (o.partner_id >= 0) tally.partners.insert(o.partner_id);
+}
+
+// Gaps the ego entered and partners it merged with were used, not let pass.
+void remove_used(const ObservedTrace& t, const MergeAttempts& attempts, Tally& tally) {
+  const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
+  for (const MergeAttempt& a : attempts.attempts) {
+    if (!a.entry_step) continue;
+    tally.gaps.erase({id(a.entered_gap.follower), id(a.entered_gap.leader)});
+    if (a.exchange && a.basis == RowBasis::kDef2) tally.partners.erase(a.exchange->request->to_id);
+  }
+}
+
+std::string violation_text(double unused_s, double from_s, const ObservedStep& st, const Offer& o) {
+  std::ostringstream os;
+  os << "ego in the side lane let the right of way pass for " << unused_s << " s from t = " << from_s
+     << " s (at t = " << st.time_s << " s, at " << ego_of(st).vx_mps << " m/s: ";
+  if (!o.gaps.empty()) {
+    const FeasibleMerge& g = o.gaps.front();
+    os << "Def. 1 gap (follower " << side_text(g.follower_id) << ", leader " << side_text(g.leader_id)
+       << ") feasible, rho = " << g.merge_duration_s << " s, v_e* >= " << g.ve_star_mps << " m/s";
+    if (o.gaps.size() > 1) os << ", and " << o.gaps.size() - 1 << " more";
+  }
+  if (o.partner_id >= 0) os << (o.gaps.empty() ? "" : "; ") << "vehicle " << o.partner_id << "'s acceptance in force";
+  os << ")";
+  return os.str();
+}
 
 }  // namespace
 
-std::optional<FeasibleMerge> def1_gap_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step,
-                                               double margin_m, double leader_braking_mps2) {
+std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step) {
   const auto& v = t.steps[step].vehicles;
-  const double rho = p.merge_duration_s;
+  const double rho = p.merge_duration_s, margin = p.progress_gap_margin_m;
   const Limits& ego = t.vehicles[0].limits;
   const double front_x_m = v[0].x_m + 0.5 * t.vehicles[0].size.length_m;
-  if (t.road.side_lane_end_x_m - front_x_m < p.progress_min_room_m) return std::nullopt;
+  const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
+  std::vector<FeasibleMerge> out;
   for (const GapIndices& gap : lane_gaps(t, step)) {
-    if (gap.leader > 0 && v[static_cast<std::size_t>(gap.leader)].accel_mps2 < -leader_braking_mps2) continue;
-    Def1Interval in = def1_interval(t, step, gap, rho, margin_m);
+    if (gap.leader > 0 && v[static_cast<std::size_t>(gap.leader)].accel_mps2 < -p.progress_leader_braking_mps2) continue;
+    Def1Interval in = def1_interval(t, step, gap, rho, margin);
     in.ve_lo_mps = std::max(in.ve_lo_mps, p.progress_min_merge_speed_mps);
     if (!in.feasible()) continue;
+    // The slowest v_e* reaches the midpoint soonest (side_lane_end: the front must not pass the
+    // side lane's end while the centre is in the side lane).
     const double to_mid_m = speed_change_distance_m(std::max(v[0].vx_mps, 0.0), in.ve_lo_mps, ego.accel_max_mps2,
                                                     ego.brake_min_mps2, 0.5 * rho);
-    if (v[0].x_m + to_mid_m + 0.5 * t.vehicles[0].size.length_m > t.road.side_lane_end_x_m - margin_m) continue;
-    const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
-    return FeasibleMerge{id(gap.follower), id(gap.leader), rho, in.ve_lo_mps};
+    if (front_x_m + to_mid_m > t.road.side_lane_end_x_m - margin) continue;
+    out.push_back({id(gap.follower), id(gap.leader), rho, in.ve_lo_mps});
   }
-  return std::nullopt;
+  return out;
 }
 
 MonitorOutput monitor_progress(const MonitorContext& ctx) {
-  const ObservedTrace& s = ctx.trace;
-  const auto& steps = ctx.trace.steps;
-  MarginAccumulator acc("progress", steps.size());
+  const ObservedTrace& t = ctx.trace;
+  MarginAccumulator acc("progress", t.steps.size());
   const double grace = ctx.params.progress_grace_s;
-  double run_start = -1.0;
-  double last_eval = -1.0;
-  std::optional<FeasibleMerge> feasible;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const ObservedStep& st = steps[i];
-    if (!halting(ctx, ego_of(st)) || ego_of(st).y_m >= -s.road.lane_width_m / 2.0) {
-      run_start = -1.0;
-      last_eval = -1.0;
+  const std::vector<Activity> doing = activities(t, ctx.params, ctx.attempts);
+  const std::vector<Acceptance> accepted = acceptances(t, ctx.params);
+  Tally tally;
+  double run_start_s = -1.0, unused_s = 0.0, last_eval_s = -1.0;
+  Offer offer;
+  for (std::size_t i = 0; i < t.steps.size(); ++i) {
+    const ObservedStep& st = t.steps[i];
+    if (doing[i] == Activity::kMerging) {
+      run_start_s = last_eval_s = -1.0;
       continue;
     }
-    // Feasibility is re-evaluated every kProgressEvalS (no planner reacts instantly).
-    if (last_eval < 0.0 || st.time_s - last_eval >= kProgressEvalS - 1e-9) {
-      feasible = def1_gap_feasible(s, ctx.params, i, ctx.params.progress_gap_margin_m,
-                                   ctx.params.progress_leader_braking_mps2);
-      last_eval = st.time_s;
+    if (last_eval_s < 0.0 || st.time_s - last_eval_s >= kProgressEvalS - kTieS) {
+      offer = offer_at(ctx, accepted, i);
+      last_eval_s = st.time_s;
     }
-    if (!feasible) {
-      run_start = -1.0;
+    // Nothing offered, or busy with the RSS proper response: waiting is what the ego should do.
+    if (!offer.any() || ego_rear_in_rss_danger(ctx, i)) {
+      run_start_s = -1.0;
       acc.record(i, st.time_s, grace, kEgoId, grace, 0.0);
       continue;
     }
-    if (run_start < 0.0) run_start = st.time_s;
-    const double needless = st.time_s - run_start;
-    if (acc.record(i, st.time_s, grace - needless, kEgoId, grace, needless)) {
-      std::ostringstream os;
-      const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
-      os << "ego halted in the side lane for " << needless << " s from t = " << run_start
-         << " s while a Def. 1 gap was feasible (at t = " << st.time_s << " s: gap (follower " << id(feasible->follower_id)
-         << ", leader " << id(feasible->leader_id) << "), rho = " << feasible->merge_duration_s
-         << " s, v_e* = " << feasible->ve_star_mps << " m/s)";
-      acc.set_detail(os.str());
+    if (run_start_s < 0.0) {
+      run_start_s = st.time_s;
+      unused_s = 0.0;
+    } else if (doing[i] == Activity::kWaiting) {
+      const double dt = st.time_s - t.steps[i - 1].time_s;
+      unused_s += dt;
+      tally.unused_s += dt;
     }
+    tally.longest_s = std::max(tally.longest_s, unused_s);
+    note(tally, offer);
+    if (acc.record(i, st.time_s, grace - unused_s, kEgoId, grace, unused_s))
+      acc.set_detail(violation_text(unused_s, run_start_s, st, offer));
   }
+  remove_used(t, ctx.attempts, tally);
+  if (!std::isfinite(acc.min_margin())) return acc.finish();  // never waiting in the side lane
+  std::ostringstream os;
+  os << "let " << tally.gaps.size() << " feasible Def. 1 gap(s) and " << tally.partners.size()
+     << " Def. 2 acceptance(s) pass; a merge was offered and unused for " << tally.unused_s << " s in all, at most "
+     << tally.longest_s << " s at a stretch (grace " << grace << " s)";
+  acc.append_detail(os.str());
+  acc.add_measure("feasible_gaps_let_pass", static_cast<double>(tally.gaps.size()));
+  acc.add_measure("acceptances_let_pass", static_cast<double>(tally.partners.size()));
+  acc.add_measure("offered_unused_s", tally.unused_s);
+  acc.add_measure("longest_unused_s", tally.longest_s);
   return acc.finish();
 }
 

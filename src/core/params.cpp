@@ -11,35 +11,34 @@ RuleParams read_rules(const ObjectReader& r) {
                "accel_tolerance_mps2", "speed_tolerance_mps", "yield_speed_tolerance_mps", "halted_speed_mps",
                "road_edge_tolerance_m", "lat_speed_hysteresis_mps", "max_lat_speed_sign_changes_per_merge",
                "sideslip_max_rad", "sideslip_min_speed_mps", "progress_grace_s", "progress_gap_margin_m",
-               "progress_leader_braking_mps2", "progress_min_merge_speed_mps", "progress_min_room_m"});
+               "progress_leader_braking_mps2", "progress_min_merge_speed_mps"});
   RuleParams p;
   p.merge_duration_s = r.number_or("merge_duration_s", p.merge_duration_s, 0.5, 20.0);
   p.comm_threshold_s = r.number_or("comm_threshold_s", p.comm_threshold_s, 0.05, 10.0);
-  p.merge_start_offset_m = r.number_or("merge_start_offset_m", p.merge_start_offset_m, 0.01, 2.0);
+  p.merge_start_offset_m = r.number_or("merge_start_offset_m", p.merge_start_offset_m, 0.01, 0.5);
   p.merge_abort_offset_m = r.number_or("merge_abort_offset_m", p.merge_abort_offset_m, 0.0, p.merge_start_offset_m);
   if (p.merge_abort_offset_m >= p.merge_start_offset_m)
     r.fail("merge_abort_offset_m", "must be below merge_start_offset_m (the hysteresis)");
-  p.merge_abort_reversal_m = r.number_or("merge_abort_reversal_m", p.merge_abort_reversal_m, 0.0, 1.0);
-  p.merge_complete_offset_m = r.positive_or("merge_complete_offset_m", p.merge_complete_offset_m, 2.0);
-  p.merge_complete_yaw_rad = r.positive_or("merge_complete_yaw_rad", p.merge_complete_yaw_rad, 0.5);
-  p.merge_decision_window_s = r.number_or("merge_decision_window_s", p.merge_decision_window_s, 0.0, 20.0);
-  p.accel_tolerance_mps2 = r.number_or("accel_tolerance_mps2", p.accel_tolerance_mps2, 0.0, 2.0);
-  p.speed_tolerance_mps = r.number_or("speed_tolerance_mps", p.speed_tolerance_mps, 0.0, 5.0);
-  p.yield_speed_tolerance_mps = r.number_or("yield_speed_tolerance_mps", p.yield_speed_tolerance_mps, 0.0, 5.0);
-  p.halted_speed_mps = r.number_or("halted_speed_mps", p.halted_speed_mps, 0.0, 1.0);
-  p.road_edge_tolerance_m = r.number_or("road_edge_tolerance_m", p.road_edge_tolerance_m, 0.0, 1.0);
-  p.lat_speed_hysteresis_mps = r.number_or("lat_speed_hysteresis_mps", p.lat_speed_hysteresis_mps, 0.0, 2.0);
+  p.merge_abort_reversal_m = r.number_or("merge_abort_reversal_m", p.merge_abort_reversal_m, 0.0, 0.3);
+  p.merge_complete_offset_m = r.positive_or("merge_complete_offset_m", p.merge_complete_offset_m, 0.5);
+  p.merge_complete_yaw_rad = r.positive_or("merge_complete_yaw_rad", p.merge_complete_yaw_rad, 0.1);
+  p.merge_decision_window_s = r.number_or("merge_decision_window_s", p.merge_decision_window_s, 0.0, 8.0);
+  p.accel_tolerance_mps2 = r.number_or("accel_tolerance_mps2", p.accel_tolerance_mps2, 0.0, 0.2);
+  p.speed_tolerance_mps = r.number_or("speed_tolerance_mps", p.speed_tolerance_mps, 0.0, 0.5);
+  p.yield_speed_tolerance_mps = r.number_or("yield_speed_tolerance_mps", p.yield_speed_tolerance_mps, 0.0, 1.0);
+  p.halted_speed_mps = r.number_or("halted_speed_mps", p.halted_speed_mps, 0.0, 0.2);
+  p.road_edge_tolerance_m = r.number_or("road_edge_tolerance_m", p.road_edge_tolerance_m, 0.0, 0.2);
+  p.lat_speed_hysteresis_mps = r.number_or("lat_speed_hysteresis_mps", p.lat_speed_hysteresis_mps, 0.0, 0.3);
   p.max_lat_speed_sign_changes_per_merge = static_cast<int>(
-      r.integer_or("max_lat_speed_sign_changes_per_merge", p.max_lat_speed_sign_changes_per_merge, 0, 100));
-  p.sideslip_max_rad = r.positive_or("sideslip_max_rad", p.sideslip_max_rad, 1.0);
-  p.sideslip_min_speed_mps = r.number_or("sideslip_min_speed_mps", p.sideslip_min_speed_mps, 0.0, 100.0);
-  p.progress_grace_s = r.number_or("progress_grace_s", p.progress_grace_s, 0.0, 600.0);
-  p.progress_gap_margin_m = r.number_or("progress_gap_margin_m", p.progress_gap_margin_m, 0.0, 100.0);
+      r.integer_or("max_lat_speed_sign_changes_per_merge", p.max_lat_speed_sign_changes_per_merge, 0, 4));
+  p.sideslip_max_rad = r.positive_or("sideslip_max_rad", p.sideslip_max_rad, 0.2);
+  p.sideslip_min_speed_mps = r.number_or("sideslip_min_speed_mps", p.sideslip_min_speed_mps, 0.0, 5.0);
+  p.progress_grace_s = r.number_or("progress_grace_s", p.progress_grace_s, 0.0, 10.0);
+  p.progress_gap_margin_m = r.number_or("progress_gap_margin_m", p.progress_gap_margin_m, 0.0, 20.0);
   p.progress_leader_braking_mps2 =
       r.number_or("progress_leader_braking_mps2", p.progress_leader_braking_mps2, 0.0, 15.0);
   p.progress_min_merge_speed_mps =
-      r.number_or("progress_min_merge_speed_mps", p.progress_min_merge_speed_mps, 0.0, 50.0);
-  p.progress_min_room_m = r.number_or("progress_min_room_m", p.progress_min_room_m, 0.0, 1000.0);
+      r.number_or("progress_min_merge_speed_mps", p.progress_min_merge_speed_mps, 0.0, 10.0);
   return p;
 }
 
@@ -134,8 +133,7 @@ nlohmann::json rule_params_to_json(const RuleParams& p) {
           {"progress_grace_s", p.progress_grace_s},
           {"progress_gap_margin_m", p.progress_gap_margin_m},
           {"progress_leader_braking_mps2", p.progress_leader_braking_mps2},
-          {"progress_min_merge_speed_mps", p.progress_min_merge_speed_mps},
-          {"progress_min_room_m", p.progress_min_room_m}};
+          {"progress_min_merge_speed_mps", p.progress_min_merge_speed_mps}};
 }
 
 nlohmann::json params_to_json(const Params& p) {

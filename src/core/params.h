@@ -38,7 +38,7 @@ struct PlannerParams {
   bool operator==(const PlannerParams&) const = default;
 };
 
-// The rule monitors' own parameters (issue #15): the durations Definitions 1 and 2 are judged
+// The rule monitors' own parameters: the durations Definitions 1 and 2 are judged
 // with, how a merge is recognised in the observed motion, and the tolerances. A planner may use
 // other values (PlannerParams) and is still judged by these (docs/scenario_format.md, docs/spec.md).
 struct RuleParams {
@@ -48,33 +48,32 @@ struct RuleParams {
   // than merge_start_offset_m; back within merge_abort_offset_m (before the lane line) it has been
   // aborted; within merge_complete_offset_m of the main-lane centre, heading within
   // merge_complete_yaw_rad, it is complete (the simulator's merge events use the same values).
-  double merge_start_offset_m = 0.1;    // [0.01, 2]
+  double merge_start_offset_m = 0.1;    // [0.01, 0.5]
   double merge_abort_offset_m = 0.05;   // [0, merge_start_offset_m)
   // ... or, before the line, once it has turned back toward the side lane by more than this from
-  // the furthest Y of the attempt (smaller reversals are path-tracking ripple), [0, 1]
+  // the furthest Y of the attempt (smaller reversals are path-tracking ripple), [0, 0.3]
   double merge_abort_reversal_m = 0.05;
-  double merge_complete_offset_m = 0.2; // (0, 2]
-  double merge_complete_yaw_rad = 0.02; // (0, 0.5]
+  double merge_complete_offset_m = 0.2; // (0, 0.5]
+  double merge_complete_yaw_rad = 0.02; // (0, 0.1]
   // How long before the observed start of a merge its decision may have been taken: the right of
   // way is read at the latest instant of [start - window, entry] at which it held, the window
   // reaching back further to the onset of an unbroken approach (rules/merge_attempts.h).
-  double merge_decision_window_s = 4.0; // [0, 20]
-  double accel_tolerance_mps2 = 0.05;   // measured accelerations beyond a declared limit by less are within it, [0, 2]
-  double speed_tolerance_mps = 0.2;     // speed comparisons, [0, 5]
-  double yield_speed_tolerance_mps = 0.5;  // a responder "at v_o*" within this, [0, 5]
-  double halted_speed_mps = 0.05;       // below this a vehicle is at rest, [0, 1]
-  double road_edge_tolerance_m = 0.05;  // road-edge containment, [0, 1]
-  double lat_speed_hysteresis_mps = 0.1;// lateral motion below this has no direction, [0, 2]
-  int max_lat_speed_sign_changes_per_merge = 2;  // smoothness, [0, 100]
-  double sideslip_max_rad = 0.05;       // (0, 1]
-  double sideslip_min_speed_mps = 2.0;  // sideslip judged above this speed, [0, 100]
-  double progress_grace_s = 3.0;        // progress: how long a feasible gap may go unused, [0, 600]
-  double progress_gap_margin_m = 5.0;   // progress: slack a gap must have to count as feasible, [0, 100]
+  double merge_decision_window_s = 4.0; // [0, 8]
+  double accel_tolerance_mps2 = 0.05;   // measured accelerations beyond a declared limit by less are within it, [0, 0.2]
+  double speed_tolerance_mps = 0.2;     // speed comparisons, [0, 0.5]
+  double yield_speed_tolerance_mps = 0.5;  // a responder "at v_o*" within this, [0, 1]
+  double halted_speed_mps = 0.05;       // below this a vehicle is at rest, [0, 0.2]
+  double road_edge_tolerance_m = 0.05;  // road-edge containment, [0, 0.2]
+  double lat_speed_hysteresis_mps = 0.1;// lateral motion below this has no direction, [0, 0.3]
+  int max_lat_speed_sign_changes_per_merge = 2;  // smoothness, [0, 4]
+  double sideslip_max_rad = 0.05;       // (0, 0.2]
+  double sideslip_min_speed_mps = 2.0;  // sideslip judged above this speed, [0, 5]
+  // progress (rules/progress_monitor.h): how long a merge offered to the ego in the side lane (a
+  // feasible Def. 1 gap, an accepted Def. 2 request) may go unused, [0, 10]
+  double progress_grace_s = 3.0;
+  double progress_gap_margin_m = 5.0;   // progress: slack a gap must have to count as feasible, [0, 20]
   double progress_leader_braking_mps2 = 0.5;  // progress: leader braking that excuses waiting, [0, 15]
-  double progress_min_merge_speed_mps = 5.0;  // progress: the slowest v_e* that counts as a drivable merge, [0, 50]
-  // progress: the side lane left ahead of the ego's front below which the rule claims no merge was
-  // possible (how to merge from rest close to the end is a matter of path design), [0, 1000]
-  double progress_min_room_m = 40.0;
+  double progress_min_merge_speed_mps = 5.0;  // progress: the slowest v_e* that counts as a drivable merge, [0, 10]
   bool operator==(const RuleParams&) const = default;
 };
 

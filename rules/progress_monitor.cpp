@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/rss.h"
 #include "rules/coop_exchange.h"
 #include "rules/definition1_gap.h"
 
@@ -126,24 +127,71 @@ std::string violation_text(double unused_s, double from_s, const ObservedStep& s
 
 }  // namespace
 
+// RCPP §IV, the sideslip rule: a path driven within |beta| <= sideslip_max_rad has curvature at
+// most tan(beta_max) / l_r (kinematic sideslip atan(l_r c)). l_r, the centre of gravity's distance
+// to the rear axle, is not declared; half the ego's length bounds it from above, so the radius
+// taken is the largest any car may need. The shortest X in which a path of that radius moves the
+// centre `lateral_m` to the side from a heading along the road is one arc: sqrt(2 R h - h^2).
+// Definition 1.2 counts on the gap's leader holding its speed. A leader seen braking harder than
+// progress_leader_braking_mps2 does not, nor one closing on the vehicle ahead of it in its lane so
+// fast that, holding its speed over rho, it would come within that vehicle's D_lon (RCPP eq. (1);
+// RSS Def. 1): it must slow down for it, and the gap behind it shrinks as it does.
+bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap,
+                        const GapIndices& ahead, double rho_s) {
+  if (gap.leader < 1) return true;
+  const auto& v = t.steps[step].vehicles;
+  const ObservedState& l = v[static_cast<std::size_t>(gap.leader)];
+  if (l.accel_mps2 < -p.progress_leader_braking_mps2) return false;
+  if (ahead.leader < 1) return true;
+  const ObservedState& a = v[static_cast<std::size_t>(ahead.leader)];
+  const std::size_t li = static_cast<std::size_t>(gap.leader), ai = static_cast<std::size_t>(ahead.leader);
+  const double va = std::max(a.vx_mps, 0.0), vl = std::max(l.vx_mps, 0.0);
+  const double a_end_m = a.x_m + speed_change_distance_m(va, 0.0, 0.0, std::max(-a.accel_mps2, 0.0), rho_s);
+  const double d_lon_m = rss_longitudinal_m({vl, va, t.vehicles[li].size.length_m, t.vehicles[ai].size.length_m,
+                                             t.params.rss.response_time_s, t.vehicles[li].limits.accel_max_mps2,
+                                             t.vehicles[li].limits.brake_min_mps2, t.vehicles[ai].limits.brake_max_mps2});
+  return a_end_m - (l.x_m + vl * rho_s) >= d_lon_m;
+}
+
+double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double lateral_m) {
+  const double radius_m = 0.5 * t.vehicles[0].size.length_m / std::tan(p.sideslip_max_rad);
+  const double h = std::clamp(lateral_m, 0.0, radius_m);
+  return std::sqrt(2.0 * radius_m * h - h * h);
+}
+
 std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step) {
   const auto& v = t.steps[step].vehicles;
-  const double rho = p.merge_duration_s, margin = p.progress_gap_margin_m;
+  const double margin = p.progress_gap_margin_m;
   const Limits& ego = t.vehicles[0].limits;
-  const double front_x_m = v[0].x_m + 0.5 * t.vehicles[0].size.length_m;
+  const double v0 = std::max(v[0].vx_mps, 0.0);
+  // The midpoint (the centre on the lane line) at least the turn-in ahead, and the front still
+  // `margin` short of the side lane's end there (side_lane_end).
+  const double turn_in_m = shortest_turn_in_m(t, p, -0.5 * t.road.lane_width_m - v[0].y_m);
+  const double room_m = t.road.side_lane_end_x_m - margin - (v[0].x_m + 0.5 * t.vehicles[0].size.length_m);
   const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
   std::vector<FeasibleMerge> out;
-  for (const GapIndices& gap : lane_gaps(t, step)) {
-    if (gap.leader > 0 && v[static_cast<std::size_t>(gap.leader)].accel_mps2 < -p.progress_leader_braking_mps2) continue;
-    Def1Interval in = def1_interval(t, step, gap, rho, margin);
-    in.ve_lo_mps = std::max(in.ve_lo_mps, p.progress_min_merge_speed_mps);
-    if (!in.feasible()) continue;
-    // The slowest v_e* reaches the midpoint soonest (side_lane_end: the front must not pass the
-    // side lane's end while the centre is in the side lane).
-    const double to_mid_m = speed_change_distance_m(std::max(v[0].vx_mps, 0.0), in.ve_lo_mps, ego.accel_max_mps2,
-                                                    ego.brake_min_mps2, 0.5 * rho);
-    if (front_x_m + to_mid_m > t.road.side_lane_end_x_m - margin) continue;
-    out.push_back({id(gap.follower), id(gap.leader), rho, in.ve_lo_mps});
+  if (room_m < turn_in_m) return out;
+  const std::vector<GapIndices> gaps = lane_gaps(t, step);
+  for (std::size_t g = 0; g < gaps.size(); ++g) {
+    const GapIndices& gap = gaps[g];
+    const GapIndices ahead = g + 1 < gaps.size() ? gaps[g + 1] : GapIndices{};
+    // rho_m, or longer: a merge that observably takes longer holds the right of way on a reading
+    // over its own duration (rules/merge_attempts.h), and from low speed only a longer one
+    // reaches a midpoint the turn-in allows.
+    for (const double rho : {p.merge_duration_s, 1.5 * p.merge_duration_s, 2.0 * p.merge_duration_s}) {
+      if (!leader_holds_speed(t, p, step, gap, ahead, rho)) continue;
+      Def1Interval in = def1_interval(t, step, gap, rho, margin);
+      in.ve_lo_mps = std::max(in.ve_lo_mps, p.progress_min_merge_speed_mps);
+      if (!in.feasible()) continue;
+      // Changing speed from the observed one toward v_e* (the bounded-rate model): the distance to
+      // the midpoint grows with v_e*, so some v_e* of the interval fits iff its ends bracket it.
+      const auto to_mid_m = [&](double ve) {
+        return speed_change_distance_m(v0, ve, ego.accel_max_mps2, ego.brake_min_mps2, 0.5 * rho);
+      };
+      if (to_mid_m(in.ve_hi_mps) < turn_in_m || to_mid_m(in.ve_lo_mps) > room_m) continue;
+      out.push_back({id(gap.follower), id(gap.leader), rho, in.ve_lo_mps});
+      break;
+    }
   }
   return out;
 }

@@ -15,21 +15,26 @@
 namespace mg {
 
 // A gap of the rightmost main lane that admits a Definition 1 merge from the ego's observed state
-// at `step`, judged with the rules' own code (rules/definition1_gap.h): for rho_m, some v_e* in
+// at `step`, judged with the rules' own code (rules/definition1_gap.h): for rho = rho_m (or 1.5 or
+// 2 rho_m: a merge that observably takes longer is read over its own duration), some v_e* in
 // [progress_min_merge_speed_mps, speed limit] satisfies ineq. (1.1) and (1.2) by
 // progress_gap_margin_m under both position models (the bounded-rate one starts from the ego's
 // observed speed and changes it at its declared a_accel^max / a_brake^min, so a v_e* it cannot
-// reach in time does not count), and at the slowest such v_e* the ego's front, changing speed
-// toward it at those rates, is still progress_gap_margin_m short of the side lane's end when its
-// centre reaches the lane line (rho_m / 2 on). A gap whose leader brakes harder than
-// progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader holds its speed).
-// Path shape and comfort are the planner's business, not the rule's.
+// reach in time does not count), and at such a v_e* the ego's centre reaches the lane line
+// (rho / 2 on) no sooner than a path within the sideslip bound can turn in (shortest_turn_in_m)
+// and with its front still progress_gap_margin_m short of the side lane's end. A gap whose leader
+// brakes harder than progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader
+// holds its speed). Path shape and comfort beyond that are the planner's business.
 struct FeasibleMerge {
   int follower_id = -1;  // -1: open gap
   int leader_id = -1;
   double merge_duration_s = 0.0;
   double ve_star_mps = 0.0;
 };
+// The shortest X in which a path within the sideslip bound (sideslip_max_rad; kinematic
+// sideslip, the centre of gravity at most half the length ahead of the rear axle) moves the ego's
+// centre `lateral_m` to the side from a heading along the road.
+double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double lateral_m);
 std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step);
 
 MonitorOutput monitor_progress(const MonitorContext& ctx);

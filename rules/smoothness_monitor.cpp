@@ -9,23 +9,25 @@ namespace mg {
 
 namespace {
 
-// The ego's merge approaches: its first observed start, and each start after it came back within
-// merge_abort_offset_m of its side-lane centre (an abort, which §6 may mandate, and a new attempt).
-// A start after an abort by reversal alone, the ego still out of its lane centre, continues the
-// same approach: a weave toward the main lane earns no new allowance by turning back.
+// The ego's merge approaches: its first observed start, each start after it came back within
+// merge_abort_offset_m of its side-lane centre (an abort, which §6 may mandate, and a new
+// attempt), and at most one start after an abort by reversal alone, the ego still off its lane
+// centre (a planner that aborts and re-merges before it is back at the centre). Further starts
+// after reversals continue the same approach: a weave toward the main lane earns no new allowance
+// by turning back again and again.
 int approaches(const MonitorContext& ctx) {
   const ObservedTrace& t = ctx.trace;
   const double centre_y = t.road.side_lane_y_m() + ctx.params.merge_abort_offset_m;
-  int n = 0;
+  int from_centre = 0, after_reversal = 0;
   std::size_t since = 0;  // the step after which a return to the lane centre counts
   for (const MergePhaseEvent& e : ctx.phases.events) {
     if (e.kind != MergePhaseKind::kStart) continue;
-    bool returned = n == 0;
+    bool returned = from_centre == 0;
     for (std::size_t i = since; i < e.step && !returned; ++i) returned = ego_of(t.steps[i]).y_m < centre_y;
-    if (returned) ++n;
+    (returned ? from_centre : after_reversal) += 1;
     since = e.step;
   }
-  return n;
+  return from_centre + std::min(after_reversal, 1);
 }
 
 }  // namespace

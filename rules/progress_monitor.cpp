@@ -84,6 +84,19 @@ Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepte
   return o;
 }
 
+// A merge into a gap begins with the ego changing speed toward the gap's v_e* (dropping back
+// behind a vehicle alongside, catching up with a gap ahead): braking while faster than every
+// feasible v_e*, or accelerating while slower than every one, deliberately (at least
+// kSpeedChangeMps2, beyond drift), is preparing the merge, and the clock pauses.
+constexpr double kSpeedChangeMps2 = 0.5;
+bool adjusting_speed(const ObservedState& ego, const Offer& o) {
+  for (const FeasibleMerge& g : o.gaps) {
+    if (ego.vx_mps > g.ve_max_mps && ego.accel_mps2 <= -kSpeedChangeMps2) return true;
+    if (ego.vx_mps < g.ve_star_mps && ego.accel_mps2 >= kSpeedChangeMps2) return true;
+  }
+  return false;
+}
+
 std::string side_text(int id) { return id < 0 ? std::string("open") : std::to_string(id); }
 
 // What the ego let pass over the whole trace: the distinct feasible gaps (by their vehicles) it did
@@ -189,7 +202,7 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
         return speed_change_distance_m(v0, ve, ego.accel_max_mps2, ego.brake_min_mps2, 0.5 * rho);
       };
       if (to_mid_m(in.ve_hi_mps) < turn_in_m || to_mid_m(in.ve_lo_mps) > room_m) continue;
-      out.push_back({id(gap.follower), id(gap.leader), rho, in.ve_lo_mps});
+      out.push_back({id(gap.follower), id(gap.leader), rho, in.ve_lo_mps, in.ve_hi_mps});
       break;
     }
   }
@@ -224,7 +237,7 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
     if (run_start_s < 0.0) {
       run_start_s = st.time_s;
       unused_s = 0.0;
-    } else if (doing[i] == Activity::kWaiting) {
+    } else if (doing[i] == Activity::kWaiting && !adjusting_speed(ego_of(st), offer)) {
       const double dt = st.time_s - t.steps[i - 1].time_s;
       unused_s += dt;
       tally.unused_s += dt;

@@ -29,7 +29,8 @@ struct FeasibleMerge {
   int follower_id = -1;  // -1: open gap
   int leader_id = -1;
   double merge_duration_s = 0.0;
-  double ve_star_mps = 0.0;
+  double ve_star_mps = 0.0;  // the slowest feasible v_e*
+  double ve_max_mps = 0.0;   // the fastest
 };
 // The shortest X in which a path within the sideslip bound (sideslip_max_rad; kinematic
 // sideslip, the centre of gravity at most half the length ahead of the rear axle) moves the ego's

@@ -1,5 +1,6 @@
 #include "rules/progress_monitor.h"
 
+#include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -62,11 +63,42 @@ TEST(ProgressMonitor, ABrakingLeaderOffersNoGap) {
   EXPECT_TRUE(out.result.holds);
 }
 
-TEST(ProgressMonitor, MovingEgoIsNotJudged) {
+TEST(ProgressMonitor, AMovingEgoThatNeverMergesIsJudgedToo) {
+  // At 20 m/s on an empty road, every gap is open from t = 0: keeping the side lane lets the
+  // right of way pass, at any speed; the grace ends at t = 3.02 s.
   const Scenario s = base_scenario();
   const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 4.0));
-  EXPECT_TRUE(out.result.holds);
-  EXPECT_FALSE(std::isfinite(out.result.min_margin));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, kEgoId);
+  EXPECT_NEAR(*out.result.first_violation_time_s, 3.02, 1e-9);
+  EXPECT_NE(out.result.detail.find("let the right of way pass"), std::string::npos) << out.result.detail;
+}
+
+TEST(ProgressMonitor, AnEgoMergingWithinTheGraceIsNotJudged) {
+  // The same, but the ego moves toward the main lane at 1 m/s from t = 1 s: its body reaches into
+  // the main lane at t ~ 1.8 s, its merge resets the clock.
+  const Scenario s = base_scenario();
+  const MonitorOutput out = test::run(monitor_progress, s, test::with_lateral_move(constant_accel_trace(s, 6.0), 1.0, 1.0));
+  EXPECT_TRUE(out.result.holds) << out.result.detail;
+}
+
+TEST(ProgressMonitor, AnEgoTooCloseToTheEndToTurnInIsNotJudged) {
+  // At rest 10 m before the side lane's end: a path within the sideslip bound needs more than
+  // that to reach the lane line, so no gap is offered however empty the road.
+  Scenario s = base_scenario();
+  s.ego.x_m = s.road.side_lane_end_x_m - 10.0 - 2.4;
+  s.ego.speed_mps = 0.0;
+  const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 5.0));
+  EXPECT_TRUE(out.result.holds) << out.result.detail;
+}
+
+TEST(ProgressMonitor, TheTurnInIsOneArcWithinTheSideslipBound) {
+  // R = (l / 2) / tan(0.05) = 2.4 / 0.05004 = 47.96 m; 1.75 m to the side: sqrt(2 R h - h^2).
+  const Scenario s = base_scenario();
+  const auto j = test::judge(s, constant_accel_trace(s, 0.1));
+  const double r = 2.4 / std::tan(0.05);
+  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, 1.75), std::sqrt(2.0 * r * 1.75 - 1.75 * 1.75), 1e-9);
+  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, 0.0), 0.0, 1e-12);
 }
 
 }  // namespace

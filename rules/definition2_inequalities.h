@@ -10,7 +10,13 @@
 //    responder. (The ego's side of ineq. (4), braking at b_min for rho_c, is not a position rule:
 //    an ego may drop its request for a Definition 1 merge, and its place toward the responder is
 //    judged at the midpoint by sigmoid_pc_bounds and throughout by the RSS rules; spec §8.)
+//  - def2_request_truthful: every request states the case the observed order at its send has
+//    (ego ahead: X_o <= X_e), and where an acceptance is what the ego merged on, the ego's centre
+//    crossed the lane line no nearer its responder than the request's P_c said, within the
+//    tolerance of PcCheck (rules/merge_attempts.h). Liable: the ego.
 #pragma once
+
+#include <cstddef>
 
 #include "rules/monitor.h"
 
@@ -18,6 +24,21 @@ namespace mg {
 
 MonitorOutput monitor_def2_request_sound(const MonitorContext& ctx);
 MonitorOutput monitor_def2_positions(const MonitorContext& ctx);
+MonitorOutput monitor_def2_request_truthful(const MonitorContext& ctx);
+
+// The farthest a responder that keeps its acceptance of `x` may be from the ego's side at
+// `time_s` (def2_positions' bound, its tolerance included) and the speed that goes with it: for
+// 2.1 the farthest along and the fastest, for 2.2 the least far and the slowest. From its state
+// at the acceptance, linearly to v_o* (2.2: capped by the speed limit) by t_r + rho_c + T, then
+// v_o*; within yield_speed_tolerance_mps of speed and that much travel per second. Valid from the
+// acceptance to the end of the responder's duties, t_r + rho_c + rho_m (t_r: the request it
+// answered); after that nothing bounds it.
+struct ProfileBound {
+  bool valid = false;
+  double x_m = 0.0;
+  double v_mps = 0.0;
+};
+ProfileBound accepted_profile_bound(const MonitorContext& ctx, const CoopExchange& x, std::size_t k, double time_s);
 
 // Distance covered in tau_s by a vehicle at v0 that changes speed linearly to v_star by ramp_s
 // (ramp_s <= 0: at v_star at once) and then holds v_star.

@@ -171,6 +171,15 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   return coop_plan(x, *b, pc, choice->kappa_per_m);
 }
 
+// The clause of Definition 2 the order at the request gives: 2.1 for a responder behind the ego
+// (c_e ahead of c_o^i; level counts as behind, as the rules' gap around the ego counts a vehicle
+// level with it as its follower), 2.2 for one ahead. Asking a vehicle behind to speed past, or
+// one ahead to fall back, is neither clause: def2_request_truthful holds the request's case to
+// the order observed at its send.
+CoopCase case_by_order(const WorldSnapshot& w, const MainLaneVehicle& o) {
+  return o.x_m <= w.ego.x_m ? CoopCase::kEgoAhead : CoopCase::kEgoBehind;
+}
+
 }  // namespace
 
 std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<int, double>& retry_after_s) {
@@ -183,13 +192,11 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
     if (obs == w.others.end() || !obs->v2v_capable) continue;
     const auto retry = retry_after_s.find(lane[i].id);
     if (retry != retry_after_s.end() && w.time_s < retry->second) continue;
-    for (const CoopCase k : {CoopCase::kEgoAhead, CoopCase::kEgoBehind}) {
-      double cost = 0.0;
-      auto plan = coop_candidate(w, lane, i, k, &cost);
-      if (plan && cost < best_cost) {
-        best_cost = cost;
-        best = std::move(plan);
-      }
+    double cost = 0.0;
+    auto plan = coop_candidate(w, lane, i, case_by_order(w, lane[i]), &cost);
+    if (plan && cost < best_cost) {
+      best_cost = cost;
+      best = std::move(plan);
     }
   }
   return best;

@@ -3,6 +3,7 @@
 // acceptance delivered within rho_c, none otherwise; read from the ego's motion and the channel.
 #include "rules/merge_attempts.h"
 
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -90,16 +91,36 @@ TEST(MergeAttempts, AnAttemptNotYetInTheLaneIsCreditedForTheGapBehindTheVehicleA
 }
 
 TEST(MergeAttempts, AGapFeasibleAllAlongIsCreditedFromBeforeTheDecisionWindow) {
-  // The same gap, the merge from t = 6 s (start 6.06 s): the window is [2.06, 6.06] s and the
-  // reading is taken in it, but the gap was feasible since t = 0 (no attempt before): a slow merge
-  // decided long before its visible start holds the right of way from its decision on.
-  const Scenario s = gap_scenario(-80.0, 200.0);
+  // A roomier gap (vehicle 1 250 m behind, vehicle 2 600 m ahead), the merge from t = 6 s (start
+  // 6.06 s, midpoint 7 s): the window is [2.06, 6.06] s and the reading is taken in it, but the
+  // gap was feasible since t = 0 (no attempt before) even for a merge whose midpoint comes 7 s
+  // later (rho = 14 s: the follower accelerating until then): a slow merge decided long before
+  // its visible start holds the right of way from its decision on.
+  const Scenario s = gap_scenario(-250.0, 600.0);
   const auto j = test::judge(s, merging_from(s, 6.0, 8.0));
   const MergeAttempt& a = only_attempt(*j);
   EXPECT_EQ(a.basis, RowBasis::kDef1);
   EXPECT_NEAR(a.decision_time_s, 0.0, 1e-9);
+  EXPECT_NEAR(a.def1.rho_s, 14.0, 1e-9);
   EXPECT_TRUE(j->row.ego_holds_at(0.5));
   EXPECT_TRUE(j->row.ego_holds_at(2.1));
+}
+
+// Definition 1.1 lets the follower accelerate until the ego merges. The gap of the first test
+// (follower 80 m behind) read for the merge from 6 s, midpoint 7 s: at t = 0 it held for a merge
+// of rho_m = 4 s, not for the one that happened (rho = 14 s: the follower, at a_accel^max for
+// 7 s, would be 49 m further on): the ego is credited only from when the gap held for a merge
+// with its midpoint at 7 s. (Read at rho_m from t = 0, the follower was predicted to accelerate
+// for 2 s only, and a follower accelerating legally until the midpoint carried the duty the
+// ego's late merge created.)
+TEST(MergeAttempts, AReadingPredictsTheFollowerAcceleratingUntilTheObservedMidpoint) {
+  const Scenario s = gap_scenario(-80.0, 200.0);
+  const auto j = test::judge(s, merging_from(s, 6.0, 8.0));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kDef1);
+  EXPECT_GT(a.decision_time_s, 2.0);
+  EXPECT_NEAR(a.def1.rho_s, 2.0 * (7.0 - a.decision_time_s), 1e-9);
+  EXPECT_FALSE(j->row.ego_holds_at(0.5));
 }
 
 // Vehicle 1 behind the ego accelerates at its a_accel^max (2 m/s2), so ineq. (1.1) toward it
@@ -110,11 +131,12 @@ TEST(MergeAttempts, AGapFeasibleAllAlongIsCreditedFromBeforeTheDecisionWindow) {
 // steps from the entry missed that instant).
 //
 //   t = 0      main lane   [1]---(1.1) holds by 0.01 m---+
-//              side lane                                  [ego] -> starts at 1.08 s
+//              side lane                                  [ego] -> starts at 1.04 s, midpoint 1.98 s
+// (a midpoint within rho_m/2 of t = 0, so that rho_m is the reading's duration there)
 TEST(MergeAttempts, AGapFeasibleOnlyAtTheWindowsFirstInstantGrantsTheRightOfWay) {
   Scenario s = gap_scenario(-80.0);
   const auto trace_of = [](const Scenario& sc) {
-    return test::with_lateral_move(constant_accel_trace(sc, 4.0, {0.0, 2.0}), 1.02, 1.75);
+    return test::with_lateral_move(constant_accel_trace(sc, 4.0, {0.0, 2.0}), 0.98, 1.75);
   };
   const double v_max = s.road.speed_limit_mps;
   const double margin0_m = def1_1_margin_m(test::observed(s, trace_of(s)), 0, 1, v_max, 4.0);
@@ -183,6 +205,61 @@ TEST(MergeAttempts, AnAcceptanceGrantsTheRightOfWayOnlyWhenTheGapsOtherVehicleAl
   const auto refused = test::judge(near, with_exchange(merging_from(near, 1.0), 1, 0.9));
   EXPECT_NE(only_attempt(*refused).basis, RowBasis::kDef2);
   EXPECT_FALSE(refused->row.ego_holds_at(0.95));
+}
+
+// Per vehicle of the gap entered: the partner by its acceptance, the gap's other vehicle by
+// Definition 1 for the pair at the request; the ego holds the right of way toward each as its
+// cover gives it.
+TEST(MergeAttempts, AnAcceptanceCoversItsSenderAndDefinition1TheGapsOtherVehicle) {
+  const Scenario far = gap_scenario(-45.0, 100.0, 22.0), near = gap_scenario(-45.0, 20.0, 22.0);
+  const auto ok = test::judge(far, with_exchange(merging_from(far, 1.0), 1, 0.9));
+  const MergeAttempt& a = only_attempt(*ok);
+  EXPECT_EQ(a.follower.vehicle, 1);
+  EXPECT_EQ(a.follower.by, Cover::kDef2);
+  EXPECT_EQ(a.leader.vehicle, 2);
+  EXPECT_EQ(a.leader.by, Cover::kDef2Pair);
+  EXPECT_GE(a.leader.margin_m, 0.0);
+  // Vehicle 2 20 m ahead: the acceptance still covers vehicle 1, and nothing covers vehicle 2.
+  const auto refused = test::judge(near, with_exchange(merging_from(near, 1.0), 1, 0.9));
+  const MergeAttempt& b = only_attempt(*refused);
+  EXPECT_EQ(b.basis, RowBasis::kNone);
+  EXPECT_EQ(b.follower.by, Cover::kDef2);
+  EXPECT_EQ(b.leader.by, Cover::kNone);
+  EXPECT_LT(b.leader.margin_m, 0.0);
+  EXPECT_TRUE(refused->row.ego_holds_toward_at(1, 1.0));
+  EXPECT_FALSE(refused->row.ego_holds_toward_at(2, 1.0));
+  EXPECT_FALSE(refused->row.ego_holds_at(1.0));
+}
+
+// The request of with_exchange says P_c = 40 m; the ego merging from 0.5 s crosses the lane line
+// at 30 m (1.5 s at 20 m/s), 10 m nearer vehicle 1 than it said, beyond the tolerance of 0.5 m/s
+// x 1 s since the request. The acceptance grants nothing and the attempt is the lie's.
+TEST(MergeAttempts, AnAcceptanceOfARequestWhosePcTheEgoDidNotKeepGrantsNothing) {
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, with_exchange(merging_from(s, 0.5), 1, 0.9));
+  const MergeAttempt& a = only_attempt(*j);
+  ASSERT_TRUE(a.crossing_x_m.has_value());
+  EXPECT_NEAR(*a.crossing_x_m, 30.0, 1e-9);
+  EXPECT_EQ(a.basis, RowBasis::kNone);
+  EXPECT_EQ(a.fault, AcceptanceFault::kUntruthful);
+  ASSERT_EQ(a.pc_checks.size(), 1u);
+  EXPECT_NEAR(a.pc_checks[0].tolerance_m, 0.5, 1e-9);
+  EXPECT_NEAR(a.pc_checks[0].margin_m, 30.0 - (40.0 - 0.5), 1e-9);
+  // Where the ego crosses at 40 m (merging from 1 s), within it: Definition 2.
+  const auto kept = test::judge(s, with_exchange(merging_from(s, 1.0), 1, 0.9));
+  EXPECT_EQ(only_attempt(*kept).basis, RowBasis::kDef2);
+}
+
+// A request without P_c asks for nothing the rules can judge: its acceptance is no acceptance.
+TEST(MergeAttempts, AnAcceptanceOfARequestWithoutANumberGrantsNothing) {
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  Trace t = with_exchange(merging_from(s, 1.0), 1, 0.9);
+  for (TraceEvent& e : t.events) e.message->pc_m = std::numeric_limits<double>::quiet_NaN();
+  const auto j = test::judge(s, t);
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kNone);
+  EXPECT_EQ(a.fault, AcceptanceFault::kNone);  // judged by Definition 1 toward vehicle 1
+  EXPECT_EQ(a.follower.by, Cover::kNone);
 }
 
 TEST(MergeAttempts, AnAcceptanceDeliveredAfterRhoCGrantsNothingAndIsKeptForDef23) {

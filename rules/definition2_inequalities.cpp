@@ -35,8 +35,10 @@ ProfileBound accepted_profile_bound(const MonitorContext& ctx, const CoopExchang
   const double x_profile = at_accept.x_m + ramp_distance_m(v_a, v_star, ramp_s, tau);
   const double v_profile = ramp_s <= 0.0 || tau >= ramp_s ? v_star : v_a + (v_star - v_a) * tau / ramp_s;
   b.valid = true;
-  b.x_m = ahead ? x_profile + tol_mps * tau : x_profile - tol_mps * tau;
-  b.v_mps = ahead ? v_profile + tol_mps : std::max(0.0, v_profile - tol_mps);
+  b.profile_x_m = x_profile;
+  b.profile_v_mps = v_profile;
+  b.bound_x_m = ahead ? x_profile + tol_mps * tau : x_profile - tol_mps * tau;
+  b.bound_v_mps = ahead ? v_profile + tol_mps : std::max(0.0, v_profile - tol_mps);
   return b;
 }
 
@@ -94,7 +96,7 @@ double soundness_2_2_m(const MonitorContext& ctx, const RequestView& r, std::str
 
 // The responder after it accepted: no farther along (2.1: ineq. (3) counts on it being behind
 // P_c - D*_lon) / no less far (2.2: ineq. (4) counts on it being ahead) than its accepted profile
-// allows (accepted_profile_bound).
+// and its tolerance allow (accepted_profile_bound).
 void responder_positions(const MonitorContext& ctx, const CoopExchange& x, MarginAccumulator& acc) {
   const ObservedTrace& s = ctx.trace;
   const int partner = x.request->to_id;
@@ -107,12 +109,12 @@ void responder_positions(const MonitorContext& ctx, const CoopExchange& x, Margi
     const ProfileBound b = accepted_profile_bound(ctx, x, static_cast<std::size_t>(k), s.steps[i].time_s);
     if (!b.valid) continue;
     const double pos = state_of(s.steps[i], static_cast<std::size_t>(k)).x_m;
-    if (acc.record(i, s.steps[i].time_s, ahead ? b.x_m - pos : pos - b.x_m, partner, b.x_m, pos)) {
+    if (acc.record(i, s.steps[i].time_s, ahead ? b.bound_x_m - pos : pos - b.bound_x_m, partner, b.bound_x_m, pos)) {
       std::ostringstream os;
       os << party_name(partner) << " accepted the Def. 2." << (ahead ? "1" : "2") << " request of t = "
          << x.sent_time_s << " s (v_o* = " << x.request->target_speed_mps << " m/s) but was at x = " << pos
          << " m at t = " << s.steps[i].time_s << " s, " << (ahead ? "ahead of" : "behind")
-         << " its accepted profile (x = " << b.x_m << " m with its tolerance): ineq. (" << (ahead ? "3" : "4")
+         << " its accepted profile (x = " << b.bound_x_m << " m with its tolerance): ineq. (" << (ahead ? "3" : "4")
          << ") counted on it";
       acc.set_detail(os.str());
     }

@@ -26,17 +26,20 @@ MonitorOutput monitor_def2_request_sound(const MonitorContext& ctx);
 MonitorOutput monitor_def2_positions(const MonitorContext& ctx);
 MonitorOutput monitor_def2_request_truthful(const MonitorContext& ctx);
 
-// The farthest a responder that keeps its acceptance of `x` may be from the ego's side at
-// `time_s` (def2_positions' bound, its tolerance included) and the speed that goes with it: for
-// 2.1 the farthest along and the fastest, for 2.2 the least far and the slowest. From its state
-// at the acceptance, linearly to v_o* (2.2: capped by the speed limit) by t_r + rho_c + T, then
-// v_o*; within yield_speed_tolerance_mps of speed and that much travel per second. Valid from the
-// acceptance to the end of the responder's duties, t_r + rho_c + rho_m (t_r: the request it
-// answered); after that nothing bounds it.
+// The responder of an accepted request `x` (vehicle k) on the profile it accepted, at `time_s`:
+// from its state at the acceptance linearly to v_o* (2.2: capped by the speed limit) by t_r +
+// rho_c + T (its response time included), then v_o* (t_r: the request it answered). And the
+// farthest from the ego's side a responder keeping its acceptance may be, def2_positions' bound:
+// for 2.1 the farthest along and the fastest, for 2.2 the least far and the slowest, within
+// yield_speed_tolerance_mps of speed and that much travel per second since the acceptance.
+// Valid up to the end of the responder's duties, t_r + rho_c + rho_m; after that nothing bounds
+// it.
 struct ProfileBound {
   bool valid = false;
-  double x_m = 0.0;
-  double v_mps = 0.0;
+  double profile_x_m = 0.0;
+  double profile_v_mps = 0.0;
+  double bound_x_m = 0.0;
+  double bound_v_mps = 0.0;
 };
 ProfileBound accepted_profile_bound(const MonitorContext& ctx, const CoopExchange& x, std::size_t k, double time_s);
 

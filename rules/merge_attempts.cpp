@@ -109,16 +109,19 @@ double approach_onset_s(const ObservedTrace& t, const RuleParams& p, std::size_t
 // costs two bisections, and a gap's feasibility does not come and go within a tenth of a second.
 constexpr std::size_t kScanStride = 5;
 
-// The merge duration of a Definition 1 reading at `time_s`: rho_m, or the time to the observed
-// midpoint (for an attempt still under way when the trace ends, to that end: the shortest
-// duration consistent with the observation) when longer. Definition 1.1 lets the follower
-// accelerate until the ego merges; rho_m alone for a merge whose midpoint came later would
-// predict it at a_accel^max for rho_m/2 only and move onto a follower that accelerated legally
-// the duty the ego's late merge created (docs/spec.md §8, review point 5).
+// The merge duration of a Definition 1 reading at `time_s`: rho_m, or, when longer, twice the
+// time to the observed midpoint less the response time T (for an attempt still under way when
+// the trace ends, to that end: the shortest duration consistent with the observation).
+// Definition 1.1 lets the follower accelerate until the ego merges; rho_m alone for a merge whose
+// midpoint came much later would predict it at a_accel^max for rho_m/2 only and move onto a
+// follower that accelerated legally the duty the ego's late merge created (docs/spec.md §8,
+// review point 23). T: RSS's time to turn a decision into motion; a midpoint within T of the one
+// decided is that merge, tracked with a lag.
 double reading_rho_s(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, double time_s) {
   const std::optional<double> mid_s =
       a.midpoint_time_s ? a.midpoint_time_s : a.end_time_s ? std::nullopt : std::optional(t.steps.back().time_s);
-  return mid_s ? std::max(p.merge_duration_s, 2.0 * (*mid_s - time_s)) : p.merge_duration_s;
+  if (!mid_s) return p.merge_duration_s;
+  return std::max(p.merge_duration_s, 2.0 * (*mid_s - time_s - t.params.rss.response_time_s));
 }
 
 // Definition 1 at step i for a gap.

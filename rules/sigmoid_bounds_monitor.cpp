@@ -33,10 +33,11 @@ std::pair<double, double> def1_predicted(const ObservedState& at_decision, doubl
 
 // Where what covered a vehicle of the gap entered lets it be at the midpoint t_mid, as {x, v}; the
 // ego is judged at the better of that and the real position (rules/merge_attempts.h covers):
-//   - its own acceptance (Def. 2): the farthest its accepted profile lets it be, tolerance
-//     included (accepted_profile_bound, def2_positions' bound), so that a responder within it is
-//     no nearer than predicted and the ego answers for the real margin; after its duties end,
-//     nothing (real position);
+//   - its own acceptance (Def. 2): the profile it accepted (accepted_profile_bound: to v_o* by
+//     t_r + rho_c + T, its response time included); after its duties end, nothing (real
+//     position). A partner nearer the ego than that profile, when the profile would have left
+//     the margin, answers for the real one (explaining_breach), within def2_positions' tolerance
+//     or not: the ego's plan held against what the partner accepted;
 //   - Definition 1 for the pair at the request of the other vehicle's acceptance: from its state
 //     at the request, a follower at a_accel^max for rho_c + rho_m/2 (ineq. (1.1) over 2 rho_c +
 //     rho_m), a leader at constant speed;
@@ -53,7 +54,7 @@ std::optional<std::pair<double, double>> covered_state(const MonitorContext& ctx
     case Cover::kDef2: {
       const ProfileBound b = accepted_profile_bound(ctx, ctx.exchanges[*c.exchange], k, t_mid);
       if (!b.valid) return std::nullopt;
-      return std::pair{b.x_m, b.v_mps};
+      return std::pair{b.profile_x_m, b.profile_v_mps};
     }
     case Cover::kDef2Pair: {
       const double t_r = ctx.exchanges[*c.exchange].sent_time_s;
@@ -125,6 +126,10 @@ struct SideMargins {
   std::size_t k = 0;  // 0: open side
   double real_m = std::numeric_limits<double>::infinity();
   double predicted_m = -std::numeric_limits<double>::infinity();
+  bool partner = false;  // covered by its own acceptance: predicted on the profile it accepted ...
+  // ... and the margin there with the ego as it really was: what the partner's deviation from its
+  // profile alone changed
+  double profile_m = -std::numeric_limits<double>::infinity();
 };
 
 SideMargins side_margins(const MonitorContext& ctx, const MergeAttempt* a, std::size_t i, int vehicle, bool follower,
@@ -147,8 +152,11 @@ SideMargins side_margins(const MonitorContext& ctx, const MergeAttempt* a, std::
   out.real_m = margin(o.x_m, speed_of(o), ve);
   const PairCover* c = a == nullptr ? nullptr : follower ? &a->follower : &a->leader;
   if (c != nullptr && c->vehicle == vehicle)
-    if (const auto p = covered_state(ctx, *a, *c, follower, s.steps[i].time_s))
+    if (const auto p = covered_state(ctx, *a, *c, follower, s.steps[i].time_s)) {
       out.predicted_m = margin(p->first, p->second, follower ? ve_pred_mps : ve);
+      out.partner = c->by == Cover::kDef2;
+      out.profile_m = margin(p->first, p->second, ve);
+    }
   return out;
 }
 
@@ -171,6 +179,11 @@ int explaining_breach(const MonitorContext& ctx, const MergeAttempt* a, const Si
   if (breaker == kNobody && worst > 0 && changed_side(ctx, worst, from_s, i))
     breaker = limit_breaker(ctx, worst, worst, from_s, t_mid);
   if (breaker == kNobody && worst > 0) breaker = reneging_responder(ctx, worst, t_mid);
+  // A partner whose profile would have left the margin, nearer than that profile: its deviation
+  // explains the shortfall, within def2_positions' tolerance or not (between the two the margin
+  // was otherwise nobody's).
+  const SideMargins& w = l.real_m < f.real_m ? l : f;
+  if (breaker == kNobody && w.partner && w.profile_m >= 0.0) breaker = party_of(ctx.trace, w.k);
   return breaker;
 }
 

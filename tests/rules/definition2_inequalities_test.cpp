@@ -131,19 +131,22 @@ TEST(Def2Inequalities, ARequestsCaseIsHeldToTheOrderObservedAtItsSend) {
   EXPECT_NE(behind.result.detail.find("says the ego is behind it"), std::string::npos) << behind.result.detail;
 }
 
-// The band between def2_positions and sigmoid_pc_bounds is one bound: the farthest a responder
-// keeping its acceptance may be is def2_positions' bound, tolerance included.
-TEST(Def2Inequalities, TheAcceptedProfileBoundIsDef2PositionsBound) {
+// The profile a responder accepted, which sigmoid_pc_bounds predicts it on, and def2_positions'
+// bound around it (the profile plus its tolerance).
+TEST(Def2Inequalities, TheAcceptedProfileAndItsBound) {
   const Scenario s = coop_scenario(-25.0);
   const auto j = test::judge(s, with_request(constant_accel_trace(s, 6.0), CoopCase::kEgoAhead, 16.0, 24.175, 50.0, true));
   ASSERT_EQ(j->situation.exchanges.size(), 1u);
   const CoopExchange& x = j->situation.exchanges[0];
   // From -23 m at 20 m/s (t_a = 0.1 s) linearly to 16 m/s by t_r + rho_c + T = 1.5 s, then 16:
-  // at 3.1 s, 25.2 + 16 x 1.6 = 50.8 m past -23, plus 0.5 m/s x 3 s; speed 16 + 0.5.
+  // at 3.1 s, 25.2 + 16 x 1.6 = 50.8 m past -23 at 16 m/s; the bound 0.5 m/s x 3 s farther, at
+  // 16.5 m/s.
   const ProfileBound b = accepted_profile_bound(j->context(), x, 1, 3.1);
   ASSERT_TRUE(b.valid);
-  EXPECT_NEAR(b.x_m, -23.0 + 25.2 + 25.6 + 1.5, 1e-9);
-  EXPECT_NEAR(b.v_mps, 16.5, 1e-9);
+  EXPECT_NEAR(b.profile_x_m, -23.0 + 25.2 + 25.6, 1e-9);
+  EXPECT_NEAR(b.profile_v_mps, 16.0, 1e-9);
+  EXPECT_NEAR(b.bound_x_m, -23.0 + 25.2 + 25.6 + 1.5, 1e-9);
+  EXPECT_NEAR(b.bound_v_mps, 16.5, 1e-9);
   EXPECT_FALSE(accepted_profile_bound(j->context(), x, 1, 5.1).valid);  // past t_r + rho_c + rho_m
 }
 

@@ -94,23 +94,24 @@ TEST(MergeAttempts, AGapFeasibleAllAlongIsCreditedFromBeforeTheDecisionWindow) {
   // A roomier gap (vehicle 1 250 m behind, vehicle 2 600 m ahead), the merge from t = 6 s (start
   // 6.06 s, midpoint 7 s): the window is [2.06, 6.06] s and the reading is taken in it, but the
   // gap was feasible since t = 0 (no attempt before) even for a merge whose midpoint comes 7 s
-  // later (rho = 14 s: the follower accelerating until then): a slow merge decided long before
-  // its visible start holds the right of way from its decision on.
+  // later (rho = 2 (7 - T) = 13 s: the follower accelerating until then, less the response time
+  // T = 0.5 s): a slow merge decided long before its visible start holds the right of way from
+  // its decision on.
   const Scenario s = gap_scenario(-250.0, 600.0);
   const auto j = test::judge(s, merging_from(s, 6.0, 8.0));
   const MergeAttempt& a = only_attempt(*j);
   EXPECT_EQ(a.basis, RowBasis::kDef1);
   EXPECT_NEAR(a.decision_time_s, 0.0, 1e-9);
-  EXPECT_NEAR(a.def1.rho_s, 14.0, 1e-9);
+  EXPECT_NEAR(a.def1.rho_s, 13.0, 1e-9);
   EXPECT_TRUE(j->row.ego_holds_at(0.5));
   EXPECT_TRUE(j->row.ego_holds_at(2.1));
 }
 
 // Definition 1.1 lets the follower accelerate until the ego merges. The gap of the first test
 // (follower 80 m behind) read for the merge from 6 s, midpoint 7 s: at t = 0 it held for a merge
-// of rho_m = 4 s, not for the one that happened (rho = 14 s: the follower, at a_accel^max for
-// 7 s, would be 49 m further on): the ego is credited only from when the gap held for a merge
-// with its midpoint at 7 s. (Read at rho_m from t = 0, the follower was predicted to accelerate
+// of rho_m = 4 s, not for the one that happened (rho = 2 (7 - T) = 13 s, T = 0.5 s: the
+// follower, at a_accel^max for 6.5 s, would be 42 m further on): the ego is credited only from
+// when the gap held for a merge with its midpoint at 7 s. (Read at rho_m from t = 0, the follower was predicted to accelerate
 // for 2 s only, and a follower accelerating legally until the midpoint carried the duty the
 // ego's late merge created.)
 TEST(MergeAttempts, AReadingPredictsTheFollowerAcceleratingUntilTheObservedMidpoint) {
@@ -118,8 +119,8 @@ TEST(MergeAttempts, AReadingPredictsTheFollowerAcceleratingUntilTheObservedMidpo
   const auto j = test::judge(s, merging_from(s, 6.0, 8.0));
   const MergeAttempt& a = only_attempt(*j);
   EXPECT_EQ(a.basis, RowBasis::kDef1);
-  EXPECT_GT(a.decision_time_s, 2.0);
-  EXPECT_NEAR(a.def1.rho_s, 2.0 * (7.0 - a.decision_time_s), 1e-9);
+  EXPECT_GT(a.decision_time_s, 1.0);
+  EXPECT_NEAR(a.def1.rho_s, 2.0 * (7.0 - 0.5 - a.decision_time_s), 1e-9);
   EXPECT_FALSE(j->row.ego_holds_at(0.5));
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "rules/check.h"
 #include "rules/monitor.h"
@@ -111,7 +112,12 @@ std::vector<CoopExchange> coop_exchanges(const ObservedTrace& t, const RuleParam
     fates.push_back(fate_of(t, e.message));
   }
   assign_series(t, p, fates, out);
-  for (CoopExchange& x : out) assign_order(t, x);
+  for (CoopExchange& x : out) {
+    // A series begins at or before each of its requests: rho_c never runs from a later send.
+    if (!(x.request_time_s <= x.sent_time_s))
+      throw std::logic_error("coop_exchanges: a request's series begins after it is sent");
+    assign_order(t, x);
+  }
   for (const ChannelEvent& e : t.channel) {
     const V2vMessage& m = e.message;
     if (!is_answer_to_ego(m) || e.kind == ChannelEventKind::kLost) continue;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "rules/check.h"
 #include "rules/monitor.h"
@@ -296,6 +297,7 @@ class AttemptJudge {
   bool try_def1();
   void keep_if_best(const Def1Reading& r, bool covers);
   void extend_back(std::size_t first);
+  void granted();
   void no_basis();
   void settle_decision_time();
 
@@ -406,7 +408,9 @@ void AttemptJudge::cover_by_reading(const Def1Reading& r) {
     c->margin_m = member ? (c->vehicle == r.gap.follower ? r.margin_11_m : r.margin_12_m)
                          : pair_margin_m(in_.t, r, *c, c == &a_.follower);
     c->exchange.reset();
-    c->by = !feasible || c->margin_m < 0.0 ? Cover::kNone : member ? Cover::kDef1 : Cover::kDef1Pair;
+    // A vehicle of a feasible reading's gap is covered by the reading (its margin at v_e* is the
+    // bisection's, >= 0 to within its tolerance); another one by its pair's margin.
+    c->by = !feasible ? Cover::kNone : member ? Cover::kDef1 : c->margin_m < 0.0 ? Cover::kNone : Cover::kDef1Pair;
     c->from_s = r.time_s;
   }
 }
@@ -516,6 +520,15 @@ void AttemptJudge::no_basis() {
   }
 }
 
+// A basis found: the attempt rests on it and on the truthful acceptances that cover its
+// vehicles, not on a lying one it could have been made on (an earlier acceptance of the same
+// vehicle, say, whose P_c a later request replaced): that one's check is dropped.
+void AttemptJudge::granted() {
+  untruthful_.reset();
+  std::erase_if(checks_, [](const PcCheck& c) { return c.margin_m < 0.0; });
+  a_.pc_checks = checks_;
+}
+
 // The ego holds the right of way as a whole once it holds it toward every vehicle of the gap
 // entered; toward each vehicle, from its cover's instant.
 void AttemptJudge::settle_decision_time() {
@@ -539,18 +552,19 @@ void AttemptJudge::run() {
     a_.follower.vehicle = a_.entered_gap.follower;
     a_.leader.vehicle = a_.entered_gap.leader;
   }
-  const bool def2 = known_gap() ? try_def2() : try_def2_unknown_gap();
-  if (def2) {
-    untruthful_.reset();
-    a_.pc_checks = checks_;
+  if (known_gap() ? try_def2() : try_def2_unknown_gap()) {
+    granted();
   } else if (try_def1()) {
-    untruthful_.reset();
-    std::erase_if(checks_, [](const PcCheck& c) { return c.margin_m < 0.0; });
-    a_.pc_checks = checks_;
+    granted();
   } else {
     no_basis();
   }
   settle_decision_time();
+  // The right of way as a whole means toward every vehicle of the gap entered: a basis with an
+  // uncovered vehicle would let the ego cut in next to it unjudged.
+  for (const PairCover* c : {&a_.follower, &a_.leader})
+    if (a_.basis != RowBasis::kNone && c->vehicle >= 1 && c->by == Cover::kNone)
+      throw std::logic_error("merge attempt with a basis and an uncovered vehicle of the gap entered");
 }
 
 }  // namespace

@@ -251,6 +251,30 @@ TEST(MergeAttempts, AnAcceptanceOfARequestWhosePcTheEgoDidNotKeepGrantsNothing) 
   EXPECT_EQ(only_attempt(*kept).basis, RowBasis::kDef2);
 }
 
+// Two acceptances of vehicle 1 in the window: of a request whose P_c (100 m) the ego did not keep,
+// then of a re-planned one (40 m) it kept. The attempt rests on the second; the first is no
+// lie the ego merged on (campaign finding: an earlier acceptance, replaced after an abort, was
+// judged against the later merge's crossing).
+TEST(MergeAttempts, AStaleAcceptanceOfTheSameVehicleIsNotJudgedAgainstTheCrossing) {
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  Trace t = merging_from(s, 1.0);
+  const auto exchange = [&](double request_s, double pc_m, double delivered_s) {
+    const TraceEvent accept = test::message_event(request_s + 0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead,
+                                                  pc_m, 30, 18);
+    t.events.push_back(test::message_event(request_s, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, pc_m, 30, 18));
+    t.events.push_back(accept);
+    t.events.push_back(test::delivered_event(accept, delivered_s));
+  };
+  exchange(0.0, 100.0, 0.2);
+  exchange(0.5, 40.0, 0.9);
+  const auto j = test::judge(s, t);
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kDef2);
+  EXPECT_EQ(a.exchange->sent_time_s, 0.5);
+  ASSERT_EQ(a.pc_checks.size(), 1u);
+  EXPECT_GE(a.pc_checks[0].margin_m, 0.0);
+}
+
 // A request without P_c asks for nothing the rules can judge: its acceptance is no acceptance.
 TEST(MergeAttempts, AnAcceptanceOfARequestWithoutANumberGrantsNothing) {
   const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);

@@ -20,18 +20,35 @@ double ramp_distance_m(double v0_mps, double v_star_mps, double ramp_s, double t
 }
 
 ProfileBound accepted_profile_bound(const MonitorContext& ctx, const CoopExchange& x, std::size_t k, double time_s) {
-  const ObservedTrace& s = ctx.trace;
+  return accepted_profile_bound(ctx.trace, ctx.params, x, k, time_s);
+}
+
+bool responder_broke_acceptance(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x, std::size_t k,
+                                double until_s) {
+  if (x.accept_time_s < 0.0 || t.steps.empty()) return false;
+  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
+  for (std::size_t i = step_at(t, x.accept_time_s); i < t.steps.size() && t.steps[i].time_s <= until_s + kTieS; ++i) {
+    const ProfileBound b = accepted_profile_bound(t, p, x, k, t.steps[i].time_s);
+    if (!b.valid) break;
+    const double pos = state_of(t.steps[i], k).x_m;
+    if (ahead ? pos > b.bound_x_m : pos < b.bound_x_m) return true;
+  }
+  return false;
+}
+
+ProfileBound accepted_profile_bound(const ObservedTrace& s, const RuleParams& p, const CoopExchange& x, std::size_t k,
+                                    double time_s) {
   ProfileBound b;
   if (x.accept_time_s < 0.0 || !x.complete() || s.steps.empty() ||
-      time_s > x.sent_time_s + ctx.params.comm_threshold_s + ctx.params.merge_duration_s + kTieS)
+      time_s > x.sent_time_s + p.comm_threshold_s + p.merge_duration_s + kTieS)
     return b;
   const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
   const double v_star = ahead ? x.request->target_speed_mps : std::min(x.request->target_speed_mps, s.road.speed_limit_mps);
   const ObservedState& at_accept = state_of(s.steps[step_at(s, x.accept_time_s)], k);
   const double v_a = std::max(0.0, speed_of(at_accept));
-  const double ramp_s = x.sent_time_s + ctx.params.comm_threshold_s + s.params.rss.response_time_s - x.accept_time_s;
+  const double ramp_s = x.sent_time_s + p.comm_threshold_s + s.params.rss.response_time_s - x.accept_time_s;
   const double tau = std::max(0.0, time_s - x.accept_time_s);
-  const double tol_mps = ctx.params.yield_speed_tolerance_mps;
+  const double tol_mps = p.yield_speed_tolerance_mps;
   const double x_profile = at_accept.x_m + ramp_distance_m(v_a, v_star, ramp_s, tau);
   const double v_profile = ramp_s <= 0.0 || tau >= ramp_s ? v_star : v_a + (v_star - v_a) * tau / ramp_s;
   b.valid = true;

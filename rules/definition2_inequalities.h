@@ -41,7 +41,14 @@ struct ProfileBound {
   double bound_x_m = 0.0;
   double bound_v_mps = 0.0;
 };
+ProfileBound accepted_profile_bound(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x, std::size_t k,
+                                    double time_s);
 ProfileBound accepted_profile_bound(const MonitorContext& ctx, const CoopExchange& x, std::size_t k, double time_s);
+
+// Whether the responder k of an accepted request was beyond def2_positions' bound at a step of
+// [acceptance, until_s]: it broke what it accepted.
+bool responder_broke_acceptance(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x, std::size_t k,
+                                double until_s);
 
 // Distance covered in tau_s by a vehicle at v0 that changes speed linearly to v_star by ramp_s
 // (ramp_s <= 0: at v_star at once) and then holds v_star.

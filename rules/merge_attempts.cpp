@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "rules/check.h"
+#include "rules/definition2_inequalities.h"
 #include "rules/monitor.h"
 
 namespace mg {
@@ -165,18 +166,21 @@ PcCheck pc_check_of(const Inputs& in, std::size_t i, const MergeAttempt& a) {
 }
 
 // Definition 1 for the pair of the ego and the gap's other vehicle at the request of an
-// acceptance: 2.1 (the partner its follower) the leader by ineq. (1.2) over rho_c + rho_m with
-// the ego at its speed; 2.2 (the partner its leader) the follower by ineq. (1.1) over 2 rho_c +
-// rho_m with the ego at its speed after braking at b_min for rho_c. +inf for an open side.
-double other_vehicle_margin_m(const Inputs& in, const CoopExchange& x, int other) {
+// acceptance: the leader (2.1: the partner its follower) by ineq. (1.2) over rho_c + rho_m, the
+// follower (2.2: the partner its leader) by ineq. (1.1) over 2 rho_c + rho_m, with the ego at
+// the speed the request's case gives it after rho_c (2.1: its speed; 2.2: after braking at b_min).
+// +inf for an open side.
+double other_vehicle_margin_m(const Inputs& in, const CoopExchange& x, int other, bool other_is_follower) {
   if (other < 1) return std::numeric_limits<double>::infinity();
   const ObservedTrace& t = in.t;
   const std::size_t i = std::min(step_at_or_after(t, x.sent_time_s), t.steps.size() - 1);
   const double v_e = std::max(0.0, t.steps[i].vehicles[0].vx_mps);
   const double rho_c = in.p.comm_threshold_s, rho_m = in.p.merge_duration_s;
-  if (x.request->coop_case == CoopCase::kEgoAhead) return def1_2_margin_m(t, i, other, v_e, rho_c + rho_m);
-  const double v_after = std::max(0.0, v_e - t.vehicles[0].limits.brake_min_mps2 * rho_c);
-  return def1_1_margin_m(t, i, other, v_after, 2.0 * rho_c + rho_m);
+  const double v_after = x.request->coop_case == CoopCase::kEgoAhead
+                             ? v_e
+                             : std::max(0.0, v_e - t.vehicles[0].limits.brake_min_mps2 * rho_c);
+  return other_is_follower ? def1_1_margin_m(t, i, other, v_after, 2.0 * rho_c + rho_m)
+                           : def1_2_margin_m(t, i, other, v_after, rho_c + rho_m);
 }
 
 // The vehicle of the lane next to the responder of `x` on the side the ego merges on, at the
@@ -289,7 +293,7 @@ class AttemptJudge {
 
  private:
   bool known_gap() const { return a_.midpoint_time_s.has_value(); }
-  PairCover* side_for(const CoopExchange& x);
+  PairCover* side_for(const CoopExchange& x, bool responder_broke);
   bool try_def2();
   bool try_def2_unknown_gap();
   bool covers_rest(const Def1Reading& r) const;
@@ -312,13 +316,19 @@ class AttemptJudge {
 };
 
 // The cover an acceptance of `x` speaks for: its sender bounding the gap entered on the side its
-// case names (ego ahead: the follower; ego behind: the leader), or none.
-PairCover* AttemptJudge::side_for(const CoopExchange& x) {
+// case names (ego ahead: the follower; ego behind: the leader), or none. On the other side too
+// when the sender got there by breaking what it accepted (beyond def2_positions' bound before
+// the midpoint: a 2.1 responder that did not yield and passed the ego): its breach changed the
+// ego's gap, and the acceptance still counts, as a gap changed by a vehicle breaking its
+// declared limits does for Definition 1.
+PairCover* AttemptJudge::side_for(const CoopExchange& x, bool responder_broke) {
   const int k = in_.t.index_of(x.request->to_id);
   if (k < 1) return nullptr;
   const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
-  if (ahead && k == a_.follower.vehicle) return &a_.follower;
-  if (!ahead && k == a_.leader.vehicle) return &a_.leader;
+  PairCover* named = ahead ? &a_.follower : &a_.leader;
+  PairCover* other = ahead ? &a_.leader : &a_.follower;
+  if (k == named->vehicle) return named;
+  if (k == other->vehicle && responder_broke) return other;
   return nullptr;
 }
 
@@ -333,24 +343,28 @@ bool AttemptJudge::try_def2() {
     // to: it is no acceptance (def2_request_sound fails the request).
     if (!x.complete() || !x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_))
       continue;
-    PairCover* c = side_for(x);
+    const int k = in_.t.index_of(x.request->to_id);
+    const bool broke =
+        k >= 1 && responder_broke_acceptance(in_.t, in_.p, x, static_cast<std::size_t>(k), *a_.midpoint_time_s);
+    PairCover* c = side_for(x, broke);
     if (c == nullptr) continue;
-    const PcCheck pc = pc_check_of(in_, i, a_);
-    if (x.order_margin_m < 0.0 || pc.margin_m < 0.0) {
+    // A responder that broke what it accepted left the ego to answer its breach: where the ego
+    // then crossed says nothing of the P_c it asked on.
+    const std::optional<PcCheck> pc = broke ? std::nullopt : std::optional(pc_check_of(in_, i, a_));
+    if (pc) checks_.push_back(*pc);
+    if (x.order_margin_m < 0.0 || (pc && pc->margin_m < 0.0)) {
       untruthful_ = untruthful_.value_or(i);
-      checks_.push_back(pc);
       continue;
     }
     if (c->by == Cover::kDef2) continue;  // an earlier acceptance covers it already
     *c = PairCover{c->vehicle, Cover::kDef2, x.accept_delivered_time_s, std::numeric_limits<double>::infinity(), i};
-    checks_.push_back(pc);
     if (!first) first = i;
   }
   if (!first) return false;
   for (PairCover* c : {&a_.follower, &a_.leader}) {
     if (c->vehicle < 1 || c->by == Cover::kDef2) continue;
     const std::size_t i = a_.follower.by == Cover::kDef2 ? *a_.follower.exchange : *a_.leader.exchange;
-    c->margin_m = other_vehicle_margin_m(in_, in_.exchanges[i], c->vehicle);
+    c->margin_m = other_vehicle_margin_m(in_, in_.exchanges[i], c->vehicle, c == &a_.follower);
     if (c->margin_m >= 0.0) *c = PairCover{c->vehicle, Cover::kDef2Pair, in_.exchanges[i].accept_delivered_time_s, c->margin_m, i};
   }
   const auto covered = [](const PairCover& c) { return c.vehicle < 1 || c.by != Cover::kNone; };
@@ -376,7 +390,8 @@ bool AttemptJudge::try_def2_unknown_gap() {
       untruthful_ = untruthful_.value_or(i);
       continue;
     }
-    if (other_vehicle_margin_m(in_, x, requested_gap_other(in_, x)) < 0.0) continue;
+    const bool other_is_follower = x.request->coop_case == CoopCase::kEgoBehind;
+    if (other_vehicle_margin_m(in_, x, requested_gap_other(in_, x), other_is_follower) < 0.0) continue;
     a_.basis = RowBasis::kDef2;
     a_.exchange = x;
     a_.decision_time_s = x.accept_delivered_time_s;

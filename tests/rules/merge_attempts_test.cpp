@@ -173,11 +173,12 @@ TEST(MergeAttempts, AStartWithTheFollowerTooCloseHasNoRightOfWay) {
 
 // The same too-close follower; the ego asks it to yield (a Def. 2.1 request at request_s, 0.5 s
 // unless given), its acceptance sent 0.1 s later and delivered at accept_delivered_s.
-Trace with_exchange(Trace t, int responder, double accept_delivered_s, double request_s = 0.5) {
+Trace with_exchange(Trace t, int responder, double accept_delivered_s, double request_s = 0.5, double vo_star_mps = 18) {
   const TraceEvent accept = test::message_event(request_s + 0.1, MessageType::kAccept, responder, 0,
-                                                CoopCase::kEgoAhead, 40, 30, 18);
-  t.events = {test::message_event(request_s, MessageType::kRequest, 0, responder, CoopCase::kEgoAhead, 40, 30, 18),
-              accept, test::delivered_event(accept, accept_delivered_s)};
+                                                CoopCase::kEgoAhead, 40, 30, vo_star_mps);
+  t.events = {
+      test::message_event(request_s, MessageType::kRequest, 0, responder, CoopCase::kEgoAhead, 40, 30, vo_star_mps),
+      accept, test::delivered_event(accept, accept_delivered_s)};
   return t;
 }
 
@@ -234,10 +235,11 @@ TEST(MergeAttempts, AnAcceptanceCoversItsSenderAndDefinition1TheGapsOtherVehicle
 
 // The request of with_exchange says P_c = 40 m; the ego merging from 0.5 s crosses the lane line
 // at 30 m (1.5 s at 20 m/s), 10 m nearer vehicle 1 than it said, beyond the tolerance of 0.5 m/s
-// x 1 s since the request. The acceptance grants nothing and the attempt is the lie's.
+// x 1 s since the request. Vehicle 1 keeps what it accepted (v_o* = 20 m/s, its speed). The
+// acceptance grants nothing and the attempt is the lie's.
 TEST(MergeAttempts, AnAcceptanceOfARequestWhosePcTheEgoDidNotKeepGrantsNothing) {
   const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
-  const auto j = test::judge(s, with_exchange(merging_from(s, 0.5), 1, 0.9));
+  const auto j = test::judge(s, with_exchange(merging_from(s, 0.5), 1, 0.9, 0.5, 20.0));
   const MergeAttempt& a = only_attempt(*j);
   ASSERT_TRUE(a.crossing_x_m.has_value());
   EXPECT_NEAR(*a.crossing_x_m, 30.0, 1e-9);
@@ -247,12 +249,35 @@ TEST(MergeAttempts, AnAcceptanceOfARequestWhosePcTheEgoDidNotKeepGrantsNothing) 
   EXPECT_NEAR(a.pc_checks[0].tolerance_m, 0.5, 1e-9);
   EXPECT_NEAR(a.pc_checks[0].margin_m, 30.0 - (40.0 - 0.5), 1e-9);
   // Where the ego crosses at 40 m (merging from 1 s), within it: Definition 2.
-  const auto kept = test::judge(s, with_exchange(merging_from(s, 1.0), 1, 0.9));
+  const auto kept = test::judge(s, with_exchange(merging_from(s, 1.0), 1, 0.9, 0.5, 20.0));
   EXPECT_EQ(only_attempt(*kept).basis, RowBasis::kDef2);
+  // A responder that broke what it accepted (v_o* = 18 m/s, and it keeps 20) left the ego to
+  // answer its breach: the crossing is not held to P_c, and its acceptance covers it.
+  const auto broken = test::judge(s, with_exchange(merging_from(s, 0.5), 1, 0.9));
+  EXPECT_EQ(only_attempt(*broken).basis, RowBasis::kDef2);
+  EXPECT_TRUE(only_attempt(*broken).pc_checks.empty());
 }
 
-// Two acceptances of vehicle 1 in the window: of a request whose P_c (100 m) the ego did not keep,
-// then of a re-planned one (40 m) it kept. The attempt rests on the second; the first is no
+// A 2.1 responder that did not yield and passed the ego bounds the gap entered as its leader: its
+// breach changed the gap, and its acceptance still covers it there. Vehicle 1, 5 m behind at
+// 20 m/s, accepts v_o* = 16 m/s and accelerates at 2 m/s2 instead; the ego keeps 20 m/s and merges
+// behind it (midpoint 3 s).
+TEST(MergeAttempts, AResponderThatPassedTheEgoByBreakingItsAcceptanceIsStillCovered) {
+  Scenario s = gap_scenario(-5.0, std::nullopt, 33.34);
+  s.vehicles[0].limits.accel_max_mps2 = 2.0;
+  Trace t = test::with_lateral_move(constant_accel_trace(s, 4.0, {0.0, 2.0}), 2.0, 1.75);
+  const TraceEvent accept = test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 60, 20, 16);
+  t.events = {test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 60, 20, 16), accept,
+              test::delivered_event(accept, 0.2)};
+  const auto j = test::judge(s, t);
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.entered_gap, (GapIndices{-1, 1}));
+  EXPECT_EQ(a.leader.by, Cover::kDef2);
+  EXPECT_EQ(a.basis, RowBasis::kDef2);
+}
+
+// Two acceptances of vehicle 1 (v_o* its speed, kept) in the window: of a request whose P_c
+// (100 m) the ego did not keep, then of a re-planned one (40 m) it kept. The attempt rests on the second; the first is no
 // lie the ego merged on (campaign finding: an earlier acceptance, replaced after an abort, was
 // judged against the later merge's crossing).
 TEST(MergeAttempts, AStaleAcceptanceOfTheSameVehicleIsNotJudgedAgainstTheCrossing) {
@@ -260,8 +285,8 @@ TEST(MergeAttempts, AStaleAcceptanceOfTheSameVehicleIsNotJudgedAgainstTheCrossin
   Trace t = merging_from(s, 1.0);
   const auto exchange = [&](double request_s, double pc_m, double delivered_s) {
     const TraceEvent accept = test::message_event(request_s + 0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead,
-                                                  pc_m, 30, 18);
-    t.events.push_back(test::message_event(request_s, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, pc_m, 30, 18));
+                                                  pc_m, 30, 20);
+    t.events.push_back(test::message_event(request_s, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, pc_m, 30, 20));
     t.events.push_back(accept);
     t.events.push_back(test::delivered_event(accept, delivered_s));
   };

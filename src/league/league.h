@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "fuzz/campaign.h"
 #include "fuzz/properties.h"
 #include "fuzz/scenario_gen.h"

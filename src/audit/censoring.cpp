@@ -13,8 +13,6 @@
 namespace mg {
 namespace {
 
-constexpr double kTieS = 1e-9;
-
 std::string at(double t_s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.1f s", t_s);

@@ -21,6 +21,7 @@
 #include "fuzz/corpus_case.h"
 #include "planner/exec_protocol.h"
 #include "planner/planner.h"
+#include "planner/planner_params.h"
 
 namespace {
 
@@ -78,7 +79,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The protocol reader parses a reply itself, with its own bounds: it sees unparsable text too.
   planner_reply(text, parsed ? &keep_last : nullptr);
   if (!parsed) return 0;  // the stricter parse below would reject it as well
-  rejected_is_fine([&] { mg::scenario_from_json(keep_last, kSource); });
+  // As the commands read a scenario: the core fields, then the planner tunables against their tables.
+  rejected_is_fine([&] { mg::planner_scenario_from_json(keep_last, kSource); });
   rejected_is_fine([&] { mg::fuzz::case_from_json(keep_last, kSource); });
   rejected_is_fine([&] {
     const nlohmann::json strict = mg::parse_json_text(text, kSource, mg::DuplicateKeys::kReject);

@@ -13,6 +13,7 @@
 #include "core/scenario.h"
 #include "paper/paper_report.h"
 #include "paper/paper_search.h"
+#include "planner/planner_params.h"
 
 namespace mg::cli {
 namespace {

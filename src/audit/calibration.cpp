@@ -2,21 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "core/demand.h"
+#include "core/fixed_text.h"
 
 namespace mg {
-namespace {
-
-std::string fixed(double v, int decimals) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
-
-}  // namespace
 
 PlausibleBraking plausible_braking(const std::string& vehicle_class) {
   if (vehicle_class == "truck" || vehicle_class == "bus") return {2.0, 6.0, 4.0, 8.0};
@@ -87,17 +77,17 @@ CalibrationChoice choose_calibration(const std::vector<std::vector<AuditVerdict>
       }
     }
   }
-  const std::string target = fixed(100.0 * share, 0) + " % of the judged merges";
+  const std::string target = fixed_text(100.0 * share, 0) + " % of the judged merges";
   const std::string got = std::to_string(c.holding) + " of " + std::to_string(c.judged) + " judged merges hold";
   if (best < 0.0) {
     c.text = "no merge is judged under any profile of the grid: nothing to calibrate; the profile is written with its response time and braking unchanged";
   } else if (c.found) {
-    c.text = "response time " + seconds_text(c.response_time_s) + " and braking limits x" + fixed(c.brake_scale, 2) +
+    c.text = "response time " + seconds_text(c.response_time_s) + " and braking limits x" + fixed_text(c.brake_scale, 2) +
              " (each class within its plausible range) make " + target + " hold: " + got;
   } else {
     c.text = "no profile within the plausible ranges (response time " + seconds_text(kMinCalibratedResponseS) + " to " + seconds_text(kMaxCalibratedResponseS) +
              ", braking up to each class's plausible maximum) makes " + target + " hold; the closest is proposed: response time " +
-             seconds_text(c.response_time_s) + ", braking x" + fixed(c.brake_scale, 2) + ": " + got;
+             seconds_text(c.response_time_s) + ", braking x" + fixed_text(c.brake_scale, 2) + ": " + got;
   }
   return c;
 }

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/demand.h"
 #include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
 #include "rules/monitor.h"
 #include "rules/pair_geometry.h"
-#include "core/demand.h"
 
 namespace mg {
 namespace {

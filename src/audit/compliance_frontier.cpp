@@ -5,15 +5,10 @@
 #include <cstdio>
 
 #include "core/demand.h"
+#include "core/fixed_text.h"
 
 namespace mg {
 namespace {
-
-std::string fixed(double v, int decimals) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 // The smallest brake scale, in steps of the follower's b_min by kBrakeStepMps2 from the
 // profile's up to the cap, at which judge(rho, scale) holds; nullopt when none does. A scan, not
@@ -40,9 +35,9 @@ std::string frontier_words(const ComplianceFrontier& f) {
   }
   if (!f.binding_rule.empty()) w += " (binding: " + f.binding_rule + ", " + f.binding_ref + ")";
   if (!f.holds_at_profile) {
-    w += f.needed_brake_scale ? "; at " + rho + " a follower would need b_min >= " + fixed(*f.needed_brake_scale * f.follower_brake_min_mps2, 1) +
-                                    " m/s2 (profile: " + fixed(f.follower_brake_min_mps2, 1) + ")"
-                              : "; at " + rho + " no braking up to " + fixed(kMaxBrakeMps2, 0) + " m/s2 suffices";
+    w += f.needed_brake_scale ? "; at " + rho + " a follower would need b_min >= " + fixed_text(*f.needed_brake_scale * f.follower_brake_min_mps2, 1) +
+                                    " m/s2 (profile: " + fixed_text(f.follower_brake_min_mps2, 1) + ")"
+                              : "; at " + rho + " no braking up to " + fixed_text(kMaxBrakeMps2, 0) + " m/s2 suffices";
   }
   return w;
 }

@@ -10,11 +10,11 @@
 namespace mg {
 namespace {
 
-constexpr double kPathBehindM = 10.0;
-constexpr double kPathStepM = 1.0;
+constexpr double kMobilPathBehindM = 10.0;
+constexpr double kMobilPathStepM = 1.0;
 
-using Row = ParamRow<MobilPlannerParams>;
-using P = MobilPlannerParams;
+using MobilRow = ParamRow<MobilPlannerParams>;
+using MobilP = MobilPlannerParams;
 
 // The vehicles of the lane centred at lane_y_m nearest ahead of and behind x_m (a vehicle level
 // with x_m is behind: it is the one that would follow).
@@ -60,33 +60,33 @@ double lane_centre_y(const WorldSnapshot& w) {
 }
 
 std::vector<PathPoint> straight_path(const WorldSnapshot& w, double y_m) {
-  return sample_path(w.ego.x_m - kPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kPathStepM,
+  return sample_path(w.ego.x_m - kMobilPathBehindM, w.ego.x_m + tracked_path_ahead_m(w), kMobilPathStepM,
                      [y_m](double) { return y_m; });
 }
 
 }  // namespace
 
 const std::vector<ParamRow<MobilPlannerParams>>& mobil_parameter_table() {
-  static const std::vector<Row> table = {
-      {"desired_speed_ratio", [](const P& p) -> double { return p.desired_speed_ratio; }, 0.1, 1.0, "",
+  static const std::vector<MobilRow> table = {
+      {"desired_speed_ratio", [](const MobilP& p) -> double { return p.desired_speed_ratio; }, 0.1, 1.0, "",
         "IDM desired speed v0 as a share of the road's speed limit"},
-      {"time_headway_s", [](const P& p) -> double { return p.time_headway_s; }, 0.1, 5.0, "s", "IDM time headway T"},
-      {"min_gap_m", [](const P& p) -> double { return p.min_gap_m; }, 0.0, 20.0, "m",
+      {"time_headway_s", [](const MobilP& p) -> double { return p.time_headway_s; }, 0.1, 5.0, "s", "IDM time headway T"},
+      {"min_gap_m", [](const MobilP& p) -> double { return p.min_gap_m; }, 0.0, 20.0, "m",
         "IDM standstill gap s0 (bumper to bumper)"},
-      {"max_accel_mps2", [](const P& p) -> double { return p.max_accel_mps2; }, 0.1, 5.0, "m/s2",
+      {"max_accel_mps2", [](const MobilP& p) -> double { return p.max_accel_mps2; }, 0.1, 5.0, "m/s2",
         "IDM maximum acceleration a"},
-      {"comfort_brake_mps2", [](const P& p) -> double { return p.comfort_brake_mps2; }, 0.1, 10.0, "m/s2",
+      {"comfort_brake_mps2", [](const MobilP& p) -> double { return p.comfort_brake_mps2; }, 0.1, 10.0, "m/s2",
         "IDM comfortable deceleration b"},
-      {"exponent", [](const P& p) -> double { return p.exponent; }, 1.0, 10.0, "", "IDM acceleration exponent delta"},
-      {"politeness", [](const P& p) -> double { return p.politeness; }, 0.0, 2.0, "",
+      {"exponent", [](const MobilP& p) -> double { return p.exponent; }, 1.0, 10.0, "", "IDM acceleration exponent delta"},
+      {"politeness", [](const MobilP& p) -> double { return p.politeness; }, 0.0, 2.0, "",
         "MOBIL politeness p: weight of the new follower's disadvantage"},
-      {"safe_brake_mps2", [](const P& p) -> double { return p.safe_brake_mps2; }, 0.1, 15.0, "m/s2",
+      {"safe_brake_mps2", [](const MobilP& p) -> double { return p.safe_brake_mps2; }, 0.1, 15.0, "m/s2",
         "MOBIL b_safe: hardest braking a change may impose on the new follower"},
-      {"threshold_mps2", [](const P& p) -> double { return p.threshold_mps2; }, 0.0, 2.0, "m/s2",
+      {"threshold_mps2", [](const MobilP& p) -> double { return p.threshold_mps2; }, 0.0, 2.0, "m/s2",
         "MOBIL changing threshold Delta a_th"},
-      {"bias_mps2", [](const P& p) -> double { return p.bias_mps2; }, 0.0, 5.0, "m/s2",
+      {"bias_mps2", [](const MobilP& p) -> double { return p.bias_mps2; }, 0.0, 5.0, "m/s2",
         "MOBIL bias Delta a_bias toward the main lane (the side lane ends)"},
-      {"lane_change_duration_s", [](const P& p) -> double { return p.lane_change_duration_s; }, 1.0, 10.0, "s",
+      {"lane_change_duration_s", [](const MobilP& p) -> double { return p.lane_change_duration_s; }, 1.0, 10.0, "s",
         "duration of the lateral path of a change"},
   };
   return table;
@@ -196,8 +196,8 @@ PlanOutput MobilPlanner::plan(const WorldSnapshot& w) {
   } else if (const auto* c = std::get_if<MobilChangingLane>(&phase_)) {
     out.mode = "lane_change";
     if (out.reason.empty()) out.reason = "lane change to the main lane, ends at x = " + fixed_text(c->path.end_x_m(), 1) + " m";
-    const double to_x = std::max(w.ego.x_m + tracked_path_ahead_m(w), c->path.end_x_m() + kPathStepM);
-    out.path = sample_path(w.ego.x_m - kPathBehindM, to_x, kPathStepM, [&c](double x) { return c->path.y_at(x); });
+    const double to_x = std::max(w.ego.x_m + tracked_path_ahead_m(w), c->path.end_x_m() + kMobilPathStepM);
+    out.path = sample_path(w.ego.x_m - kMobilPathBehindM, to_x, kMobilPathStepM, [&c](double x) { return c->path.y_at(x); });
     accel = mobil_lane_accel_mps2(w, 0.0, false, params_);  // committed: it follows the main lane's leader
   } else {
     out.mode = "main_lane";

@@ -13,13 +13,14 @@
 namespace mg {
 namespace {
 
-std::string num(double v, int decimals = 2) { return format_number(v, decimals); }
+// The index's numbers: two decimals unless a column asks for other.
+std::string index_number(double v, int decimals = 2) { return format_number(v, decimals); }
 
-std::string share(int n, int of) { return of == 0 ? std::string("-") : num(100.0 * n / of, 1) + " %"; }
+std::string share(int n, int of) { return of == 0 ? std::string("-") : index_number(100.0 * n / of, 1) + " %"; }
 
 std::string frontier_cell(const MergeRow& m) {
   if (m.holds_throughout) return ">= 5";
-  if (m.frontier_s) return num(*m.frontier_s, 2);
+  if (m.frontier_s) return index_number(*m.frontier_s, 2);
   return m.verdict == AuditVerdict::kHolds || m.verdict == AuditVerdict::kViolated ? "none (not even at 0)" : "-";
 }
 
@@ -56,7 +57,7 @@ std::string frontier_distribution(const DatasetIndex& d) {
   std::sort(v.begin(), v.end());
   const auto q = [&](double f) { return v.empty() ? 0.0 : v[static_cast<std::size_t>(f * (v.size() - 1) + 0.5)]; };
   std::string s = std::to_string(v.size() + none) + " judged merges; ";
-  if (!v.empty()) s += "largest rho that holds: min " + num(v.front()) + " s, median " + num(q(0.5)) + " s, max " + num(v.back()) + " s";
+  if (!v.empty()) s += "largest rho that holds: min " + index_number(v.front()) + " s, median " + index_number(q(0.5)) + " s, max " + index_number(v.back()) + " s";
   if (none > 0) s += std::string(v.empty() ? "" : "; ") + std::to_string(none) + " violated even at rho = 0";
   return s;
 }
@@ -135,7 +136,7 @@ nlohmann::json dataset_index_json(const DatasetIndex& d) {
 std::string dataset_index_markdown(const DatasetIndex& d) {
   const int judged = d.count(AuditVerdict::kHolds) + d.count(AuditVerdict::kViolated);
   std::string md = "# Audit of " + std::to_string(d.recordings.size()) + " recordings\n\n";
-  md += "Profile: " + d.profile.name + " (response time " + num(d.profile.rss.response_time_s) + " s; docs/audit.md).\n\n";
+  md += "Profile: " + d.profile.name + " (response time " + index_number(d.profile.rss.response_time_s) + " s; docs/audit.md).\n\n";
   if (d.calibration_text) md += "Calibration: " + *d.calibration_text + "\n\n";
   md += "Overall: merges " + dataset_counts_text(d) + ". Of the judged merges " + share(d.count(AuditVerdict::kHolds), judged) + " hold and " +
         share(d.count(AuditVerdict::kViolated), judged) + " are violated.";
@@ -157,7 +158,7 @@ std::string dataset_index_markdown(const DatasetIndex& d) {
   int k = 0;
   for (const std::size_t i : worst_first(d)) {
     const MergeRow& m = d.merges[i];
-    md += "| " + std::to_string(++k) + " | " + m.recording + " | " + std::to_string(m.vehicle) + " | " + m.kind + " | " + num(m.time_s, 1) + " | " +
+    md += "| " + std::to_string(++k) + " | " + m.recording + " | " + std::to_string(m.vehicle) + " | " + m.kind + " | " + index_number(m.time_s, 1) + " | " +
           to_string(m.verdict) + " | " + (d.calibration_text ? (m.before ? to_string(*m.before) : std::string("-")) + " | " : std::string()) +
           m.liable + " | " + frontier_cell(m) + " | " + m.words + " | [audit](" + m.link + ") |\n";
   }

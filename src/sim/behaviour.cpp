@@ -11,7 +11,7 @@ namespace mg {
 namespace {
 
 constexpr double kGapMarginM = 2.0;       // RSS follower / constant speed: margin above D_lon
-constexpr double kSpeedGainPerS = 1.0;    // speed tracking gain of the simple behaviours
+constexpr double kBehaviourSpeedGainPerS = 1.0;  // speed tracking gain of the simple behaviours (the ego's is speed_controller.h's)
 constexpr double kGapGainPerS2 = 0.2;     // RSS follower gap gain
 constexpr double kCoopReleaseExtraS = 2.0;// cooperation ends rho_c + rho_m + this after acceptance
 
@@ -206,19 +206,19 @@ double MainLaneDriver::behaviour_accel(const DriverInput& in) {
   switch (b.type) {
     case BehaviourType::kConstantSpeed: {
       if (in.leader && rss_unsafe_behind(v, len, lim, *in.leader, params_.rss)) return -lim.brake_min_mps2;
-      double a = std::clamp(kSpeedGainPerS * (desired_speed() - v), -lim.brake_min_mps2, lim.accel_max_mps2);
+      double a = std::clamp(kBehaviourSpeedGainPerS * (desired_speed() - v), -lim.brake_min_mps2, lim.accel_max_mps2);
       if (in.leader && a > 0.0 &&
           in.leader->distance_m < safe_distance_behind(v, len, lim, *in.leader, params_.rss) + kGapMarginM)
         a = 0.0;
       return a;
     }
     case BehaviourType::kRssFollower: {
-      double a = kSpeedGainPerS * (desired_speed() - v);
+      double a = kBehaviourSpeedGainPerS * (desired_speed() - v);
       if (in.leader) {
         const double d_lon = safe_distance_behind(v, len, lim, *in.leader, params_.rss);
         if (in.leader->distance_m < d_lon) return -lim.brake_min_mps2;  // proper response
         a = std::min(a, kGapGainPerS2 * (in.leader->distance_m - d_lon - kGapMarginM) +
-                            kSpeedGainPerS * (in.leader->speed_mps - v));
+                            kBehaviourSpeedGainPerS * (in.leader->speed_mps - v));
       }
       return a;
     }
@@ -255,7 +255,7 @@ double MainLaneDriver::accel_mps2(const DriverInput& in) {
     // Definition 2: brake at most b_min (2.1 B) or accelerate at most a_acc (2.2 B) to v_o*,
     // and never closer to a leader than IDM's interaction term allows (its free-road term is
     // dropped: v_o* replaces the desired speed).
-    const double track = std::clamp(kSpeedGainPerS * 4.0 * (coop_target_mps_ - in.speed_mps), -lim.brake_min_mps2,
+    const double track = std::clamp(kBehaviourSpeedGainPerS * 4.0 * (coop_target_mps_ - in.speed_mps), -lim.brake_min_mps2,
                                     lim.accel_max_mps2);
     const double idm = idm_accel_mps2(in.speed_mps, std::numeric_limits<double>::infinity(), in.leader,
                                       spec_.size.length_m, spec_.behaviour, lim);

@@ -45,7 +45,7 @@ TEST(Properties, EgoLiableForAnyRuleFailsEgoNeverLiable) {
 }
 
 TEST(Properties, VehicleLiableDoesNotFailEgoNeverLiable) {
-  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("def1_2_leader", 1)}), std::nullopt);
+  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("def1_2_leader", Party::vehicle(1))}), std::nullopt);
   EXPECT_FALSE(fails(f, property::kEgoNeverLiable, "def1_2_leader"));
 }
 
@@ -55,13 +55,13 @@ TEST(Properties, UnansweredRssDangerWithCompliantOthersFails) {
 }
 
 TEST(Properties, AVehicleBlamedForRssDangerWasNotCompliant) {
-  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("rss_longitudinal", 1)}), std::nullopt);
+  const auto f = evaluate_properties(one_vehicle_scenario(), result_with({failing("rss_longitudinal", Party::vehicle(1))}), std::nullopt);
   EXPECT_FALSE(fails(f, property::kCompliantSafe, "rss_longitudinal"));
 }
 
 TEST(Properties, NonCompliantOthersExcuseRssDanger) {
   const auto f = evaluate_properties(one_vehicle_scenario(NonComplianceType::kExceedBrake),
-                                     result_with({failing("rss_longitudinal", 1)}), std::nullopt);
+                                     result_with({failing("rss_longitudinal", Party::vehicle(1))}), std::nullopt);
   EXPECT_FALSE(fails(f, property::kCompliantSafe, "rss_longitudinal"));
 }
 

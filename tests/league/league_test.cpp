@@ -127,8 +127,8 @@ TEST(League, TheResultDoesNotDependOnTheJobs) {
 fuzz::RunOutcome failing(const std::string& planner, double margin) {
   fuzz::RunOutcome o;
   o.planner = planner;
-  o.failures.push_back({fuzz::property::kEgoNeverLiable, "rss_longitudinal", kEgoId, 1.0, margin, ""});
-  o.failures.push_back({fuzz::property::kEgoNeverLiable, "rss_longitudinal", kEgoId, 2.0, margin - 1.0, ""});
+  o.failures.push_back({fuzz::property::kEgoNeverLiable, "rss_longitudinal", Party::ego(), 1.0, margin, ""});
+  o.failures.push_back({fuzz::property::kEgoNeverLiable, "rss_longitudinal", Party::ego(), 2.0, margin - 1.0, ""});
   return o;
 }
 

@@ -14,8 +14,8 @@ namespace mg {
 namespace {
 
 // The audit points into the recording and its road: they live beside it.
-struct Audited {
-  explicit Audited(Recording r) : recording(std::move(r)), road(build_road_layout(recording)) {
+struct AuditedRecording {
+  explicit AuditedRecording(Recording r) : recording(std::move(r)), road(build_road_layout(recording)) {
     audit = audit_recording(recording, road, default_audit_profile());
   }
   Recording recording;
@@ -23,13 +23,13 @@ struct Audited {
   RecordingAudit audit;
 };
 
-std::unique_ptr<Audited> audit_of(Recording r) { return std::make_unique<Audited>(std::move(r)); }
+std::unique_ptr<AuditedRecording> audit_of(Recording r) { return std::make_unique<AuditedRecording>(std::move(r)); }
 
-std::unique_ptr<Audited> audit_file(const std::string& file) { return audit_of(load_recording(test::recording_path(file))); }
+std::unique_ptr<AuditedRecording> audit_file(const std::string& file) { return audit_of(load_recording(test::recording_path(file))); }
 
 // Ego on the ramp changing lanes at t = 7 s at 20 m/s (its decision recorded); a follower `gap` m
 // behind and a leader 150 m ahead in the main lane.
-std::unique_ptr<Audited> audit_synthetic(double gap_m) {
+std::unique_ptr<AuditedRecording> audit_synthetic(double gap_m) {
   return audit_of(parse_recording(test::synthetic_recording_xml({test::lane_changer(1, 20, 20, -1.75, 1.75, 7.0, 130),
                                                                   test::lane_changer(2, 20 - gap_m, 20, 1.75, 1.75, 99, 130),
                                                                   test::lane_changer(3, 170, 20, 1.75, 1.75, 99, 130)}),

@@ -27,12 +27,12 @@ fs::path copy_of_docs() {
   return dir;
 }
 
-void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 void edit_schema(const fs::path& p, const std::function<void(ordered_json&)>& edit) {
   ordered_json j = ordered_json::parse(slurp(p));
   edit(j["properties"]["params"]["properties"]);
-  write(p, j.dump(2) + "\n");
+  write_text(p, j.dump(2) + "\n");
 }
 
 void edit_text(const fs::path& p, const std::string& from, const std::string& to) {
@@ -40,7 +40,7 @@ void edit_text(const fs::path& p, const std::string& from, const std::string& to
   const std::size_t at = text.find(from);
   ASSERT_NE(at, std::string::npos) << from;
   text.replace(at, from.size(), to);
-  write(p, text);
+  write_text(p, text);
 }
 
 // --check on a copy of docs/ edited by `edit` exits 1 and says `expected`; --update repairs it.

@@ -1,6 +1,7 @@
 // Strict loading of an XML recording: the one place that touches pugixml. It
 // refuses oversized files before reading them, DOCTYPE/ENTITY declarations (entity expansion
-// attacks), nesting deeper than kMaxXmlDepth and malformed or truncated XML, each as one
+// attacks), nesting deeper than kMaxXmlDepth, malformed or truncated XML and names, attribute
+// values or text that are not valid UTF-8, each as one
 // mg::InputError line naming the file, and hands the rest on as a plain element tree, so that
 // no other file depends on pugixml.
 #pragma once

@@ -48,6 +48,20 @@ TEST(XmlDocument, RefusesMalformedAndTruncatedXmlInOneLine) {
   }
 }
 
+TEST(XmlDocument, RefusesBytesThatAreNotUtf8NamingTheLineAndTheAttribute) {
+  // 0xA4 alone (what a Latin-1 euro sign leaves in a document read as UTF-8), a truncated
+  // sequence, an overlong '/', a UTF-16 surrogate: each would otherwise reach the JSON reports.
+  for (const std::string bad : {"\xA4", "\xC3", "\xC0\xAF", "\xED\xA0\x80"}) {
+    EXPECT_EQ(xml_error_of("<a>\n<b id=\"x" + bad + "\"/></a>"),
+              "doc.xml: line 2, attribute id of <b>: not valid UTF-8 (byte 1)")
+        << bad;
+    EXPECT_EQ(xml_error_of("<a>t" + bad + "</a>"), "doc.xml: line 1, the text of <a>: not valid UTF-8 (byte 1)") << bad;
+  }
+  const XmlElement ok = parse_xml_strict("<a id=\"\xE2\x82\xAC \xF0\x9F\x9A\x97\">\xC3\xA4</a>", "doc.xml");
+  EXPECT_EQ(*ok.attribute("id"), "\xE2\x82\xAC \xF0\x9F\x9A\x97");
+  EXPECT_EQ(ok.text, "\xC3\xA4");
+}
+
 TEST(XmlDocument, RefusesNestingDeeperThanTheLimit) {
   std::string deep;
   for (int i = 0; i < kMaxXmlDepth + 2; ++i) deep += "<a>";

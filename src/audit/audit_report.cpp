@@ -92,6 +92,12 @@ std::string road_shape_text(const RoadLayout& road) {
          " m, turns by " + num(sh.heading_change_rad, 3) + " rad, largest curvature " + num(sh.max_abs_curvature_per_m, 4) + " 1/m";
 }
 
+std::string road_text(const RecordingAudit& a) {
+  if (a.road == nullptr) return std::string(kNoLaneJoinText);
+  return "ramp " + a.road->ramp.name() + " found by " + a.road->found_by + ", " +
+         (a.road->highway_on_ramp ? "a highway on-ramp (" : "not a highway on-ramp (") + a.road->on_ramp_basis + "); " + road_shape_text(*a.road);
+}
+
 }  // namespace
 
 nlohmann::json counts_json(const RecordingAudit& a) {
@@ -151,7 +157,7 @@ nlohmann::json audit_index_json(const RecordingAudit& a) {
   return {{"format", "mergeguard-audit-index"}, {"version", 1}, {"recording", a.source},
           {"benchmark_id", a.recording->benchmark_id}, {"commonroad_version", a.recording->version},
           {"time_step_s", a.recording->time_step_s}, {"vehicles", a.recording->vehicles.size()},
-          {"set_valued_states", a.recording->set_valued_states}, {"road", road_json(*a.road)},
+          {"set_valued_states", a.recording->set_valued_states}, {"road", a.road ? road_json(*a.road) : nlohmann::json()},
           {"profile", audit_profile_to_json(a.profile)}, {"verdict", recording_verdict(a)}, {"counts", counts_json(a)},
           {"nothing_to_audit", a.nothing_to_audit()}, {"merges", merges}};
 }
@@ -218,8 +224,7 @@ std::string merge_row_frontier(const MergeAudit& m) {
 std::string audit_index_markdown(const RecordingAudit& a) {
   std::string md = "# Audit of " + a.recording->benchmark_id + "\n\n";
   md += "Recording `" + a.source + "` (CommonRoad " + a.recording->version + ", " + std::to_string(a.recording->vehicles.size()) +
-        " vehicles). Profile: " + a.profile.name + ". Road: ramp " + a.road->ramp.name() + " found by " + a.road->found_by + ", " +
-        (a.road->highway_on_ramp ? "a highway on-ramp (" : "not a highway on-ramp (") + a.road->on_ramp_basis + "); " + road_shape_text(*a.road) + ".\n\n";
+        " vehicles). Profile: " + a.profile.name + ". Road: " + road_text(a) + ".\n\n";
   if (!a.nothing_to_audit().empty()) md += a.nothing_to_audit() + ".\n\n";
   md += "Overall: **" + recording_verdict(a) + "**; merges: " + counts_text(a) + ".\n\n";
   if (a.merges.empty()) return md;

@@ -75,7 +75,7 @@ int DatasetIndex::unreadable() const {
 void add_recording(DatasetIndex& d, const RecordingAudit& a, const std::string& path, const std::string& dir) {
   const std::string prefix = dir.empty() ? "" : dir + "/";
   RecordingRow r{path, a.recording->benchmark_id, prefix + "index.md", "", counts_json(a), recording_verdict(a), a.nothing_to_audit()};
-  if (!a.road->highway_on_ramp) r.note += std::string(r.note.empty() ? "" : "; ") + "the join is not a highway on-ramp: " + a.road->on_ramp_basis;
+  if (a.road != nullptr && !a.road->highway_on_ramp) r.note += std::string(r.note.empty() ? "" : "; ") + "the join is not a highway on-ramp: " + a.road->on_ramp_basis;
   d.recordings.push_back(r);
   const double dt = a.recording->time_step_s;
   for (std::size_t i = 0; i < a.merges.size(); ++i) {

@@ -147,6 +147,7 @@ std::string RecordingAudit::nothing_to_audit() const {
   if (recording->vehicles.empty()) {
     return "nothing to audit: the recording has no moving vehicle (" + std::to_string(recording->static_obstacles) + " static obstacles)";
   }
+  if (road == nullptr) return "nothing to audit: " + std::string(kNoLaneJoinText) + ", so no vehicle can merge or change lanes";
   if (changes.empty()) return "nothing to audit: no vehicle changes lanes in the recording";
   return "";
 }
@@ -193,6 +194,14 @@ RecordingAudit audit_recording(const Recording& r, const RoadLayout& road, const
     if (o.only_vehicle && c.vehicle_id != *o.only_vehicle) continue;
     a.merges.push_back(audit_merge(view, c, p, o));
   }
+  return a;
+}
+
+RecordingAudit audit_recording_without_lane_join(const Recording& r, const AuditProfile& p) {
+  RecordingAudit a;
+  a.source = r.source;
+  a.recording = &r;
+  a.profile = p;
   return a;
 }
 

@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "audit/audit_profile.h"
@@ -63,20 +64,27 @@ struct AuditOptions {
   bool frontier = true;             // compute each judged merge's frontier and sweep
 };
 
+// What the reports say of a road on which find_road_layout found no ramp.
+inline constexpr std::string_view kNoLaneJoinText = "no lane joins or runs beside another";
+
 struct RecordingAudit {
   std::string source;
   const Recording* recording = nullptr;
-  const RoadLayout* road = nullptr;
+  const RoadLayout* road = nullptr;  // nullptr: no lane joins or runs beside another
   AuditProfile profile;
   std::vector<LaneChange> changes;  // every one found, audited or not
   std::vector<MergeAudit> merges;
   int count(AuditVerdict v) const;
   bool holds() const { return count(AuditVerdict::kViolated) == 0; }
-  // "nothing to audit": no moving vehicle, or no lane change found.
+  // "nothing to audit": no moving vehicle, no lane joining or beside another, or no lane change
+  // found.
   std::string nothing_to_audit() const;
 };
 
 RecordingAudit audit_recording(const Recording& r, const RoadLayout& road, const AuditProfile& p, const AuditOptions& o = {});
+// The audit of a recording whose road has no lane joining or beside another (find_road_layout
+// found none): nothing to audit.
+RecordingAudit audit_recording_without_lane_join(const Recording& r, const AuditProfile& p);
 // One lane change of a recording's view, as audit_recording audits it.
 MergeAudit audit_merge(const RecordingView& v, const LaneChange& c, const AuditProfile& p, const AuditOptions& o);
 

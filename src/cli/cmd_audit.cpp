@@ -43,11 +43,17 @@ struct AuditArgs {
   std::optional<double> calibrate;
 };
 
+std::string road_line(const RecordingAudit& a) {
+  if (a.road == nullptr) return std::string(kNoLaneJoinText);
+  const RoadLayout& r = *a.road;
+  return "ramp " + r.ramp.name() + ", " + std::to_string(r.main_lanes.size()) + (r.main_lanes.size() == 1 ? " main lane (" : " main lanes (") + r.found_by +
+         "); " + (r.highway_on_ramp ? "a highway on-ramp (" : "not a highway on-ramp (") + r.on_ramp_basis + ")";
+}
+
 void print_summary(const RecordingAudit& a, const std::string& report_dir) {
   std::cout << "recording: " << a.recording->benchmark_id << " (CommonRoad " << a.recording->version << ", "
             << a.recording->vehicles.size() << " vehicles)\n"
-            << "road:      ramp " << a.road->ramp.name() << ", " << a.road->main_lanes.size() << (a.road->main_lanes.size() == 1 ? " main lane (" : " main lanes (")
-            << a.road->found_by << "); " << (a.road->highway_on_ramp ? "a highway on-ramp (" : "not a highway on-ramp (") << a.road->on_ramp_basis << ")\n"
+            << "road:      " << road_line(a) << "\n"
             << "profile:   " << a.profile.name << "\n";
   if (!a.nothing_to_audit().empty()) std::cout << "note:      " << a.nothing_to_audit() << "\n";
   std::cout << "merges:    " << counts_text(a) << "\n";
@@ -83,15 +89,20 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
 
 AuditOptions options_of(const AuditArgs& a) { return {a.vehicle, a.all_lane_joins, true}; }
 
+// A road without a lane join has nothing to audit (docs/audit.md "Nothing to audit").
+RecordingAudit audit_of(const Recording& r, const std::optional<RoadLayout>& road, const AuditProfile& p, const AuditOptions& o) {
+  return road ? audit_recording(r, *road, p, o) : audit_recording_without_lane_join(r, p);
+}
+
 int run_single(const AuditArgs& args, const AuditProfile& profile) {
   const std::string& path = args.inputs.front();
   const Recording recording = load_recording(path);
-  const RoadLayout road = build_road_layout(recording);
+  const std::optional<RoadLayout> road = find_road_layout(recording);
   if (args.vehicle && std::none_of(recording.vehicles.begin(), recording.vehicles.end(), [&](const RecordedVehicle& v) { return v.id == *args.vehicle; })) {
     throw InputError(path, "--vehicle", "no dynamic obstacle " + std::to_string(*args.vehicle) + " in the recording");
   }
   if (!args.report_dir.empty()) prepare_output_dir("--report", args.report_dir);
-  const RecordingAudit a = audit_recording(recording, road, profile, options_of(args));
+  const RecordingAudit a = audit_of(recording, road, profile, options_of(args));
   if (!args.report_dir.empty()) write_audit_reports(args.report_dir, a);
   if (args.json) {
     std::cout << audit_index_json(a).dump(2) << "\n";
@@ -121,8 +132,8 @@ DatasetIndex audit_all(const std::vector<std::string>& files, const AuditProfile
     std::cerr << "[" << i + 1 << "/" << files.size() << "] " << files[i] << ": ";
     try {
       const Recording recording = load_recording(files[i]);
-      const RoadLayout road = build_road_layout(recording);
-      const RecordingAudit a = audit_recording(recording, road, profile, o);
+      const std::optional<RoadLayout> road = find_road_layout(recording);
+      const RecordingAudit a = audit_of(recording, road, profile, o);
       const std::string sub = recording_dir_name(i, files[i]);
       if (!dir.empty()) {
         fs::create_directories(dir + "/" + sub);
@@ -148,6 +159,7 @@ DatasetIndex calibrate(const std::vector<std::string>& files, const AuditProfile
   AuditOptions first = options_of(args);
   first.frontier = false;
   const DatasetIndex before = audit_all(files, base, first, "", [&](const RecordingAudit& a) {
+    if (a.road == nullptr) return;
     const RecordingView view = view_recording(*a.recording, *a.road, base);
     for (const MergeAudit& m : a.merges) verdicts.push_back(calibration_verdicts(view, m.merge.change, base, first));
   });

@@ -6,6 +6,7 @@
 // bug. An executable beside the reader, not part of mg_recording: only it links the audit.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -20,8 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const mg::AuditProfile profile = mg::default_audit_profile();
   try {
     const mg::Recording r = mg::parse_recording(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz input");
-    const mg::RoadLayout road = mg::build_road_layout(r);
-    const mg::RecordingAudit audit = mg::audit_recording(r, road, profile);
+    const std::optional<mg::RoadLayout> road = mg::find_road_layout(r);
+    const mg::RecordingAudit audit = road ? mg::audit_recording(r, *road, profile) : mg::audit_recording_without_lane_join(r, profile);
     // The index carries the recording's own strings (benchmark id, obstacle types) into JSON and
     // Markdown.
     static_cast<void>(mg::audit_index_json(audit).dump());

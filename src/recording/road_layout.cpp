@@ -265,7 +265,7 @@ std::string Lane::name() const {
   return s;
 }
 
-RoadLayout build_road_layout(const Recording& r) {
+std::optional<RoadLayout> find_road_layout(const Recording& r) {
   LaneletMap by_id;
   for (const Lanelet& l : r.lanelets) by_id[l.id] = &l;
   Chains ch;
@@ -275,7 +275,7 @@ RoadLayout build_road_layout(const Recording& r) {
   }
   std::optional<RampChoice> rc = ramp_by_type(ch, by_id);
   if (!rc) rc = ramp_by_topology(ch, by_id);
-  if (!rc) throw InputError(r.source, "lanelets", "no ramp found (no accessRamp lanelet, no lane joining another, no rightmost lane ending beside a main lane)");
+  if (!rc) return std::nullopt;
   const std::vector<std::size_t> order = main_lane_order(ch, *rc, by_id);
   RoadLayout road{ReferenceLine(make_lane(ch.lanes[rc->joins], by_id, r.source).centre), {}, make_lane(ch.lanes[rc->ramp], by_id, r.source), rc->side, 0, 0, 0, rc->found_by, true, ""};
   double width = 0.0;
@@ -295,6 +295,12 @@ RoadLayout build_road_layout(const Recording& r) {
   }
   classify_join(r, ch.lanes[rc->ramp], ch.lanes[rc->joins], by_id, road);
   return road;
+}
+
+RoadLayout build_road_layout(const Recording& r) {
+  std::optional<RoadLayout> road = find_road_layout(r);
+  if (!road) throw InputError(r.source, "lanelets", "no ramp found (no accessRamp lanelet, no lane joining another, no rightmost lane ending beside a main lane)");
+  return std::move(*road);
 }
 
 }  // namespace mg

@@ -5,6 +5,7 @@
 // every lane's centre is known as a function of s.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,12 @@ struct RoadLayout {
 inline constexpr double kRampMinAlongsideM = 30.0;
 inline constexpr double kRampMinSpeedLimitMps = 60.0 / 3.6;
 
-// Raises InputError (file, lanelet, problem) when no ramp is found or the lanes are unusable.
+// The road around the ramp, or nullopt when no lane joins or runs beside another (none of the
+// three readings of docs/audit.md "The road" finds a ramp): no vehicle of such a recording can
+// merge or change lanes, so it has nothing to audit. Raises InputError (file, lanelet, problem)
+// when the lanes are unusable.
+std::optional<RoadLayout> find_road_layout(const Recording& r);
+// As find_road_layout, raising InputError "no ramp found" where it finds none.
 RoadLayout build_road_layout(const Recording& r);
 
 // The centre line of a lanelet: its bounds resampled to a common count and averaged.

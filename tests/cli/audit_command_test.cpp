@@ -140,7 +140,7 @@ TEST(AuditCommand, RefusesEveryHostileRecordingInOneLineWritingNothing) {
   int hostile = 0;
   for (const auto& entry : fs::directory_iterator(kHostile)) {
     const std::string name = entry.path().filename().string();
-    if (entry.path().extension() != ".xml" || name == "valid.xml" || name == "set_valued.xml") continue;
+    if (entry.path().extension() != ".xml" || name == "valid.xml" || name == "set_valued.xml" || name == "no_lane_join.xml") continue;
     ++hostile;
     const fs::path out = unused_path("audit_hostile");
     const CliResult r = run_cli({"audit", entry.path().string(), "--report", out.string()});
@@ -150,7 +150,25 @@ TEST(AuditCommand, RefusesEveryHostileRecordingInOneLineWritingNothing) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << name << ": " << r.err;
     EXPECT_FALSE(fs::exists(out)) << name << ": something was written";
   }
-  EXPECT_EQ(hostile, 12);  // with no_ramp.xml: a road with no lane joining or beside another
+  EXPECT_EQ(hostile, 12);  // with not_utf8.xml: a benchmark id that is not UTF-8
+}
+
+TEST(AuditCommand, ARoadWithNoLaneJoinHasNothingToAudit) {
+  const fs::path out = unused_path("audit_no_join");
+  const CliResult r = run_cli({"audit", (kHostile / "no_lane_join.xml").string(), "--report", out.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("road:      no lane joins or runs beside another\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nothing to audit: no lane joins or runs beside another, so no vehicle can merge or change lanes"), std::string::npos) << r.out;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out / "index.json"));
+  EXPECT_TRUE(j["road"].is_null());
+  EXPECT_EQ(j["verdict"], "nothing to audit");
+  EXPECT_EQ(j["merges"].size(), 0u);
+  const CliResult dataset = run_cli({"audit", (kHostile / "no_lane_join.xml").string(), (kHostile / "valid.xml").string(), "--json"});
+  EXPECT_LE(dataset.exit_code, 1) << dataset.err;
+  const nlohmann::json d = nlohmann::json::parse(dataset.out);
+  ASSERT_EQ(d["recordings"].size(), 2u) << dataset.out;
+  EXPECT_NE(d["recordings"][0]["note"].get<std::string>().find("no lane joins"), std::string::npos) << dataset.out;
+  fs::remove_all(out);
 }
 
 TEST(AuditCommand, RefusesAVehicleThatIsNotInTheRecording) {

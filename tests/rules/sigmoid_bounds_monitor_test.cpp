@@ -234,7 +234,7 @@ TEST(SigmoidBoundsMonitor, PartnerNearerThanItsAcceptedProfileAnswersForTheMargi
   s.vehicles = {vehicle(1, -45.075, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
   ASSERT_FALSE(out.result.holds);
-  EXPECT_EQ(out.result.liable_id, 1);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(out.result.min_margin, -0.1, 0.01);
 }
 

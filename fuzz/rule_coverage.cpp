@@ -12,7 +12,7 @@ const char* const kNoV2vRequests =
 std::map<std::string, std::string> definition2_rules() {
   std::map<std::string, std::string> out;
   for (const char* id : {"def2_1a_request", "def2_1b_responder", "def2_2a_ego_brake", "def2_2b_responder", "def2_3_fallback",
-                         "def2_request_sound", "def2_positions"})
+                         "def2_request_sound", "def2_positions", "def2_request_truthful"})
     out[id] = kNoV2vRequests;
   return out;
 }

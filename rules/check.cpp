@@ -18,6 +18,7 @@
 #include "rules/road_monitor.h"
 #include "rules/rss_distance_monitor.h"
 #include "rules/sigmoid_bounds_monitor.h"
+#include "rules/situation.h"
 #include "rules/smoothness_monitor.h"
 
 namespace mg {
@@ -38,6 +39,7 @@ std::span<const MonitorFn> rule_monitors() {
       monitor_def2_3_fallback,
       monitor_def2_request_sound,
       monitor_def2_positions,
+      monitor_def2_request_truthful,
       monitor_sigmoid_pc_bounds,
       monitor_collision,
       monitor_on_road,
@@ -74,14 +76,13 @@ CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams
       trace.planner_annotations["planner"].is_string())
     r.planner = trace.planner_annotations["planner"].get<std::string>();  // shown, never judged
   const RuleParams params = rules.value_or(trace.params.rules);
-  const MergePhases phases = observe_merge_phases(trace, params);
+  // Stages: what happened (once), each rule over it, then liability and the report.
+  const Situation s = observe_situation(trace, params);
   r.rule_params = params;
-  for (const MergePhaseEvent& e : phases.events) r.merge_phase_times_s.push_back(e.time_s);
-  const MergeAttempts attempts = observe_merge_attempts(trace, params, phases);
-  const RightOfWay row = compute_right_of_way(trace, attempts);
-  r.right_of_way = row.timeline;
-  for (const MergeAttempt& a : attempts.attempts) r.right_of_way_observations.push_back(a.observation);
-  r.rules = run_monitors(MonitorContext{trace, row, params, phases, attempts}, nullptr);
+  for (const MergePhaseEvent& e : s.phases.events) r.merge_phase_times_s.push_back(e.time_s);
+  r.right_of_way = s.row.timeline;
+  for (const MergeAttempt& a : s.attempts.attempts) r.right_of_way_observations.push_back(a.observation);
+  r.rules = run_monitors(MonitorContext{trace, s.row, params, s.phases, s.attempts, s.exchanges}, nullptr);
   for (const RuleResult& rule : r.rules) r.holds = r.holds && rule.holds;
   assign_liability(r);
   r.trace_digest = trace_digest(trace);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <vector>
 
 #include "rules/definition1_gap.h"
 
@@ -11,26 +13,56 @@ namespace {
 
 enum class GapSide { kFollower, kLeader };
 
-// An attempt judged by Definition 1 (neither granted by Definition 2 nor made on a late acceptance,
-// which is def2_3's): its margin toward the side's gap vehicle, >= 0 when the ego held the right
-// of way by Definition 1.
+// The margin and the vehicle a def1 gap rule judges for an attempt that entered the main lane:
+// for an attempt that reached its midpoint, Definition 1 toward the gap entered's vehicle of that
+// side unless that vehicle's own acceptance covers it (rules/merge_attempts.h); for one that did
+// not, the Definition 1 reading's gap. Nothing for an attempt made on a late acceptance
+// (def2_3_fallback's) or on one from a lying request (def2_request_truthful's).
+struct GapJudgement {
+  int vehicle = -1;
+  double margin_m = 0.0;
+  bool pair = false;  // Definition 1 for the pair alone (the vehicle is not of the reading's gap)
+};
+
+std::optional<GapJudgement> gap_judgement(const MergeAttempt& a, GapSide side) {
+  if (!a.entry_step || a.fault != AcceptanceFault::kNone) return std::nullopt;
+  const bool follower = side == GapSide::kFollower;
+  if (a.midpoint_time_s) {
+    const PairCover& c = follower ? a.follower : a.leader;
+    if (c.vehicle < 1 || c.by == Cover::kDef2 || !std::isfinite(c.margin_m)) return std::nullopt;
+    const bool member = a.basis != RowBasis::kDef2 && (c.vehicle == a.gap.follower || c.vehicle == a.gap.leader);
+    return GapJudgement{c.vehicle, c.margin_m, !member};
+  }
+  if (a.basis == RowBasis::kDef2 || !a.def1_read) return std::nullopt;
+  const int k = follower ? a.gap.follower : a.gap.leader;
+  if (k < 1) return std::nullopt;  // open side of the gap: nothing to satisfy
+  return GapJudgement{k, follower ? a.def1.margin_11_m : a.def1.margin_12_m, false};
+}
+
+// Definition 1's margin toward the side's vehicle of each attempt, >= 0 when the ego held the
+// right of way toward it by Definition 1 (a Definition 2 acceptance of the other vehicle's
+// included, whose gap's other vehicle Definition 1 judges for the pair at the request).
 MonitorOutput monitor_gap_inequality(const MonitorContext& ctx, GapSide side) {
   const ObservedTrace& t = ctx.trace;
-  MarginAccumulator acc(side == GapSide::kFollower ? "def1_1_gap" : "def1_2_gap", t.steps.size());
+  const bool follower = side == GapSide::kFollower;
+  MarginAccumulator acc(follower ? "def1_1_gap" : "def1_2_gap", t.steps.size());
   for (const MergeAttempt& a : ctx.attempts.attempts) {
-    // An attempt that stayed in the side lane took nobody's room.
-    if (a.basis == RowBasis::kDef2 || a.exchange || !a.def1_read || !a.entry_step) continue;
-    const int k = side == GapSide::kFollower ? a.gap.follower : a.gap.leader;
-    if (k < 1) continue;  // open side of the gap: nothing to satisfy
-    const Def1Reading& r = a.def1;
-    const double m = side == GapSide::kFollower ? r.margin_11_m : r.margin_12_m;
-    if (acc.record(*a.entry_step, *a.entry_time_s, m, Party::ego(), 0.0, m)) {
+    const std::optional<GapJudgement> g = gap_judgement(a, side);
+    if (!g) continue;
+    if (acc.record(*a.entry_step, *a.entry_time_s, g->margin_m, Party::ego(), 0.0, g->margin_m)) {
+      const Def1Reading& r = a.def1;
       std::ostringstream os;
       os << "ego entered the main lane at t = " << *a.entry_time_s << " s (merge started at t = " << a.start_time_s
-         << " s) without the right of way: at the best instant "
-         << "of its decision window (t = " << r.time_s << " s, v_e* = " << r.ve_star_mps << " m/s, rho = " << r.rho_s
-         << " s) " << (side == GapSide::kFollower ? "ineq. (1) toward follower " : "ineq. (2) toward leader ")
-         << party_name(party_of(t, static_cast<std::size_t>(k))) << " fails by " << -m << " m";
+         << " s) without the right of way toward " << (follower ? "follower " : "leader ")
+         << party_name(party_of(t, static_cast<std::size_t>(g->vehicle))) << ": ";
+      if (a.basis == RowBasis::kDef2 || (g->pair && !a.def1_read)) {
+        os << "Def. 1 for the pair at the request of the other vehicle's acceptance fails by " << -g->margin_m << " m";
+      } else {
+        os << "at the best instant of its decision window (t = " << r.time_s << " s, v_e* = " << r.ve_star_mps
+           << " m/s, rho = " << r.rho_s << " s) " << (follower ? "ineq. (1)" : "ineq. (2)")
+           << (g->pair ? " for the pair (it is no vehicle of the gap read)" : "") << " fails by " << -g->margin_m
+           << " m";
+      }
       acc.set_detail(os.str());
     }
   }
@@ -39,38 +71,52 @@ MonitorOutput monitor_gap_inequality(const MonitorContext& ctx, GapSide side) {
 
 enum class LimitKind { kAccel, kBrake };
 
-// Margin of a main-lane vehicle's declared limit over [T_dec, T_dec + window].
-MonitorOutput monitor_window_limit(const MonitorContext& ctx, LimitKind kind) {
+// The vehicles whose limit Definition 1 counted on for an attempt it granted: the reading's
+// gap vehicle of that side, and the gap entered's vehicle of that side when Definition 1 covered
+// it for the pair at the reading.
+std::vector<int> def1_counted_on(const MergeAttempt& a, LimitKind kind) {
+  const bool accel = kind == LimitKind::kAccel;
+  std::vector<int> out;
+  if (const int k = accel ? a.gap.follower : a.gap.leader; k >= 1) out.push_back(k);
+  const PairCover& c = accel ? a.follower : a.leader;
+  if (c.by == Cover::kDef1Pair && c.vehicle >= 1 && (out.empty() || out.front() != c.vehicle)) out.push_back(c.vehicle);
+  return out;
+}
+
+// Margin of main-lane vehicle k's declared limit over [T_dec, T_dec + window].
+void window_limit(const MonitorContext& ctx, const MergeAttempt& a, LimitKind kind, int k, MarginAccumulator& acc) {
   const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
-  MarginAccumulator acc(kind == LimitKind::kAccel ? "def1_1_follower" : "def1_2_leader", steps.size());
   const double tol = ctx.params.accel_tolerance_mps2;
+  const Party other = party_of(s, static_cast<std::size_t>(k));
+  const Limits& lim = limits_of(s, static_cast<std::size_t>(k));
+  const double from_s = a.decision_time_s;
+  // The paper's windows, [T_dec, T_dec + rho/2] and [T_dec, T_dec + rho], stretched to the
+  // observed midpoint and completion when the merge took longer than rho says.
+  double until_s = from_s + (kind == LimitKind::kAccel ? a.def1.rho_s / 2.0 : a.def1.rho_s);
+  if (kind == LimitKind::kAccel && a.midpoint_time_s) until_s = std::max(until_s, *a.midpoint_time_s);
+  if (kind == LimitKind::kBrake && a.completed) until_s = std::max(until_s, *a.end_time_s);
+  for (std::size_t i = a.def1.step; i < steps.size() && steps[i].time_s <= until_s + 1e-9; ++i) {
+    const double accel = state_of(steps[i], static_cast<std::size_t>(k)).accel_mps2;
+    const double limit = kind == LimitKind::kAccel ? lim.accel_max_mps2 : lim.brake_max_mps2;
+    const double m = kind == LimitKind::kAccel ? limit + tol - accel : limit + tol + accel;
+    if (acc.record(i, steps[i].time_s, m, other, limit, kind == LimitKind::kAccel ? accel : -accel)) {
+      std::ostringstream os;
+      os << party_name(other) << (kind == LimitKind::kAccel ? " accelerated at " : " braked at ") << std::abs(accel)
+         << " m/s2, beyond its declared " << (kind == LimitKind::kAccel ? "a_accel^max " : "a_brake^max ") << limit
+         << " m/s2, in the Def. 1." << (kind == LimitKind::kAccel ? "1" : "2")
+         << " window of the merge the ego had the right of way for from t = " << from_s << " s";
+      acc.set_detail(os.str());
+    }
+  }
+}
+
+// Definition 1.1 / 1.2's bounds on the vehicles Definition 1 counted on.
+MonitorOutput monitor_window_limit(const MonitorContext& ctx, LimitKind kind) {
+  MarginAccumulator acc(kind == LimitKind::kAccel ? "def1_1_follower" : "def1_2_leader", ctx.trace.steps.size());
   for (const MergeAttempt& a : ctx.attempts.attempts) {
     if (a.basis != RowBasis::kDef1) continue;
-    const int k = kind == LimitKind::kAccel ? a.gap.follower : a.gap.leader;
-    if (k < 1) continue;
-    const Party other = party_of(s, static_cast<std::size_t>(k));
-    const Limits& lim = limits_of(s, static_cast<std::size_t>(k));
-    const double from_s = a.decision_time_s;
-    // The paper's windows, [T_dec, T_dec + rho/2] and [T_dec, T_dec + rho], stretched to the
-    // observed midpoint and completion when the merge took longer than rho says.
-    double until_s = from_s + (kind == LimitKind::kAccel ? a.def1.rho_s / 2.0 : a.def1.rho_s);
-    if (kind == LimitKind::kAccel && a.midpoint_time_s) until_s = std::max(until_s, *a.midpoint_time_s);
-    if (kind == LimitKind::kBrake && a.completed) until_s = std::max(until_s, *a.end_time_s);
-    for (std::size_t i = a.def1.step; i < steps.size() && steps[i].time_s <= until_s + 1e-9; ++i) {
-      const double a = state_of(steps[i], static_cast<std::size_t>(k)).accel_mps2;
-      const double limit = kind == LimitKind::kAccel ? lim.accel_max_mps2 : lim.brake_max_mps2;
-      const double m = kind == LimitKind::kAccel ? limit + tol - a : limit + tol + a;
-      if (acc.record(i, steps[i].time_s, m, other, limit, kind == LimitKind::kAccel ? a : -a)) {
-        std::ostringstream os;
-        os << party_name(other) << (kind == LimitKind::kAccel ? " accelerated at " : " braked at ")
-           << std::abs(a) << " m/s2, beyond its declared "
-           << (kind == LimitKind::kAccel ? "a_accel^max " : "a_brake^max ") << limit << " m/s2, in the Def. 1."
-           << (kind == LimitKind::kAccel ? "1" : "2") << " window of the merge the ego had the right of way for from t = "
-           << from_s << " s";
-        acc.set_detail(os.str());
-      }
-    }
+    for (const int k : def1_counted_on(a, kind)) window_limit(ctx, a, kind, k, acc);
   }
   return acc.finish();
 }

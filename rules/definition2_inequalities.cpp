@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "core/rss.h"
 #include "rules/coop_exchange.h"
@@ -15,6 +17,51 @@ double ramp_distance_m(double v0_mps, double v_star_mps, double ramp_s, double t
   const double t = std::min(tau_s, ramp_s);
   const double v_t = v0_mps + (v_star_mps - v0_mps) * t / ramp_s;
   return 0.5 * (v0_mps + v_t) * t + v_star_mps * std::max(0.0, tau_s - ramp_s);
+}
+
+ProfileBound accepted_profile_bound(const MonitorContext& ctx, const CoopExchange& x, std::size_t k, double time_s) {
+  return accepted_profile_bound(ctx.trace, ctx.params, x, k, time_s);
+}
+
+bool responder_broke_acceptance(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x, std::size_t k,
+                                double until_s) {
+  if (x.accept_time_s < 0.0 || t.steps.empty()) return false;
+  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
+  for (std::size_t i = step_at(t, x.accept_time_s); i < t.steps.size() && t.steps[i].time_s <= until_s + kTieS; ++i) {
+    const ProfileBound b = accepted_profile_bound(t, p, x, k, t.steps[i].time_s);
+    if (!b.valid) break;
+    const double pos = state_of(t.steps[i], k).x_m;
+    if (ahead ? pos > b.bound_x_m : pos < b.bound_x_m) return true;
+  }
+  return false;
+}
+
+ProfileBound accepted_profile_bound(const ObservedTrace& s, const RuleParams& p, const CoopExchange& x, std::size_t k,
+                                    double time_s) {
+  ProfileBound b;
+  if (x.accept_time_s < 0.0 || !x.complete() || s.steps.empty() ||
+      time_s > x.sent_time_s + p.comm_threshold_s + p.merge_duration_s + kTieS)
+    return b;
+  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
+  const double v_star = ahead ? x.request->target_speed_mps : std::min(x.request->target_speed_mps, s.road.speed_limit_mps);
+  const ObservedState& at_accept = state_of(s.steps[step_at(s, x.accept_time_s)], k);
+  const double v_a = std::max(0.0, speed_of(at_accept));
+  const double tau = std::max(0.0, time_s - x.accept_time_s);
+  const double tol_mps = p.yield_speed_tolerance_mps;
+  const auto on_ramp = [&](double ramp_s) {
+    return std::pair{at_accept.x_m + ramp_distance_m(v_a, v_star, ramp_s, tau),
+                     ramp_s <= 0.0 || tau >= ramp_s ? v_star : v_a + (v_star - v_a) * tau / ramp_s};
+  };
+  // Ineq. (3)/(4): v_o* by t_r + rho_c. def2_positions: its response time T on top.
+  const double t_paper_s = x.sent_time_s + p.comm_threshold_s;
+  const auto [x_paper, v_paper] = on_ramp(t_paper_s - x.accept_time_s);
+  const auto [x_late, v_late] = on_ramp(t_paper_s + s.params.rss.response_time_s - x.accept_time_s);
+  b.valid = true;
+  b.profile_x_m = x_paper;
+  b.profile_v_mps = v_paper;
+  b.bound_x_m = ahead ? x_late + tol_mps * tau : x_late - tol_mps * tau;
+  b.bound_v_mps = ahead ? v_late + tol_mps : std::max(0.0, v_late - tol_mps);
+  return b;
 }
 
 namespace {
@@ -69,37 +116,44 @@ double soundness_2_2_m(const MonitorContext& ctx, const RequestView& r, std::str
   return std::min(m4, m_reach);
 }
 
-// The responder after it accepted (at t_a, x_a, v_a): the profile it accepted reaches v_o* by
-// the responder rules' deadline t_r + rho_c + T and holds it; 2.1: it is no farther along than
-// that profile (ineq. (3) counts on it being behind P_c - D*_lon), 2.2: no less far (ineq. (4)
-// counts on it being ahead). Within yield_speed_tolerance_mps of travel per second.
+// The responder after it accepted: no farther along (2.1: ineq. (3) counts on it being behind
+// P_c - D*_lon) / no less far (2.2: ineq. (4) counts on it being ahead) than its accepted profile
+// and its tolerance allow (accepted_profile_bound).
 void responder_positions(const MonitorContext& ctx, const CoopExchange& x, MarginAccumulator& acc) {
   const ObservedTrace& s = ctx.trace;
   const Party partner = Party::from_vehicle_id(x.request->to_id);
   const int k = index_of_party(s, partner);
   if (k < 1) return;
   const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
-  const double v_star = ahead ? x.request->target_speed_mps : std::min(x.request->target_speed_mps, s.road.speed_limit_mps);
-  const std::size_t first = step_at(s, x.accept_time_s);
-  const ObservedState& at_accept = state_of(s.steps[first], static_cast<std::size_t>(k));
-  const double deadline = x.request_time_s + ctx.params.comm_threshold_s + s.params.rss.response_time_s;
   const double end = std::min(merge_midpoint_after(ctx.phases, x.accept_time_s),
-                              x.request_time_s + ctx.params.comm_threshold_s + ctx.params.merge_duration_s);
-  for (std::size_t i = first; i < s.steps.size() && s.steps[i].time_s <= end + kTieS; ++i) {
-    const double tau = s.steps[i].time_s - x.accept_time_s;
-    const double bound = at_accept.x_m + ramp_distance_m(std::max(0.0, speed_of(at_accept)), v_star,
-                                                         deadline - x.accept_time_s, tau);
-    const double tol = ctx.params.yield_speed_tolerance_mps * tau;
+                              x.sent_time_s + ctx.params.comm_threshold_s + ctx.params.merge_duration_s);
+  for (std::size_t i = step_at(s, x.accept_time_s); i < s.steps.size() && s.steps[i].time_s <= end + kTieS; ++i) {
+    const ProfileBound b = accepted_profile_bound(ctx, x, static_cast<std::size_t>(k), s.steps[i].time_s);
+    if (!b.valid) continue;
     const double pos = state_of(s.steps[i], static_cast<std::size_t>(k)).x_m;
-    if (acc.record(i, s.steps[i].time_s, ahead ? bound + tol - pos : pos - (bound - tol), partner, bound, pos)) {
+    if (acc.record(i, s.steps[i].time_s, ahead ? b.bound_x_m - pos : pos - b.bound_x_m, partner, b.bound_x_m, pos)) {
       std::ostringstream os;
       os << party_name(partner) << " accepted the Def. 2." << (ahead ? "1" : "2") << " request of t = "
-         << x.request_time_s << " s (v_o* = " << v_star << " m/s) but was at x = " << pos << " m at t = "
-         << s.steps[i].time_s << " s, " << (ahead ? "ahead of" : "behind") << " its accepted profile (x = " << bound
-         << " m): ineq. (" << (ahead ? "3" : "4") << ") counted on it";
+         << x.sent_time_s << " s (v_o* = " << x.request->target_speed_mps << " m/s) but was at x = " << pos
+         << " m at t = " << s.steps[i].time_s << " s, " << (ahead ? "ahead of" : "behind")
+         << " its accepted profile (x = " << b.bound_x_m << " m with its tolerance): ineq. (" << (ahead ? "3" : "4")
+         << ") counted on it";
       acc.set_detail(os.str());
     }
   }
+}
+
+// A request that lacks P_c, D*_lon or v_o* asks for a cooperation nobody can check: it fails
+// (a missing number is never skipped), with -1 m, the margin def2_1a_request gives one too.
+void missing_numbers(const CoopExchange& x, std::size_t step, MarginAccumulator& acc) {
+  const V2vMessage& m = *x.request;
+  std::string missing;
+  for (const auto& [name, v] : {std::pair{"P_c", m.pc_m}, std::pair{"D*_lon", m.d_lon_star_m},
+                                std::pair{"v_o*", m.target_speed_mps}})
+    if (!std::isfinite(v)) missing += std::string(missing.empty() ? "" : ", ") + name;
+  if (acc.record(step, x.sent_time_s, -1.0, Party::ego(), 0.0, -1.0))
+    acc.set_detail("the request to " + party_name(Party::from_vehicle_id(m.to_id)) + " at t = " + std::to_string(x.sent_time_s) +
+                   " s carries no " + missing + ": nothing can be checked of it");
 }
 
 }  // namespace
@@ -107,8 +161,9 @@ void responder_positions(const MonitorContext& ctx, const CoopExchange& x, Margi
 MonitorOutput monitor_def2_positions(const MonitorContext& ctx) {
   MarginAccumulator acc("def2_positions", ctx.trace.steps.size());
   if (ctx.trace.steps.empty()) return acc.finish();
-  for (const CoopExchange& x : coop_exchanges(ctx.trace)) {
-    if (x.accept_time_s >= 0.0) responder_positions(ctx, x, acc);
+  for (const CoopExchange& x : ctx.exchanges) {
+    // A request without v_o* binds no responder (def2_request_sound fails the ego for it).
+    if (x.accept_time_s >= 0.0 && x.complete()) responder_positions(ctx, x, acc);
   }
   return acc.finish();
 }
@@ -117,19 +172,23 @@ MonitorOutput monitor_def2_request_sound(const MonitorContext& ctx) {
   const ObservedTrace& s = ctx.trace;
   MarginAccumulator acc("def2_request_sound", s.steps.size());
   if (s.steps.empty()) return acc.finish();
-  for (const CoopExchange& x : coop_exchanges(s)) {
+  for (const CoopExchange& x : ctx.exchanges) {
     const V2vMessage& m = *x.request;
     const int k = s.index_of(m.to_id);
-    if (k < 1 || !std::isfinite(m.pc_m + m.d_lon_star_m + m.target_speed_mps)) continue;  // def2_1a's
-    const std::size_t i = step_at(s, x.request_time_s);
+    if (k < 1) continue;
+    const std::size_t i = step_at(s, x.sent_time_s);
+    if (!x.complete()) {
+      missing_numbers(x, i, acc);
+      continue;
+    }
     const RequestView r{m, k, ego_of(s.steps[i]), state_of(s.steps[i], static_cast<std::size_t>(k))};
     std::string what;
     const bool ahead = m.coop_case == CoopCase::kEgoAhead;
     const double margin = ahead ? soundness_2_1_m(ctx, r, what) : soundness_2_2_m(ctx, r, what);
-    if (acc.record(i, x.request_time_s, margin, Party::ego(), 0.0, margin)) {
+    if (acc.record(i, x.sent_time_s, margin, Party::ego(), 0.0, margin)) {
       std::ostringstream os;
       os << "the Def. 2." << (ahead ? "1" : "2") << " request to " << party_name(Party::from_vehicle_id(m.to_id)) << " at t = "
-         << x.request_time_s << " s (v_o* = " << m.target_speed_mps << " m/s) was unsound when sent: " << what
+         << x.sent_time_s << " s (v_o* = " << m.target_speed_mps << " m/s) was unsound when sent: " << what
          << " by " << -margin << " m";
       acc.set_detail(os.str());
     }

@@ -9,22 +9,54 @@
 
 namespace mg {
 
-bool RightOfWay::ego_holds_at(double time_s) const {
-  for (const auto& [from, to] : ego_holds) {
+namespace {
+
+bool holds_at(const RightOfWay::Intervals& v, double time_s) {
+  for (const auto& [from, to] : v)
     if (time_s >= from && time_s < to) return true;
-  }
   return false;
 }
 
-bool RightOfWay::ego_held_within(double from_s, double to_s) const {
-  for (const auto& [from, to] : ego_holds) {
+bool held_within(const RightOfWay::Intervals& v, double from_s, double to_s) {
+  for (const auto& [from, to] : v)
     if (from <= to_s && to > from_s) return true;
-  }
   return false;
+}
+
+// The intervals of one attempt toward vehicle k: its cover's, for a vehicle of the gap it
+// entered; the attempt's as a whole for any other.
+void add_toward(RightOfWay& row, const MergeAttempt& a, double end_s) {
+  for (std::size_t k = 1; k < row.toward.size(); ++k) {
+    const int v = static_cast<int>(k);
+    const PairCover* c = v == a.follower.vehicle ? &a.follower : v == a.leader.vehicle ? &a.leader : nullptr;
+    double from_s = a.decision_time_s;
+    if (c != nullptr) {
+      if (c->by == Cover::kNone) continue;
+      from_s = c->from_s;
+    } else if (a.basis == RowBasis::kNone) {
+      continue;
+    }
+    if (from_s < end_s) row.toward[k].emplace_back(from_s, end_s);
+  }
+}
+
+}  // namespace
+
+bool RightOfWay::ego_holds_at(double time_s) const { return holds_at(ego_holds, time_s); }
+
+bool RightOfWay::ego_held_within(double from_s, double to_s) const { return held_within(ego_holds, from_s, to_s); }
+
+bool RightOfWay::ego_holds_toward_at(std::size_t k, double time_s) const {
+  return k < toward.size() ? holds_at(toward[k], time_s) : ego_holds_at(time_s);
+}
+
+bool RightOfWay::ego_held_toward_within(std::size_t k, double from_s, double to_s) const {
+  return k < toward.size() ? held_within(toward[k], from_s, to_s) : ego_held_within(from_s, to_s);
 }
 
 RightOfWay compute_right_of_way(const ObservedTrace& t, const MergeAttempts& attempts) {
   RightOfWay row;
+  row.toward.resize(t.vehicles.size());
   const Party traffic = t.vehicles.size() <= 1 ? Party::nobody() : Party::main_lane();
   const double end = std::numeric_limits<double>::infinity();
   Party holder = traffic;
@@ -41,6 +73,7 @@ RightOfWay compute_right_of_way(const ObservedTrace& t, const MergeAttempts& att
     }
   };
   for (const MergeAttempt& a : attempts.attempts) {
+    add_toward(row, a, a.end_time_s.value_or(end));
     if (a.basis != RowBasis::kNone) change(a.decision_time_s, Party::ego());
     if (!a.end_time_s) break;
     change(*a.end_time_s, a.completed ? Party::nobody() : traffic);

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/demand.h"
 #include "rules/check.h"
+#include "rules/definition2_inequalities.h"
 #include "rules/monitor.h"
 
 namespace mg {
@@ -18,7 +20,27 @@ std::string to_string(RowBasis b) {
   return "none";
 }
 
+std::string to_string(Cover c) {
+  switch (c) {
+    case Cover::kNone: return "nothing";
+    case Cover::kDef2: return "its acceptance (Def. 2)";
+    case Cover::kDef2Pair: return "Def. 1 for the pair at the request";
+    case Cover::kDef1: return "the Def. 1 reading";
+    case Cover::kDef1Pair: return "Def. 1 for the pair at the reading";
+  }
+  return "nothing";
+}
+
 namespace {
+
+// What the attempts are read from: the trace, the rules' parameters, and what the situation
+// already holds (rules/situation.h).
+struct Inputs {
+  const ObservedTrace& t;
+  const RuleParams& p;
+  const std::vector<CoopExchange>& exchanges;
+  const std::vector<GapIndices>& around;
+};
 
 std::size_t step_at_or_after(const ObservedTrace& t, double time_s) {
   const auto it = std::lower_bound(t.steps.begin(), t.steps.end(), time_s - kTieS,
@@ -60,6 +82,23 @@ std::optional<std::size_t> entry_step_of(const ObservedTrace& t, const RuleParam
   return std::nullopt;
 }
 
+// Where and when the ego's centre crossed the lane line, between the midpoint's step and the one
+// before it (linear in Y: a 50 Hz trace at 20 m/s moves 0.4 m a step).
+void read_crossing(const ObservedTrace& t, MergeAttempt& a, std::size_t mid) {
+  const ObservedState& e = t.steps[mid].vehicles[0];
+  a.crossing_x_m = e.x_m;
+  a.crossing_time_s = t.steps[mid].time_s;
+  a.crossing_speed_mps = std::max(0.0, e.vx_mps);
+  if (mid == 0) return;
+  const ObservedState& b = t.steps[mid - 1].vehicles[0];
+  const double line_y = -0.5 * t.road.lane_width_m;
+  if (!(e.y_m > b.y_m) || !(b.y_m < line_y)) return;
+  const double f = (line_y - b.y_m) / (e.y_m - b.y_m);
+  a.crossing_speed_mps = std::max(0.0, b.vx_mps + f * (e.vx_mps - b.vx_mps));
+  a.crossing_x_m = b.x_m + f * (e.x_m - b.x_m);
+  a.crossing_time_s = t.steps[mid - 1].time_s + f * (t.steps[mid].time_s - t.steps[mid - 1].time_s);
+}
+
 // When the ego's motion toward the main lane that led into the start at `start_step` began: the
 // first step of the unbroken run of steps before it with lateral speed above the hysteresis. An
 // ego placed off its lane centre on the far side moves toward the main lane well before its
@@ -74,77 +113,109 @@ double approach_onset_s(const ObservedTrace& t, const RuleParams& p, std::size_t
 // costs two bisections, and a gap's feasibility does not come and go within a tenth of a second.
 constexpr std::size_t kScanStride = 5;
 
-// Definition 1 at step i for a gap, with rho_m or the observed duration.
+// The merge durations a Definition 1 reading at `time_s` is tried with, in order.
+//   - An attempt that reached its midpoint: rho_m, or, when longer, twice the time to the midpoint
+//     less the response time T. Definition 1.1 lets the follower accelerate until the ego merges;
+//     rho_m alone for a merge whose midpoint came much later would predict it at a_accel^max for
+//     rho_m/2 only and move onto a follower that accelerated legally the duty the ego's late
+//     merge created (spec §8, point 23). T: RSS's time to turn a decision into
+//     motion; a midpoint within T of the one decided is that merge, tracked with a lag.
+//   - One still under way when the trace ends: rho_m, then, when longer, the shortest duration
+//     whose midpoint falls after that end. Nothing has crossed the follower's path yet (an ego
+//     stalled with a corner in the lane is not merging on: the RSS rules judge it there), so
+//     rho_m stands where it admits a v_e*.
+//   - One aborted before its midpoint: rho_m.
+std::vector<double> reading_rhos_s(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, double time_s) {
+  if (a.midpoint_time_s)
+    return {std::max(p.merge_duration_s, 2.0 * (*a.midpoint_time_s - time_s - t.params.rss.response_time_s))};
+  std::vector<double> out = {p.merge_duration_s};
+  if (!a.end_time_s && 2.0 * (t.steps.back().time_s - time_s) > p.merge_duration_s)
+    out.push_back(2.0 * (t.steps.back().time_s - time_s));
+  return out;
+}
+
+// Definition 1 at step i for a gap, with a duration.
+Def1Reading read_def1_at(const ObservedTrace& t, const MergeAttempt& a, const GapIndices& gap, std::size_t i,
+                         double rho) {
+  const double time_s = t.steps[i].time_s;
+  Def1Reading r{gap, i, time_s, rho, def1_interval(t, i, gap, rho)};
+  // v_e*: nearest the ego's speed where it crossed the line (or would have, rho/2 on).
+  const std::size_t at = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s)
+                                           : std::min(step_at_or_after(t, time_s + 0.5 * rho), t.steps.size() - 1);
+  const double v_mid = t.steps[std::min(at, t.steps.size() - 1)].vehicles[0].vx_mps;
+  r.observed_mps = v_mid;
+  r.ve_star_mps = r.interval.feasible() ? std::clamp(v_mid, r.interval.ve_lo_mps, r.interval.ve_hi_mps)
+                                        : def1_best_speed_mps(t, i, gap, rho);
+  r.margin_11_m = def1_1_margin_m(t, i, gap.follower, r.ve_star_mps, rho);
+  r.margin_12_m = def1_2_margin_m(t, i, gap.leader, r.ve_star_mps, rho);
+  return r;
+}
+
+// Definition 1 at step i for a gap: the first duration that admits a v_e*, else the one with the
+// largest smaller margin.
 Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, const GapIndices& gap,
                       std::size_t i) {
-  const double time_s = t.steps[i].time_s;
-  std::vector<double> rhos = {p.merge_duration_s};
-  // The observed duration when longer than rho_m (never shorter: rho_m is the rule's, and a
-  // planner that merges faster is still judged by it): to the midpoint; for an attempt still
-  // under way when the trace ends, the shortest duration whose midpoint falls after that end.
-  const std::optional<double> mid_s =
-      a.midpoint_time_s ? a.midpoint_time_s : a.end_time_s ? std::nullopt : std::optional(t.steps.back().time_s);
-  if (mid_s && 2.0 * (*mid_s - time_s) > p.merge_duration_s) rhos.push_back(2.0 * (*mid_s - time_s));
-  Def1Reading best;
-  bool have = false;
-  for (const double rho : rhos) {
-    Def1Reading r{gap, i, time_s, rho, def1_interval(t, i, gap, rho)};
-    // v_e*: nearest the ego's speed where it crossed the line (or would have, rho/2 on).
-    const std::size_t at = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s)
-                                             : std::min(step_at_or_after(t, time_s + 0.5 * rho), t.steps.size() - 1);
-    const double v_mid = t.steps[std::min(at, t.steps.size() - 1)].vehicles[0].vx_mps;
-    r.observed_mps = v_mid;
-    r.ve_star_mps = r.interval.feasible() ? std::clamp(v_mid, r.interval.ve_lo_mps, r.interval.ve_hi_mps)
-                                          : def1_best_speed_mps(t, i, gap, rho);
-    r.margin_11_m = def1_1_margin_m(t, i, gap.follower, r.ve_star_mps, rho);
-    r.margin_12_m = def1_2_margin_m(t, i, gap.leader, r.ve_star_mps, rho);
-    if (!have || (r.interval.feasible() && !best.interval.feasible()) ||
-        (r.interval.feasible() == best.interval.feasible() && r.min_margin_m() > best.min_margin_m())) {
+  std::optional<Def1Reading> best;
+  for (const double rho : reading_rhos_s(t, p, a, t.steps[i].time_s)) {
+    const Def1Reading r = read_def1_at(t, a, gap, i, rho);
+    if (!best || (r.interval.feasible() && !best->interval.feasible()) ||
+        (r.interval.feasible() == best->interval.feasible() && r.min_margin_m() > best->min_margin_m()))
       best = r;
-      have = true;
-    }
-    if (best.interval.feasible()) break;
+    if (best->interval.feasible()) break;
   }
-  return best;
+  return *best;
 }
 
-// A Def. 2 exchange with a vehicle of the gap that grants the attempt: accepted, the acceptance
-// delivered within rho_c of the request (closed window) and within [from_s, entry]. With
-// `timely` false, the same for an acceptance delivered after rho_c.
-std::optional<CoopExchange> accepted_exchange(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a,
-                                              double from_s, bool timely) {
-  std::optional<CoopExchange> found;
-  for (const CoopExchange& x : coop_exchanges(t)) {
-    const double d = x.accept_delivered_time_s;
-    if (d < 0.0 || d < from_s - kTieS || d > a.entry_time_s.value_or(a.start_time_s) + kTieS) continue;
-    const int k = t.index_of(x.request->to_id);
-    const GapIndices then = gap_around_ego(t, step_at_or_after(t, d));
-    const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
-    if (!in(a.entered_gap) && !in(then)) continue;
-    if ((d <= x.request_time_s + p.comm_threshold_s + kTieS) == timely) found = x;
-  }
-  return found;
+// Definition 1 for the pair of the ego and one vehicle of the gap entered, at a reading: ineq.
+// (1.1) toward a follower, (1.2) toward a leader, at the reading's step, v_e* and rho.
+double pair_margin_m(const ObservedTrace& t, const Def1Reading& r, const PairCover& c, bool follower) {
+  return follower ? def1_1_margin_m(t, r.step, c.vehicle, r.ve_star_mps, r.rho_s)
+                  : def1_2_margin_m(t, r.step, c.vehicle, r.ve_star_mps, r.rho_s);
 }
 
-// Definition 2 grants the right of way toward the partner; the gap's other vehicle stays
-// Definition 1's (spec §8, "Right of way per pair"). At the request: for 2.1 (ego ahead of o) the vehicle
-// ahead of o must satisfy ineq. (1.2) over rho_c + rho_m with the ego at its speed; for 2.2 the
-// vehicle behind o must satisfy ineq. (1.1) over 2 rho_c + rho_m with the ego at its speed after
-// braking at b_min for rho_c.
-bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x) {
-  const std::size_t i = std::min(step_at_or_after(t, x.request_time_s), t.steps.size() - 1);
-  const int k = t.index_of(x.request->to_id);
-  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
+bool delivered_in_window(const CoopExchange& x, const MergeAttempt& a, double from_s) {
+  const double d = x.accept_delivered_time_s;
+  return d >= 0.0 && d >= from_s - kTieS && d <= a.entry_time_s.value_or(a.start_time_s) + kTieS;
+}
+
+PcCheck pc_check_of(const Inputs& in, std::size_t i, const MergeAttempt& a) {
+  const CoopExchange& x = in.exchanges[i];
+  PcCheck c{i, x.request->pc_m, *a.crossing_x_m, *a.crossing_time_s};
+  c.tolerance_m = std::max(a.crossing_speed_mps * in.t.params.rss.response_time_s, 0.5 * in.t.vehicles[0].size.length_m);
+  c.margin_m = x.request->coop_case == CoopCase::kEgoAhead ? c.crossing_x_m - (c.pc_m - c.tolerance_m)
+                                                            : (c.pc_m + c.tolerance_m) - c.crossing_x_m;
+  return c;
+}
+
+// Definition 1 for the pair of the ego and the gap's other vehicle at the request of an
+// acceptance: the leader (2.1: the partner its follower) by ineq. (1.2) over rho_c + rho_m, the
+// follower (2.2: the partner its leader) by ineq. (1.1) over 2 rho_c + rho_m, with the ego at
+// the speed the request's case gives it after rho_c (2.1: its speed; 2.2: after braking at b_min).
+// +inf for an open side.
+double other_vehicle_margin_m(const Inputs& in, const CoopExchange& x, int other, bool other_is_follower) {
+  if (other < 1) return std::numeric_limits<double>::infinity();
+  const ObservedTrace& t = in.t;
+  const std::size_t i = std::min(step_at_or_after(t, x.sent_time_s), t.steps.size() - 1);
   const double v_e = std::max(0.0, t.steps[i].vehicles[0].vx_mps);
-  const double rho_c = p.comm_threshold_s, rho_m = p.merge_duration_s;
-  for (const GapIndices& g : lane_gaps(t, i)) {
-    if (ahead && g.follower == k) return def1_2_margin_m(t, i, g.leader, v_e, rho_c + rho_m) >= 0.0;
-    if (!ahead && g.leader == k) {
-      const double v_after = std::max(0.0, v_e - t.vehicles[0].limits.brake_min_mps2 * rho_c);
-      return def1_1_margin_m(t, i, g.follower, v_after, 2.0 * rho_c + rho_m) >= 0.0;
-    }
+  const double rho_c = in.p.comm_threshold_s, rho_m = in.p.merge_duration_s;
+  const double v_after = x.request->coop_case == CoopCase::kEgoAhead
+                             ? v_e
+                             : std::max(0.0, v_e - t.vehicles[0].limits.brake_min_mps2 * rho_c);
+  return other_is_follower ? def1_1_margin_m(t, i, other, v_after, 2.0 * rho_c + rho_m)
+                           : def1_2_margin_m(t, i, other, v_after, rho_c + rho_m);
+}
+
+// The vehicle of the lane next to the responder of `x` on the side the ego merges on, at the
+// request (the gap the request asked for): for an attempt whose gap entered is not known.
+int requested_gap_other(const Inputs& in, const CoopExchange& x) {
+  const std::size_t i = std::min(step_at_or_after(in.t, x.sent_time_s), in.t.steps.size() - 1);
+  const int k = in.t.index_of(x.request->to_id);
+  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
+  for (const GapIndices& g : lane_gaps(in.t, i)) {
+    if (ahead && g.follower == k) return g.leader;
+    if (!ahead && g.leader == k) return g.follower;
   }
-  return true;
+  return -1;
 }
 
 std::string gap_text(const ObservedTrace& t, const GapIndices& g) {
@@ -152,21 +223,36 @@ std::string gap_text(const ObservedTrace& t, const GapIndices& g) {
   return "(follower " + side(g.follower) + ", leader " + side(g.leader) + ")";
 }
 
+void describe_cover(const ObservedTrace& t, const PairCover& c, const char* role, std::ostringstream& os) {
+  if (c.vehicle < 1) return;
+  os << "; toward " << role << " " << party_name(party_of(t, static_cast<std::size_t>(c.vehicle))) << ": "
+     << to_string(c.by);
+  if (std::isfinite(c.margin_m))
+    os << " (" << (c.by == Cover::kNone ? "Def. 1 for the pair fails by " : "by ") << std::abs(c.margin_m) << " m)";
+}
+
 void describe(const ObservedTrace& t, MergeAttempt& a) {
   std::ostringstream os;
-  os << "t = " << a.start_time_s << " s: ego starts merging into gap " << gap_text(t, a.gap) << "; ";
+  os << "t = " << a.start_time_s << " s: ego starts merging into gap " << gap_text(t, a.entered_gap) << "; ";
   if (a.basis == RowBasis::kDef2) {
     os << party_name(Party::from_vehicle_id(a.exchange->request->to_id)) << "'s acceptance of the request of t = " << a.exchange->request_time_s
        << " s was delivered at t = " << a.exchange->accept_delivered_time_s << " s, within rho_c -> ego holds (Def. 2)";
   } else if (a.def1_read) {
     const Def1Reading& r = a.def1;
-    os << "at t = " << r.time_s << " s with v_e* = " << r.ve_star_mps << " m/s, rho = " << r.rho_s << " s, ineq. 1.1 "
-       << (r.margin_11_m >= 0.0 ? "holds by " : "is violated by ") << std::abs(r.margin_11_m) << " m, ineq. 1.2 "
-       << (r.margin_12_m >= 0.0 ? "holds by " : "is violated by ") << std::abs(r.margin_12_m) << " m"
-       << (a.basis == RowBasis::kDef1 ? " -> ego holds (Def. 1)" : " (the best instant of the decision window) -> ego has no right of way");
+    os << "gap " << gap_text(t, a.gap) << " at t = " << r.time_s << " s with v_e* = " << r.ve_star_mps
+       << " m/s, rho = " << r.rho_s << " s, ineq. 1.1 " << (r.margin_11_m >= 0.0 ? "holds by " : "is violated by ")
+       << std::abs(r.margin_11_m) << " m, ineq. 1.2 " << (r.margin_12_m >= 0.0 ? "holds by " : "is violated by ")
+       << std::abs(r.margin_12_m) << " m"
+       << (a.basis == RowBasis::kDef1 ? " -> ego holds (Def. 1)"
+                                      : " (the best instant of the decision window) -> ego has no right of way");
   } else {
     os << "no decision window -> ego has no right of way";
   }
+  describe_cover(t, a.follower, "follower", os);
+  describe_cover(t, a.leader, "leader", os);
+  if (a.fault == AcceptanceFault::kUntruthful)
+    os << "; the acceptance of " << party_name(Party::from_vehicle_id(a.exchange->request->to_id)) << " grants nothing: its request misstated "
+       << (a.exchange->order_margin_m < 0.0 ? "the order of the ego and its responder" : "P_c");
   a.observation = os.str();
 }
 
@@ -202,29 +288,185 @@ bool gap_vehicle_broke_limits(const ObservedTrace& t, const RuleParams& p, const
 // if a vehicle of that neighbour broke its declared limits between i and the entry: a vehicle
 // the ego was overtaking for the gap ahead of it, which then raced past the ego beyond its
 // a_accel^max, changed the ego's gap by its breach, and the gap the ego decided on still counts
-// (spec §8, "Definition 1 basis"; corpus case rcpp__ego_never_liable__def1_2_gap__ego-5).
-std::vector<GapIndices> gaps_at(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, std::size_t i) {
-  const GapIndices around = gap_around_ego(t, i);
-  if (!a.entry_step) return with_neighbours(t, i, around);
+// (spec §8, "Definition 1 basis").
+std::vector<GapIndices> gaps_at(const Inputs& in, const MergeAttempt& a, std::size_t i) {
+  const GapIndices around = in.around[i];
+  if (!a.entry_step) return with_neighbours(in.t, i, around);
   std::vector<GapIndices> out = {around};
-  for (const GapIndices& g : with_neighbours(t, i, around))
-    if (!(g == around) && gap_vehicle_broke_limits(t, p, g, i, *a.entry_step)) out.push_back(g);
+  for (const GapIndices& g : with_neighbours(in.t, i, around))
+    if (!(g == around) && gap_vehicle_broke_limits(in.t, in.p, g, i, *a.entry_step)) out.push_back(g);
   return out;
 }
 
-// From a feasible reading, back while the same gap stays feasible, as far as the end of the
-// previous attempt (not only to the window's start): the ego holds the right of way from the
-// start of that run (a planner that decided when the gap opened is credited from then, and its
-// lateral approach before the visible start is covered; a slow merge, 12.6 s, decided 4.4 s
-// before its visible start was otherwise judged by Def. 1.3 for the time between).
-// Strides back (kScanStride steps at a time, the last stride step by step).
-void extend_back(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, std::size_t first) {
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The basis of one attempt: Definition 2 first (the acceptances), then Definition 1 (the window's
+// readings), then none.
+
+namespace {
+
+class AttemptJudge {
+ public:
+  AttemptJudge(const Inputs& in, MergeAttempt& a, double window_from_s, double credit_from_s)
+      : in_(in), a_(a), window_from_s_(window_from_s), credit_from_s_(credit_from_s) {}
+
+  void run();
+
+ private:
+  bool known_gap() const { return a_.midpoint_time_s.has_value(); }
+  PairCover* side_for(const CoopExchange& x, bool responder_broke);
+  bool try_def2();
+  bool try_def2_unknown_gap();
+  bool covers_rest(const Def1Reading& r) const;
+  void cover_by_reading(const Def1Reading& r);
+  bool try_def1();
+  void keep_if_best(const Def1Reading& r, bool covers);
+  void extend_back(std::size_t first);
+  void granted();
+  void no_basis();
+  void settle_decision_time();
+
+  const Inputs& in_;
+  MergeAttempt& a_;
+  double window_from_s_;
+  double credit_from_s_;
+  std::vector<PcCheck> checks_;             // of the acceptances the attempt was made on
+  std::optional<std::size_t> untruthful_;   // an acceptance that would have covered, from a lying request ...
+  const PairCover* untruthful_side_ = nullptr;  // ... the vehicle it would have covered (null: gap not known)
+  bool best_good_ = false;                  // of the reading kept in a_.def1
+  double best_score_ = 0.0;
+};
+
+// The cover an acceptance of `x` speaks for: its sender bounding the gap entered on the side its
+// case names (ego ahead: the follower; ego behind: the leader), or none. On the other side too
+// when the sender got there by breaking what it accepted (beyond def2_positions' bound before
+// the midpoint: a 2.1 responder that did not yield and passed the ego): its breach changed the
+// ego's gap, and the acceptance still counts, as a gap changed by a vehicle breaking its
+// declared limits does for Definition 1.
+PairCover* AttemptJudge::side_for(const CoopExchange& x, bool responder_broke) {
+  const int k = in_.t.index_of(x.request->to_id);
+  if (k < 1) return nullptr;
+  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
+  PairCover* named = ahead ? &a_.follower : &a_.leader;
+  PairCover* other = ahead ? &a_.leader : &a_.follower;
+  if (k == named->vehicle) return named;
+  if (k == other->vehicle && responder_broke) return other;
+  return nullptr;
+}
+
+// Definition 2 for an attempt that reached its midpoint: each vehicle of the gap entered by its
+// own timely acceptance of a truthful request; the other, if none, by Definition 1 for the pair
+// at the request. Covers found stay for try_def1 when the other vehicle is not covered.
+bool AttemptJudge::try_def2() {
+  std::optional<std::size_t> first;
+  for (std::size_t i = 0; i < in_.exchanges.size(); ++i) {
+    const CoopExchange& x = in_.exchanges[i];
+    // An acceptance of a request that lacks a number accepted nothing the rules can hold anyone
+    // to: it is no acceptance (def2_request_sound fails the request).
+    if (!x.complete() || !x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_))
+      continue;
+    const int k = in_.t.index_of(x.request->to_id);
+    const bool broke =
+        k >= 1 && responder_broke_acceptance(in_.t, in_.p, x, static_cast<std::size_t>(k), *a_.midpoint_time_s);
+    PairCover* c = side_for(x, broke);
+    if (c == nullptr) continue;
+    // A responder that broke what it accepted left the ego to answer its breach: where the ego
+    // then crossed says nothing of the P_c it asked on.
+    const std::optional<PcCheck> pc = broke ? std::nullopt : std::optional(pc_check_of(in_, i, a_));
+    if (pc) checks_.push_back(*pc);
+    if (x.order_margin_m < 0.0 || (pc && pc->margin_m < 0.0)) {
+      if (!untruthful_) untruthful_side_ = c;
+      untruthful_ = untruthful_.value_or(i);
+      continue;
+    }
+    if (c->by == Cover::kDef2) continue;  // an earlier acceptance covers it already
+    *c = PairCover{c->vehicle, Cover::kDef2, x.accept_delivered_time_s, std::numeric_limits<double>::infinity(), i};
+    if (!first) first = i;
+  }
+  if (!first) return false;
+  for (PairCover* c : {&a_.follower, &a_.leader}) {
+    if (c->vehicle < 1 || c->by == Cover::kDef2) continue;
+    const std::size_t i = a_.follower.by == Cover::kDef2 ? *a_.follower.exchange : *a_.leader.exchange;
+    c->margin_m = other_vehicle_margin_m(in_, in_.exchanges[i], c->vehicle, c == &a_.follower);
+    if (c->margin_m >= 0.0) *c = PairCover{c->vehicle, Cover::kDef2Pair, in_.exchanges[i].accept_delivered_time_s, c->margin_m, i};
+  }
+  const auto covered = [](const PairCover& c) { return c.vehicle < 1 || c.by != Cover::kNone; };
+  if (!covered(a_.follower) || !covered(a_.leader)) return false;
+  a_.basis = RowBasis::kDef2;
+  a_.exchange = in_.exchanges[*first];
+  return true;
+}
+
+// Definition 2 for an attempt whose gap entered is not known (aborted, or cut by the trace's end,
+// before its midpoint): an acceptance from a vehicle of the gap around the ego at its start or at
+// the delivery, the other vehicle of the gap the request asked for clear by Definition 1.
+bool AttemptJudge::try_def2_unknown_gap() {
+  for (std::size_t i = 0; i < in_.exchanges.size(); ++i) {
+    const CoopExchange& x = in_.exchanges[i];
+    if (!x.complete() || !x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_))
+      continue;
+    const int k = in_.t.index_of(x.request->to_id);
+    const GapIndices then = in_.around[std::min(step_at_or_after(in_.t, x.accept_delivered_time_s), in_.t.steps.size() - 1)];
+    const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
+    if (!in(a_.entered_gap) && !in(then)) continue;
+    if (x.order_margin_m < 0.0) {
+      untruthful_ = untruthful_.value_or(i);
+      continue;
+    }
+    const bool other_is_follower = x.request->coop_case == CoopCase::kEgoBehind;
+    if (other_vehicle_margin_m(in_, x, requested_gap_other(in_, x), other_is_follower) < 0.0) continue;
+    a_.basis = RowBasis::kDef2;
+    a_.exchange = x;
+    a_.decision_time_s = x.accept_delivered_time_s;
+    return true;
+  }
+  return false;
+}
+
+// Whether a reading covers every vehicle of the gap entered that no acceptance covers: a vehicle
+// of the gap it was read for, or by Definition 1 for the pair at it.
+bool AttemptJudge::covers_rest(const Def1Reading& r) const {
+  if (!known_gap()) return true;
+  for (const PairCover* c : {&a_.follower, &a_.leader}) {
+    if (c->vehicle < 1 || c->by == Cover::kDef2) continue;
+    if (c->vehicle == r.gap.follower || c->vehicle == r.gap.leader) continue;
+    if (pair_margin_m(in_.t, r, *c, c == &a_.follower) < 0.0) return false;
+  }
+  return true;
+}
+
+// The covers of a reading that is the attempt's basis (or, with no basis, its best reading's
+// margins toward the vehicles left uncovered).
+void AttemptJudge::cover_by_reading(const Def1Reading& r) {
+  if (!known_gap()) return;
+  const bool feasible = r.interval.feasible();
+  for (PairCover* c : {&a_.follower, &a_.leader}) {
+    if (c->vehicle < 1 || c->by == Cover::kDef2) continue;
+    const bool member = c->vehicle == r.gap.follower || c->vehicle == r.gap.leader;
+    c->margin_m = member ? (c->vehicle == r.gap.follower ? r.margin_11_m : r.margin_12_m)
+                         : pair_margin_m(in_.t, r, *c, c == &a_.follower);
+    c->exchange.reset();
+    // A vehicle of a feasible reading's gap is covered by the reading (its margin at v_e* is the
+    // bisection's, >= 0 to within its tolerance); another one by its pair's margin.
+    c->by = !feasible ? Cover::kNone : member ? Cover::kDef1 : c->margin_m < 0.0 ? Cover::kNone : Cover::kDef1Pair;
+    c->from_s = r.time_s;
+  }
+}
+
+// From a good reading (feasible, covering the rest of the gap entered), back while the same gap
+// stays good, as far as the end of the previous attempt (not only to the window's start): the ego
+// holds the right of way from the start of that run (a planner that decided when the gap opened
+// is credited from then, and its lateral approach before the visible start is covered; a slow
+// merge, 12.6 s, decided 4.4 s before its visible start was otherwise judged by Def. 1.3 for the
+// time between). Strides back (kScanStride steps at a time, the last stride step by step).
+void AttemptJudge::extend_back(std::size_t first) {
   std::size_t stride = kScanStride;
-  while (a.def1.step > first) {
-    const std::size_t i = a.def1.step - std::min(stride, a.def1.step - first);
-    const Def1Reading r = read_def1(t, p, a, a.gap, i);
-    if (r.interval.feasible()) {
-      a.def1 = r;
+  while (a_.def1.step > first) {
+    const std::size_t i = a_.def1.step - std::min(stride, a_.def1.step - first);
+    const Def1Reading r = read_def1(in_.t, in_.p, a_, a_.gap, i);
+    if (r.interval.feasible() && covers_rest(r)) {
+      a_.def1 = r;
     } else if (stride > 1) {
       stride = 1;
     } else {
@@ -233,23 +475,29 @@ void extend_back(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, s
   }
 }
 
-void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double window_from_s, double credit_from_s) {
-  const std::size_t mid_or_start = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s) : a.start_step;
-  a.entered_gap = gap_around_ego(t, std::min(mid_or_start, t.steps.size() - 1));
-  a.gap = a.entered_gap;
-  const std::size_t end_step = a.end_time_s ? step_at_or_after(t, *a.end_time_s) : t.steps.size();
-  a.entry_step = entry_step_of(t, p, a.start_step, end_step + 1);
-  if (a.entry_step) a.entry_time_s = t.steps[*a.entry_step].time_s;
-  if (const auto x = accepted_exchange(t, p, a, window_from_s, true); x && other_gap_vehicle_clear(t, p, *x)) {
-    a.basis = RowBasis::kDef2;
-    a.exchange = x;
-    a.decision_time_s = x->accept_delivered_time_s;
-    return;
-  }
-  const std::size_t first = step_at_or_after(t, window_from_s);
+// The reading kept when none is good: feasible before not, then the largest smaller margin
+// (toward the vehicles of the gap entered the reading would have to cover, too).
+void AttemptJudge::keep_if_best(const Def1Reading& r, bool covers) {
+  double score = r.min_margin_m();
+  if (known_gap() && !covers)
+    for (const PairCover* c : {&a_.follower, &a_.leader})
+      if (c->vehicle >= 1 && c->by != Cover::kDef2 && c->vehicle != r.gap.follower && c->vehicle != r.gap.leader)
+        score = std::min(score, pair_margin_m(in_.t, r, *c, c == &a_.follower));
+  const bool good = r.interval.feasible() && covers;
+  if (a_.def1_read && (good != best_good_ ? !good : score <= best_score_)) return;
+  a_.def1 = r;
+  a_.def1_read = true;
+  a_.gap = r.gap;
+  best_good_ = good;
+  best_score_ = score;
+}
+
+bool AttemptJudge::try_def1() {
+  const ObservedTrace& t = in_.t;
+  const std::size_t first = step_at_or_after(t, window_from_s_);
   // Latest first, every kScanStride steps; the step of the entry and the window's first step are
   // always read (a gap feasible only at the first instant the ego saw it is still a gap).
-  const std::size_t last = std::max(a.entry_step.value_or(a.start_step), a.start_step);
+  const std::size_t last = std::max(a_.entry_step.value_or(a_.start_step), a_.start_step);
   for (std::size_t i = last + kScanStride; first <= last && i > first;) {
     i = i >= first + kScanStride ? i - kScanStride : first;
     // The gap the ego entered, then the one around it at i (a follower may have raced past it
@@ -261,46 +509,121 @@ void judge(const ObservedTrace& t, const RuleParams& p, MergeAttempt& a, double 
     // or for a gap a vehicle changed by breaking its declared limits.
     // Each inequality must hold under the bounded-rate model too, so "behind a vehicle alongside
     // at v_e* = 0 at once" is not granted (docs/spec.md §8).
-    std::vector<GapIndices> gaps = {a.entered_gap};
-    const GapIndices around = gap_around_ego(t, i);
-    for (const GapIndices& g : gaps_at(t, p, a, i))
+    std::vector<GapIndices> gaps = {a_.entered_gap};
+    const GapIndices around = in_.around[i];
+    for (const GapIndices& g : gaps_at(in_, a_, i))
       if (std::find(gaps.begin(), gaps.end(), g) == gaps.end()) gaps.push_back(g);
     for (const GapIndices& gap : gaps) {
-      const Def1Reading r = read_def1(t, p, a, gap, i);
+      const Def1Reading r = read_def1(t, in_.p, a_, gap, i);
       // A neighbouring gap is a hypothesis about where the ego is going: it counts only when
       // feasible at a v_e* the ego's observed speed fits (a stop "behind the vehicle alongside"
       // over a duration stretched to the trace's end fits any gap; an ego still at 20 m/s was
       // not doing that).
-      const bool neighbour = !(gap == a.entered_gap) && !(gap == around);
-      if (neighbour && (!r.interval.feasible() || std::abs(r.ve_star_mps - r.observed_mps) > p.speed_tolerance_mps))
+      const bool neighbour = !(gap == a_.entered_gap) && !(gap == around);
+      if (neighbour && (!r.interval.feasible() || std::abs(r.ve_star_mps - r.observed_mps) > in_.p.speed_tolerance_mps))
         continue;
-      if (!a.def1_read || r.interval.feasible() || r.min_margin_m() > a.def1.min_margin_m()) {
-        a.def1 = r;
-        a.def1_read = true;
-        a.gap = gap;
-      }
-      if (r.interval.feasible()) {
-        a.basis = RowBasis::kDef1;
-        extend_back(t, p, a, step_at_or_after(t, credit_from_s));
-        a.decision_time_s = a.def1.time_s;
-        return;
+      const bool covers = covers_rest(r);
+      keep_if_best(r, covers);
+      if (r.interval.feasible() && covers) {
+        a_.basis = RowBasis::kDef1;
+        extend_back(step_at_or_after(t, credit_from_s_));
+        cover_by_reading(a_.def1);
+        return true;
       }
     }
   }
-  a.exchange = accepted_exchange(t, p, a, window_from_s, false);
+  return false;
+}
+
+// No basis: the best reading's margins toward the vehicles left uncovered, and the acceptance the
+// attempt was made on, if any (late: def2_3_fallback's; from a lying request:
+// def2_request_truthful's).
+void AttemptJudge::no_basis() {
+  a_.basis = RowBasis::kNone;
+  if (a_.def1_read) cover_by_reading(a_.def1);
+  // A lie about a vehicle a truthful acceptance of its own covers is not what the attempt was
+  // made on (an earlier request to it, replaced).
+  if (untruthful_side_ != nullptr && untruthful_side_->by == Cover::kDef2) {
+    untruthful_.reset();
+    std::erase_if(checks_, [](const PcCheck& c) { return c.margin_m < 0.0; });
+  }
+  a_.pc_checks = checks_;
+  if (untruthful_) {
+    a_.exchange = in_.exchanges[*untruthful_];
+    a_.fault = AcceptanceFault::kUntruthful;
+    return;
+  }
+  for (const CoopExchange& x : in_.exchanges) {
+    const double d = x.accept_delivered_time_s;
+    if (d < 0.0 || x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_)) continue;
+    const int k = in_.t.index_of(x.request->to_id);
+    const GapIndices then = in_.around[std::min(step_at_or_after(in_.t, d), in_.t.steps.size() - 1)];
+    const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
+    if (!in(a_.entered_gap) && !in(then)) continue;
+    a_.exchange = x;
+    a_.fault = AcceptanceFault::kLate;
+  }
+}
+
+// A basis found: the attempt rests on it and on the truthful acceptances that cover its
+// vehicles, not on a lying one it could have been made on (an earlier acceptance of the same
+// vehicle, say, whose P_c a later request replaced): that one's check is dropped.
+void AttemptJudge::granted() {
+  untruthful_.reset();
+  std::erase_if(checks_, [](const PcCheck& c) { return c.margin_m < 0.0; });
+  a_.pc_checks = checks_;
+}
+
+// The ego holds the right of way as a whole once it holds it toward every vehicle of the gap
+// entered; toward each vehicle, from its cover's instant.
+void AttemptJudge::settle_decision_time() {
+  if (a_.basis == RowBasis::kDef1) a_.decision_time_s = a_.def1.time_s;
+  if (a_.basis == RowBasis::kDef2 && known_gap()) a_.decision_time_s = a_.exchange->accept_delivered_time_s;
+  for (const PairCover* c : {&a_.follower, &a_.leader})
+    if (c->vehicle >= 1 && c->by != Cover::kNone) a_.decision_time_s = std::max(a_.decision_time_s, c->from_s);
+}
+
+void AttemptJudge::run() {
+  const ObservedTrace& t = in_.t;
+  const std::size_t mid_or_start = a_.midpoint_time_s ? step_at_or_after(t, *a_.midpoint_time_s) : a_.start_step;
+  const std::size_t mid = std::min(mid_or_start, t.steps.size() - 1);
+  a_.entered_gap = in_.around[mid];
+  a_.gap = a_.entered_gap;
+  const std::size_t end_step = a_.end_time_s ? step_at_or_after(t, *a_.end_time_s) : t.steps.size();
+  a_.entry_step = entry_step_of(t, in_.p, a_.start_step, end_step + 1);
+  if (a_.entry_step) a_.entry_time_s = t.steps[*a_.entry_step].time_s;
+  if (known_gap()) {
+    read_crossing(t, a_, mid);
+    a_.follower.vehicle = a_.entered_gap.follower;
+    a_.leader.vehicle = a_.entered_gap.leader;
+  }
+  if (known_gap() ? try_def2() : try_def2_unknown_gap()) {
+    granted();
+  } else if (try_def1()) {
+    granted();
+  } else {
+    no_basis();
+  }
+  settle_decision_time();
+  // The right of way as a whole means toward every vehicle of the gap entered: a basis with an
+  // uncovered vehicle would let the ego cut in next to it unjudged.
+  for (const PairCover* c : {&a_.follower, &a_.leader})
+    MG_DEMAND(a_.basis == RowBasis::kNone || c->vehicle < 1 || c->by != Cover::kNone);
 }
 
 }  // namespace
 
-MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p, const MergePhases& phases) {
+MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p, const MergePhases& phases,
+                                     const std::vector<CoopExchange>& exchanges,
+                                     const std::vector<GapIndices>& around) {
   MergeAttempts out;
   out.attempts = spans_of(phases);
+  const Inputs in{t, p, exchanges, around};
   double previous_end_s = t.steps.empty() ? 0.0 : t.steps.front().time_s;
   for (MergeAttempt& a : out.attempts) {
-    judge(t, p, a,
-          std::max(previous_end_s,
-                   std::min(a.start_time_s - p.merge_decision_window_s, approach_onset_s(t, p, a.start_step))),
-          previous_end_s);
+    const double window_from_s =
+        std::max(previous_end_s, std::min(a.start_time_s - p.merge_decision_window_s, approach_onset_s(t, p, a.start_step)));
+    AttemptJudge(in, a, window_from_s, previous_end_s).run();
     describe(t, a);
     previous_end_s = a.end_time_s.value_or(a.start_time_s);
   }

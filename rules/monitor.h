@@ -17,6 +17,7 @@
 #include "core/observed_trace.h"
 #include "core/party.h"
 #include "rules/check.h"
+#include "rules/coop_exchange.h"
 #include "rules/liability.h"
 #include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
@@ -31,6 +32,7 @@ struct MonitorContext {
   const RuleParams& params;      // the rules' own (trace.params.rules, or --params)
   const MergePhases& phases;     // the ego's observed merge (rules/merge_phases.h)
   const MergeAttempts& attempts; // each attempt's right of way (rules/merge_attempts.h)
+  const std::vector<CoopExchange>& exchanges;  // the V2V exchanges (rules/coop_exchange.h)
 };
 
 struct MonitorOutput {

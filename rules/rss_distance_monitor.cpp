@@ -133,7 +133,10 @@ MonitorOutput monitor_rss_longitudinal(const MonitorContext& ctx) {
              << limits_of(s, g.rear).accel_max_mps2 << " m/s2, while the situation was dangerous (since t = "
              << e.blame_time_s << " s)";
           why = os.str();
-        } else if (e.lateral_entrance && !ctx.row.ego_held_within(e.blame_time_s - T - kTieS, e.blame_time_s + kTieS)) {
+        } else if (e.lateral_entrance && !ctx.row.ego_held_toward_within(i == 0 ? j : i, e.blame_time_s - T - kTieS,
+                                                                          e.blame_time_s + kTieS)) {
+          // The right of way toward this vehicle: a merge covered toward the gap's other vehicle
+          // only is a cut-in toward this one (rules/liability.h).
           // An ego that held the right of way within the last T (it aborted its merge) is still
           // within its response time: its lateral motion is then rss_lateral's to judge. An ego
           // still within merge_start_offset_m of its own lane's centre is not cutting in yet,
@@ -224,7 +227,7 @@ MonitorOutput monitor_rss_lateral(const MonitorContext& ctx) {
       // centre, toward whichever vehicle; not a motion beyond it, nor toward a vehicle on the
       // ego's right (spec §8, "The ego's lateral duty": the waiver follows the manoeuvre, not the clock).
       const bool merge_motion = g.right == 0 && ego_of(st).y_m < 0.0;
-      const bool obliged = !(merge_motion && ctx.row.ego_holds_at(e.blame_time_s));
+      const bool obliged = !(merge_motion && ctx.row.ego_holds_toward_at(j, e.blame_time_s));
       // A duty that starts mid-episode (the merge motion ends at the lane's centre) gets its
       // response time from then, as one that starts with the danger does: the ego cannot have
       // answered, during a waiver, a duty it did not have yet.

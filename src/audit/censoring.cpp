@@ -6,9 +6,9 @@
 
 #include "core/demand.h"
 #include "rules/merge_attempts.h"
-#include "rules/merge_phases.h"
 #include "rules/monitor.h"
 #include "rules/pair_geometry.h"
+#include "rules/situation.h"
 
 namespace mg {
 namespace {
@@ -72,10 +72,9 @@ std::optional<DecisionWindow> decision_window(const ObservedTrace& t, double cha
     w.from_s = t0 - p.merge_decision_window_s;
     return w;
   }
-  const MergePhases phases = observe_merge_phases(t, p);
-  const MergeAttempts attempts = observe_merge_attempts(t, p, phases);
+  const Situation s = observe_situation(t, p);
   const MergeAttempt* chosen = nullptr;
-  for (const MergeAttempt& a : attempts.attempts) {
+  for (const MergeAttempt& a : s.attempts.attempts) {
     // The attempt that is this lane change: the one that crossed the line nearest to it.
     if (!chosen || (a.midpoint_time_s && (!chosen->midpoint_time_s ||
                                           std::abs(*a.midpoint_time_s - change_time_s) < std::abs(*chosen->midpoint_time_s - change_time_s)))) {

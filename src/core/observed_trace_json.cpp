@@ -6,6 +6,7 @@
 #include <numbers>
 #include <set>
 #include <string_view>
+#include <utility>
 
 #include "core/atomic_file.h"
 #include "core/json_reader.h"
@@ -175,6 +176,12 @@ V2vMessage read_message(const ObjectReader& r, const ObservedTrace& t) {
   m.pc_m = nullable_number(r, "pc_m", 1e6, true);
   m.d_lon_star_m = nullable_number(r, "d_lon_star_m", 1e6, true);
   m.target_speed_mps = nullable_number(r, "target_speed_mps", 150.0, true);
+  // A request is what Definition 2 judges and what an acceptance grants on: every number of it
+  // must be there (null stands for "no value" only in an answer, which repeats or omits them).
+  if (m.type == MessageType::kRequest)
+    for (const auto& [key, v] : {std::pair{"pc_m", m.pc_m}, std::pair{"d_lon_star_m", m.d_lon_star_m},
+                                 std::pair{"target_speed_mps", m.target_speed_mps}})
+      if (std::isnan(v)) r.fail(key, "a request must carry a number, got null");
   m.delivered_time_s = nullable_number(r, "delivered_time_s", kMaxTimeS, false);
   if (m.delivered_time_s < 0.0) r.fail("delivered_time_s", "must be >= 0, got " + num(m.delivered_time_s));
   return m;

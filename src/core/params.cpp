@@ -61,7 +61,8 @@ constexpr Param<RuleParams> kRuleRows[] = {
           "accelerations beyond a declared limit by less are within it"),
     param("speed_tolerance_mps", &R::speed_tolerance_mps, "m/s", at_least(0.0), at_most(5.0), "speed comparisons"),
     param("yield_speed_tolerance_mps", &R::yield_speed_tolerance_mps, "m/s", at_least(0.0), at_most(5.0),
-          "a Definition 2 responder counts as at v_o* within this"),
+          "a Definition 2 responder counts as at v_o* within this; per second since its acceptance, the travel "
+          "allowance of `def2_positions`"),
     param("halted_speed_mps", &R::halted_speed_mps, "m/s", at_least(0.0), at_most(1.0),
           "below this a vehicle is at rest"),
     param("road_edge_tolerance_m", &R::road_edge_tolerance_m, "m", at_least(0.0), at_most(1.0),

@@ -172,6 +172,18 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   return coop_plan(x, *b, pc, choice->kappa_per_m);
 }
 
+// The clauses of Definition 2 the order at the request allows: 2.1 (c_e ahead of c_o^i) for a
+// responder whose body is wholly behind the ego's, 2.2 for one wholly ahead, either while the
+// two bodies overlap along the road (alongside, neither is ahead: the inequality decides). Asking
+// a vehicle behind to speed past, or one ahead to fall back, is neither clause:
+// def2_request_truthful holds the request's case to the order observed at its send.
+std::vector<CoopCase> cases_by_order(const WorldSnapshot& w, const MainLaneVehicle& o) {
+  const double alongside_m = 0.5 * (w.setup->ego.size.length_m + o.length_m);
+  if (w.ego.x_m - o.x_m >= alongside_m) return {CoopCase::kEgoAhead};
+  if (o.x_m - w.ego.x_m >= alongside_m) return {CoopCase::kEgoBehind};
+  return {CoopCase::kEgoAhead, CoopCase::kEgoBehind};
+}
+
 }  // namespace
 
 std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<int, double>& retry_after_s) {
@@ -184,7 +196,7 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
     if (obs == w.others.end() || !obs->v2v_capable) continue;
     const auto retry = retry_after_s.find(lane[i].id);
     if (retry != retry_after_s.end() && w.time_s < retry->second) continue;
-    for (const CoopCase k : {CoopCase::kEgoAhead, CoopCase::kEgoBehind}) {
+    for (const CoopCase k : cases_by_order(w, lane[i])) {
       double cost = 0.0;
       auto plan = coop_candidate(w, lane, i, k, &cost);
       if (plan && cost < best_cost) {

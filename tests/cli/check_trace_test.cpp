@@ -53,6 +53,7 @@ const std::vector<std::pair<std::string, std::string>> kHostileTraces = {
     {"absurd_limits.json", "/vehicles/0/limits/brake_max_mps2: must be in (0, 15], got 1000000000"},
     {"negative_limit.json", "/vehicles/2/limits/accel_max_mps2: must be in"},
     {"inconsistent_limits.json", "/vehicles/0/limits/brake_min_mps2: must be <= brake_max_mps2"},
+    {"request_without_pc.json", "/channel/0/message/pc_m: a request must carry a number, got null"},
     {"absurd_speed.json", "/steps/1/states/0/3: vx_mps must be in [-150.0, 150.0], got 310000000.0"},
     {"future_version.json", "/version: unsupported trace format version 2 (this build reads version 1)"},
     {"wrong_format.json", "/format: must be \"mergeguard-trace\", got \"mergeguard-scenario\""},

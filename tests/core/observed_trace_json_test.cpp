@@ -155,9 +155,11 @@ ObservedTrace any_trace() {
     e.message.to_id = t.vehicles[*rc::gen::inRange<std::size_t>(0, t.vehicles.size())].id;
     e.message.sent_time_s = any_in(0.0, 1e6);
     e.message.coop_case = *rc::gen::element(CoopCase::kEgoAhead, CoopCase::kEgoBehind);
-    e.message.pc_m = maybe_nan(-1e6, 1e6);
-    e.message.d_lon_star_m = maybe_nan(-1e6, 1e6);
-    e.message.target_speed_mps = maybe_nan(-150, 150);
+    // A request carries every number (an answer may omit them: null).
+    const bool request = e.message.type == MessageType::kRequest;
+    e.message.pc_m = request ? any_in(-1e6, 1e6) : maybe_nan(-1e6, 1e6);
+    e.message.d_lon_star_m = request ? any_in(-1e6, 1e6) : maybe_nan(-1e6, 1e6);
+    e.message.target_speed_mps = request ? any_in(-150, 150) : maybe_nan(-150, 150);
     e.message.delivered_time_s = maybe_nan(0.0, 1e6);
     t.channel.push_back(e);
   }
@@ -260,6 +262,7 @@ TEST(ObservedTraceJson, EveryDefectIsRejectedWithItsJsonPath) {
       {"null sent time", [](json& j) { j["channel"][0]["message"]["sent_time_s"] = nullptr; }, "/channel/0/message/sent_time_s: must be a number"},
       {"missing pc_m", [](json& j) { j["channel"][0]["message"].erase("pc_m"); }, "/channel/0/message/pc_m: missing required key"},
       {"pc_m as string", [](json& j) { j["channel"][0]["message"]["pc_m"] = "80"; }, "/channel/0/message/pc_m: must be a number, got a string"},
+      {"request without v_o*", [](json& j) { j["channel"][1]["message"]["target_speed_mps"] = nullptr; }, "/channel/1/message/target_speed_mps: a request must carry a number, got null"},
       {"negative delivery time", [](json& j) { j["channel"][1]["message"]["delivered_time_s"] = -1; }, "/channel/1/message/delivered_time_s: must be >= 0"},
       {"not an object", [](json& j) { j = json::array(); }, "trace.json: /: must be a JSON object"},
   };
@@ -320,6 +323,7 @@ TEST(ObservedTraceJson, HostileTraceFilesNameTheFileAndTheJsonPath) {
       {"absurd_limits.json", ": /vehicles/0/limits/brake_max_mps2: must be in (0, 15], got 1000000000"},
       {"negative_limit.json", ": /vehicles/2/limits/accel_max_mps2: must be in [0, 15], got -2"},
       {"inconsistent_limits.json", ": /vehicles/0/limits/brake_min_mps2: must be <= brake_max_mps2"},
+      {"request_without_pc.json", ": /channel/0/message/pc_m: a request must carry a number, got null"},
   };
   std::set<std::string> listed;
   for (const auto& [file, expected] : files) {

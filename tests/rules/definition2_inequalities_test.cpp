@@ -4,6 +4,8 @@
 #include "rules/definition2_inequalities.h"
 
 #include <algorithm>
+#include <limits>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -97,6 +99,55 @@ TEST(Def2Inequalities, AResponderAheadOfItsAccepted21ProfileIsLiable) {
   const MonitorOutput ok =
       test::run(monitor_def2_positions, s, with_request(braked, CoopCase::kEgoAhead, 16.0, 24.175, 50.0, true));
   EXPECT_TRUE(ok.result.holds) << ok.result.detail;
+}
+
+// A request without a number is not skipped: it fails, -1 m, naming what it lacks.
+TEST(Def2Inequalities, ARequestWithoutANumberIsUnsound) {
+  const Scenario s = coop_scenario(-25.0);
+  const Trace t =
+      with_request(constant_accel_trace(s, 1.0), CoopCase::kEgoBehind, 22.0, 30.0, std::numeric_limits<double>::quiet_NaN());
+  const MonitorOutput out = test::run(monitor_def2_request_sound, s, t);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
+  EXPECT_EQ(out.result.min_margin, -1.0);
+  EXPECT_NE(out.result.detail.find("carries no P_c"), std::string::npos) << out.result.detail;
+}
+
+// def2_request_truthful, the order clause: with vehicle 1 25 m behind the ego (both 4.8 m long,
+// so 20.2 m between their bodies), a 2.1 request ("ego ahead") holds by 29.8 m and a 2.2 request
+// ("ego behind") fails by 20.2 m, whether or not it was accepted or merged on.
+TEST(Def2Inequalities, ARequestsCaseIsHeldToTheOrderObservedAtItsSend) {
+  const Scenario s = coop_scenario(-25.0);
+  const Trace base = constant_accel_trace(s, 1.0);
+  const MonitorOutput ahead =
+      test::run(monitor_def2_request_truthful, s, with_request(base, CoopCase::kEgoAhead, 16.0, 24.175, 50.0));
+  EXPECT_TRUE(ahead.result.holds);
+  EXPECT_NEAR(ahead.result.min_margin, 29.8, 1e-9);
+  const MonitorOutput behind =
+      test::run(monitor_def2_request_truthful, s, with_request(base, CoopCase::kEgoBehind, 22.0, 30.0, 50.0));
+  ASSERT_FALSE(behind.result.holds);
+  EXPECT_EQ(behind.result.liable_id, Party::ego());
+  EXPECT_NEAR(behind.result.min_margin, -20.2, 1e-9);
+  EXPECT_NE(behind.result.detail.find("says the ego is behind it"), std::string::npos) << behind.result.detail;
+}
+
+// The profile a responder accepted, which sigmoid_pc_bounds predicts it on, and def2_positions'
+// bound around it (the profile plus its tolerance).
+TEST(Def2Inequalities, TheAcceptedProfileAndItsBound) {
+  const Scenario s = coop_scenario(-25.0);
+  const auto j = test::judge(s, with_request(constant_accel_trace(s, 6.0), CoopCase::kEgoAhead, 16.0, 24.175, 50.0, true));
+  ASSERT_EQ(j->situation.exchanges.size(), 1u);
+  const CoopExchange& x = j->situation.exchanges[0];
+  // From -23 m at 20 m/s (t_a = 0.1 s) linearly to 16 m/s by t_r + rho_c = 1 s, then 16: at 3.1 s,
+  // 16.2 + 16 x 2.1 = 49.8 m past -23 at 16 m/s. The bound: the same by t_r + rho_c + T = 1.5 s,
+  // 25.2 + 16 x 1.6 = 50.8 m, and 0.5 m/s x 3 s farther, at 16.5 m/s.
+  const ProfileBound b = accepted_profile_bound(j->context(), x, 1, 3.1);
+  ASSERT_TRUE(b.valid);
+  EXPECT_NEAR(b.profile_x_m, -23.0 + 16.2 + 33.6, 1e-9);
+  EXPECT_NEAR(b.profile_v_mps, 16.0, 1e-9);
+  EXPECT_NEAR(b.bound_x_m, -23.0 + 25.2 + 25.6 + 1.5, 1e-9);
+  EXPECT_NEAR(b.bound_v_mps, 16.5, 1e-9);
+  EXPECT_FALSE(accepted_profile_bound(j->context(), x, 1, 5.1).valid);  // past t_r + rho_c + rho_m
 }
 
 }  // namespace

@@ -166,9 +166,11 @@ Scenario coop_merge_scenario() {
 }
 
 TEST(Def2Monitor, CooperativeMergeNeedsAnAcceptanceWithinRhoC) {
+  // P_c = 30 m: where the ego's centre crosses the lane line in the merge from 0.5 s (1.5 s at
+  // 20 m/s); one it did not keep to would grant nothing (def2_request_truthful).
   const Scenario s = coop_merge_scenario();
-  const TraceEvent request = message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 50, 30, 16);
-  const TraceEvent accept = message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 50, 30, 16);
+  const TraceEvent request = message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 30, 30, 16);
+  const TraceEvent accept = message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 30, 30, 16);
   // Request at 0, acceptance delivered at 0.3 s, merge from 0.5 s: margin 0 + 1 - 0.3 = 0.7 s.
   Trace ok = with_coop_merge(constant_accel_trace(s, 2.0), 0.5);
   ok.events = {request, accept, test::delivered_event(accept, 0.3)};
@@ -183,6 +185,24 @@ TEST(Def2Monitor, CooperativeMergeNeedsAnAcceptanceWithinRhoC) {
   ASSERT_FALSE(broke.result.holds);
   EXPECT_EQ(broke.result.liable_id, Party::ego());
   EXPECT_NEAR(broke.result.min_margin, -0.4, 1e-9);
+}
+
+// Def. 2.3 judges an attempt that took room in the main lane: one aborted in the side lane after
+// a late acceptance (out at 1 m/s for 0.5 s, never past the lane line) took nobody's, as for the
+// Definition 1 gap rules.
+TEST(Def2Monitor, AnAttemptAbortedInTheSideLaneOnALateAcceptanceIsNotDef23s) {
+  const Scenario s = coop_merge_scenario();
+  const TraceEvent request = message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 30, 30, 16);
+  const TraceEvent accept = message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 30, 30, 16);
+  Trace t = test::with_aborted_move(constant_accel_trace(s, 4.0), 1.5, 1.0, 0.5);
+  t.events = {request, accept, test::delivered_event(accept, 1.4)};
+  const auto j = test::judge(s, t);
+  ASSERT_EQ(j->attempts.attempts.size(), 1u);
+  ASSERT_TRUE(j->attempts.attempts[0].exchange.has_value());  // made on the late acceptance ...
+  EXPECT_FALSE(j->attempts.attempts[0].entry_step.has_value());  // ... and never in the main lane
+  const MonitorOutput out = test::run(monitor_def2_3_fallback, s, t);
+  EXPECT_TRUE(out.result.holds);
+  EXPECT_FALSE(std::isfinite(out.result.min_margin));
 }
 
 TEST(Def2Monitor, AMergeWithoutAnyAcceptanceIsDefinition1s) {

@@ -67,11 +67,12 @@ TEST(RightOfWay, Def2MergeWithoutAcceptanceGivesNoRightOfWay) {
   Scenario s = base_scenario();
   s.road.speed_limit_mps = 22.0;
   s.vehicles = {vehicle(1, -45.0, 20.0)};
+  // P_c = 30 m: where the ego's centre crosses the lane line (1.5 s at 20 m/s).
   Trace t = test::with_lateral_move(constant_accel_trace(s, 2.0), 0.5, 1.75);
-  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 40, 30, 18));
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 30, 30, 18));
   EXPECT_FALSE(right_of_way(s, t).ego_holds_at(1.0));
   // The same merge with vehicle 1's acceptance delivered at 0.3 s (within rho_c = 1 s): Def. 2.
-  const TraceEvent accept = test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 40, 30, 18);
+  const TraceEvent accept = test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 30, 30, 18);
   t.events.push_back(accept);
   t.events.push_back(test::delivered_event(accept, 0.3));
   const RightOfWay row = right_of_way(s, t);

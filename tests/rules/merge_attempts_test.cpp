@@ -3,6 +3,7 @@
 // acceptance delivered within rho_c, none otherwise; read from the ego's motion and the channel.
 #include "rules/merge_attempts.h"
 
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -90,16 +91,37 @@ TEST(MergeAttempts, AnAttemptNotYetInTheLaneIsCreditedForTheGapBehindTheVehicleA
 }
 
 TEST(MergeAttempts, AGapFeasibleAllAlongIsCreditedFromBeforeTheDecisionWindow) {
-  // The same gap, the merge from t = 6 s (start 6.06 s): the window is [2.06, 6.06] s and the
-  // reading is taken in it, but the gap was feasible since t = 0 (no attempt before): a slow merge
-  // decided long before its visible start holds the right of way from its decision on.
-  const Scenario s = gap_scenario(-80.0, 200.0);
+  // A roomier gap (vehicle 1 250 m behind, vehicle 2 600 m ahead), the merge from t = 6 s (start
+  // 6.06 s, midpoint 7 s): the window is [2.06, 6.06] s and the reading is taken in it, but the
+  // gap was feasible since t = 0 (no attempt before) even for a merge whose midpoint comes 7 s
+  // later (rho = 2 (7 - T) = 13 s: the follower accelerating until then, less the response time
+  // T = 0.5 s): a slow merge decided long before its visible start holds the right of way from
+  // its decision on.
+  const Scenario s = gap_scenario(-250.0, 600.0);
   const auto j = test::judge(s, merging_from(s, 6.0, 8.0));
   const MergeAttempt& a = only_attempt(*j);
   EXPECT_EQ(a.basis, RowBasis::kDef1);
   EXPECT_NEAR(a.decision_time_s, 0.0, 1e-9);
+  EXPECT_NEAR(a.def1.rho_s, 13.0, 1e-9);
   EXPECT_TRUE(j->row.ego_holds_at(0.5));
   EXPECT_TRUE(j->row.ego_holds_at(2.1));
+}
+
+// Definition 1.1 lets the follower accelerate until the ego merges. The gap of the first test
+// (follower 80 m behind) read for the merge from 6 s, midpoint 7 s: at t = 0 it held for a merge
+// of rho_m = 4 s, not for the one that happened (rho = 2 (7 - T) = 13 s, T = 0.5 s: the
+// follower, at a_accel^max for 6.5 s, would be 42 m further on): the ego is credited only from
+// when the gap held for a merge with its midpoint at 7 s. (Read at rho_m from t = 0, the follower was predicted to accelerate
+// for 2 s only, and a follower accelerating legally until the midpoint carried the duty the
+// ego's late merge created.)
+TEST(MergeAttempts, AReadingPredictsTheFollowerAcceleratingUntilTheObservedMidpoint) {
+  const Scenario s = gap_scenario(-80.0, 200.0);
+  const auto j = test::judge(s, merging_from(s, 6.0, 8.0));
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kDef1);
+  EXPECT_GT(a.decision_time_s, 1.0);
+  EXPECT_NEAR(a.def1.rho_s, 2.0 * (7.0 - 0.5 - a.decision_time_s), 1e-9);
+  EXPECT_FALSE(j->row.ego_holds_at(0.5));
 }
 
 // Vehicle 1 behind the ego accelerates at its a_accel^max (2 m/s2), so ineq. (1.1) toward it
@@ -110,11 +132,12 @@ TEST(MergeAttempts, AGapFeasibleAllAlongIsCreditedFromBeforeTheDecisionWindow) {
 // steps from the entry missed that instant).
 //
 //   t = 0      main lane   [1]---(1.1) holds by 0.01 m---+
-//              side lane                                  [ego] -> starts at 1.08 s
+//              side lane                                  [ego] -> starts at 1.04 s, midpoint 1.98 s
+// (a midpoint within rho_m/2 of t = 0, so that rho_m is the reading's duration there)
 TEST(MergeAttempts, AGapFeasibleOnlyAtTheWindowsFirstInstantGrantsTheRightOfWay) {
   Scenario s = gap_scenario(-80.0);
   const auto trace_of = [](const Scenario& sc) {
-    return test::with_lateral_move(constant_accel_trace(sc, 4.0, {0.0, 2.0}), 1.02, 1.75);
+    return test::with_lateral_move(constant_accel_trace(sc, 4.0, {0.0, 2.0}), 0.98, 1.75);
   };
   const double v_max = s.road.speed_limit_mps;
   const double margin0_m = def1_1_margin_m(test::observed(s, trace_of(s)), 0, 1, v_max, 4.0);
@@ -150,11 +173,13 @@ TEST(MergeAttempts, AStartWithTheFollowerTooCloseHasNoRightOfWay) {
 
 // The same too-close follower; the ego asks it to yield (a Def. 2.1 request at request_s, 0.5 s
 // unless given), its acceptance sent 0.1 s later and delivered at accept_delivered_s.
-Trace with_exchange(Trace t, int responder, double accept_delivered_s, double request_s = 0.5) {
+Trace with_exchange(Trace t, int responder, double accept_delivered_s, double request_s = 0.5, double vo_star_mps = 18,
+                    double pc_m = 40) {
   const TraceEvent accept = test::message_event(request_s + 0.1, MessageType::kAccept, responder, 0,
-                                                CoopCase::kEgoAhead, 40, 30, 18);
-  t.events = {test::message_event(request_s, MessageType::kRequest, 0, responder, CoopCase::kEgoAhead, 40, 30, 18),
-              accept, test::delivered_event(accept, accept_delivered_s)};
+                                                CoopCase::kEgoAhead, pc_m, 30, vo_star_mps);
+  t.events = {
+      test::message_event(request_s, MessageType::kRequest, 0, responder, CoopCase::kEgoAhead, pc_m, 30, vo_star_mps),
+      accept, test::delivered_event(accept, accept_delivered_s)};
   return t;
 }
 
@@ -183,6 +208,122 @@ TEST(MergeAttempts, AnAcceptanceGrantsTheRightOfWayOnlyWhenTheGapsOtherVehicleAl
   const auto refused = test::judge(near, with_exchange(merging_from(near, 1.0), 1, 0.9));
   EXPECT_NE(only_attempt(*refused).basis, RowBasis::kDef2);
   EXPECT_FALSE(refused->row.ego_holds_at(0.95));
+}
+
+// Per vehicle of the gap entered: the partner by its acceptance, the gap's other vehicle by
+// Definition 1 for the pair at the request; the ego holds the right of way toward each as its
+// cover gives it.
+TEST(MergeAttempts, AnAcceptanceCoversItsSenderAndDefinition1TheGapsOtherVehicle) {
+  const Scenario far = gap_scenario(-45.0, 100.0, 22.0), near = gap_scenario(-45.0, 20.0, 22.0);
+  const auto ok = test::judge(far, with_exchange(merging_from(far, 1.0), 1, 0.9));
+  const MergeAttempt& a = only_attempt(*ok);
+  EXPECT_EQ(a.follower.vehicle, 1);
+  EXPECT_EQ(a.follower.by, Cover::kDef2);
+  EXPECT_EQ(a.leader.vehicle, 2);
+  EXPECT_EQ(a.leader.by, Cover::kDef2Pair);
+  EXPECT_GE(a.leader.margin_m, 0.0);
+  // Vehicle 2 20 m ahead: the acceptance still covers vehicle 1, and nothing covers vehicle 2.
+  const auto refused = test::judge(near, with_exchange(merging_from(near, 1.0), 1, 0.9));
+  const MergeAttempt& b = only_attempt(*refused);
+  EXPECT_EQ(b.basis, RowBasis::kNone);
+  EXPECT_EQ(b.follower.by, Cover::kDef2);
+  EXPECT_EQ(b.leader.by, Cover::kNone);
+  EXPECT_LT(b.leader.margin_m, 0.0);
+  EXPECT_TRUE(refused->row.ego_holds_toward_at(1, 1.0));
+  EXPECT_FALSE(refused->row.ego_holds_toward_at(2, 1.0));
+  EXPECT_FALSE(refused->row.ego_holds_at(1.0));
+}
+
+// A request saying P_c = 45 m; the ego merging from 0.5 s crosses the lane line at 30 m (1.5 s
+// at 20 m/s), 15 m nearer vehicle 1 than it said, beyond the tolerance: the 10 m the ego covers
+// in the response time T = 0.5 s at 20 m/s (more than half its length, 2.4 m). Vehicle 1 keeps what it accepted (v_o* = 20 m/s, its
+// speed). The acceptance grants nothing and the attempt is the lie's.
+TEST(MergeAttempts, AnAcceptanceOfARequestWhosePcTheEgoDidNotKeepGrantsNothing) {
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, with_exchange(merging_from(s, 0.5), 1, 0.9, 0.5, 20.0, 45.0));
+  const MergeAttempt& a = only_attempt(*j);
+  ASSERT_TRUE(a.crossing_x_m.has_value());
+  EXPECT_NEAR(*a.crossing_x_m, 30.0, 1e-9);
+  EXPECT_EQ(a.basis, RowBasis::kNone);
+  EXPECT_EQ(a.fault, AcceptanceFault::kUntruthful);
+  ASSERT_EQ(a.pc_checks.size(), 1u);
+  EXPECT_NEAR(a.pc_checks[0].tolerance_m, 10.0, 1e-9);
+  EXPECT_NEAR(a.pc_checks[0].margin_m, 30.0 - (45.0 - 10.0), 1e-9);
+  // Where the ego crosses at 40 m (merging from 1 s), within it: Definition 2.
+  const auto kept = test::judge(s, with_exchange(merging_from(s, 1.0), 1, 0.9, 0.5, 20.0, 45.0));
+  EXPECT_EQ(only_attempt(*kept).basis, RowBasis::kDef2);
+  // A responder that broke what it accepted (v_o* = 18 m/s, and it keeps 20) left the ego to
+  // answer its breach: the crossing is not held to P_c, and its acceptance covers it.
+  const auto broken = test::judge(s, with_exchange(merging_from(s, 0.5), 1, 0.9, 0.5, 18.0, 45.0));
+  EXPECT_EQ(only_attempt(*broken).basis, RowBasis::kDef2);
+  EXPECT_TRUE(only_attempt(*broken).pc_checks.empty());
+}
+
+// A 2.1 responder that did not yield and passed the ego bounds the gap entered as its leader: its
+// breach changed the gap, and its acceptance still covers it there. Vehicle 1, 5 m behind at
+// 20 m/s, accepts v_o* = 16 m/s and accelerates at 2 m/s2 instead; the ego keeps 20 m/s and merges
+// behind it (midpoint 3 s).
+TEST(MergeAttempts, AResponderThatPassedTheEgoByBreakingItsAcceptanceIsStillCovered) {
+  Scenario s = gap_scenario(-5.0, std::nullopt, 33.34);
+  s.vehicles[0].limits.accel_max_mps2 = 2.0;
+  Trace t = test::with_lateral_move(constant_accel_trace(s, 4.0, {0.0, 2.0}), 2.0, 1.75);
+  const TraceEvent accept = test::message_event(0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead, 60, 20, 16);
+  t.events = {test::message_event(0.0, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, 60, 20, 16), accept,
+              test::delivered_event(accept, 0.2)};
+  const auto j = test::judge(s, t);
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.entered_gap, (GapIndices{-1, 1}));
+  EXPECT_EQ(a.leader.by, Cover::kDef2);
+  EXPECT_EQ(a.basis, RowBasis::kDef2);
+}
+
+// Two acceptances of vehicle 1 (v_o* its speed, kept) in the window: of a request whose P_c
+// (100 m) the ego did not keep, then of a re-planned one (40 m) it kept. The attempt rests on the second; the first is no
+// lie the ego merged on (an earlier acceptance, replaced after an abort, is not judged against
+// the later merge's crossing).
+TEST(MergeAttempts, AStaleAcceptanceOfTheSameVehicleIsNotJudgedAgainstTheCrossing) {
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  Trace t = merging_from(s, 1.0);
+  const auto exchange = [&](double request_s, double pc_m, double delivered_s) {
+    const TraceEvent accept = test::message_event(request_s + 0.1, MessageType::kAccept, 1, 0, CoopCase::kEgoAhead,
+                                                  pc_m, 30, 20);
+    t.events.push_back(test::message_event(request_s, MessageType::kRequest, 0, 1, CoopCase::kEgoAhead, pc_m, 30, 20));
+    t.events.push_back(accept);
+    t.events.push_back(test::delivered_event(accept, delivered_s));
+  };
+  exchange(0.0, 100.0, 0.2);
+  exchange(0.5, 40.0, 0.9);
+  const auto j = test::judge(s, t);
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kDef2);
+  EXPECT_EQ(a.exchange->sent_time_s, 0.5);
+  ASSERT_EQ(a.pc_checks.size(), 1u);
+  EXPECT_GE(a.pc_checks[0].margin_m, 0.0);
+  // With vehicle 2 20 m ahead nothing covers it, and the attempt has no basis: it is the
+  // Definition 1 gap rules' toward vehicle 2, not the stale lie's.
+  Scenario near = gap_scenario(-45.0, 20.0, 22.0);
+  Trace u = t;
+  const Trace moved = merging_from(near, 1.0);
+  for (std::size_t i = 0; i < u.steps.size(); ++i) u.steps[i].others = moved.steps[i].others;
+  const auto k = test::judge(near, u);
+  const MergeAttempt& b = only_attempt(*k);
+  EXPECT_EQ(b.basis, RowBasis::kNone);
+  EXPECT_EQ(b.fault, AcceptanceFault::kNone);
+  EXPECT_EQ(b.follower.by, Cover::kDef2);
+  EXPECT_EQ(b.leader.by, Cover::kNone);
+  for (const PcCheck& c : b.pc_checks) EXPECT_GE(c.margin_m, 0.0);
+}
+
+// A request without P_c asks for nothing the rules can judge: its acceptance is no acceptance.
+TEST(MergeAttempts, AnAcceptanceOfARequestWithoutANumberGrantsNothing) {
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  Trace t = with_exchange(merging_from(s, 1.0), 1, 0.9);
+  for (TraceEvent& e : t.events) e.message->pc_m = std::numeric_limits<double>::quiet_NaN();
+  const auto j = test::judge(s, t);
+  const MergeAttempt& a = only_attempt(*j);
+  EXPECT_EQ(a.basis, RowBasis::kNone);
+  EXPECT_EQ(a.fault, AcceptanceFault::kNone);  // judged by Definition 1 toward vehicle 1
+  EXPECT_EQ(a.follower.by, Cover::kNone);
 }
 
 TEST(MergeAttempts, AnAcceptanceDeliveredAfterRhoCGrantsNothingAndIsKeptForDef23) {

@@ -26,11 +26,14 @@ Trace with_midpoint(Trace t) { return with_midpoint_at(std::move(t), 1.0); }
 
 // The ego's request for a Def. 2 merge to `partner`, accepted and the acceptance delivered at
 // `accepted_s` (before the observed start of the merge: the ego holds the right of way by
-// Definition 2 from then).
-Trace with_def2_exchange(Trace t, int partner, CoopCase c, double target_mps, double accepted_s = 0.0) {
-  const TraceEvent accept = test::message_event(std::min(accepted_s, 0.1), MessageType::kAccept, partner, 0, c, 40, 44,
-                                                target_mps);
-  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, partner, c, 40, 44, target_mps));
+// Definition 2 from then). Its P_c is where the ego's centre crosses the lane line (20 m/s to a
+// midpoint at 1 s, unless given): a request whose P_c the ego does not keep to grants nothing
+// (def2_request_truthful).
+Trace with_def2_exchange(Trace t, int partner, CoopCase c, double target_mps, double accepted_s = 0.0,
+                         double pc_m = 20.0) {
+  const TraceEvent accept = test::message_event(std::min(accepted_s, 0.1), MessageType::kAccept, partner, 0, c, pc_m,
+                                                44, target_mps);
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, partner, c, pc_m, 44, target_mps));
   t.events.push_back(accept);
   t.events.push_back(test::delivered_event(accept, accepted_s));
   return t;
@@ -216,20 +219,23 @@ TEST(SigmoidBoundsMonitor, ResponderThatYieldedInTimeLeavesTheEgoLiable) {
 // moving over (midpoint at 2 s, the ego at 40 m). Vehicle 1 keeps 20 m/s: within the 0.5 m/s yield
 // tolerance.
 Trace partner_within_tolerance(const Scenario& s) {
-  return with_midpoint_at(with_def2_exchange(constant_accel_trace(s, 3.0), 1, CoopCase::kEgoAhead, 19.8, 0.2), 2.0, 0.2);
+  return with_midpoint_at(with_def2_exchange(constant_accel_trace(s, 3.0), 1, CoopCase::kEgoAhead, 19.8, 0.2, 40.0), 2.0,
+                          0.2);
 }
 
-TEST(SigmoidBoundsMonitor, PartnerWithinItsYieldToleranceIsJudgedOnItsAcceptedProfileToo) {
-  // x0 = -45.075: really 0.1 m inside D_lon(20, 20) = 45.175 m. On its accepted profile (20 ->
-  // 19.8 m/s by t_r + rho_c = 1 s, then 19.8) it would be at -5.355 m with D_lon(19.8, 20) =
-  // 44.03 m: 1.325 m clear. Legal but not as accepted: left to rss_longitudinal, not the ego's
-  // (corpus case rcpp-coop__ego_never_liable__sigmoid_pc_bounds__ego-6: 22.0 against 21.68 m/s,
-  // 0.89 m).
+TEST(SigmoidBoundsMonitor, PartnerNearerThanItsAcceptedProfileAnswersForTheMargin) {
+  // x0 = -45.075: really 0.1 m inside D_lon(20, 20) = 45.175 m. On the profile ineq. (3) counts
+  // on (20 -> 19.8 m/s by t_r + rho_c = 1 s, then 19.8 m/s) it would be at -5.365 m with
+  // D_lon(19.8, 20) = 44.03 m: 1.335 m clear. Keeping 20 m/s it is within def2_positions'
+  // allowances (its response time, 0.5 m/s, 0.5 m per second), but nearer the ego than what it
+  // accepted, and that is what left the ego 0.1 m short: vehicle 1 answers for the real margin
+  // (spec §8, point 24).
   Scenario s = base_scenario();
   s.vehicles = {vehicle(1, -45.075, 20.0)};
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
-  EXPECT_TRUE(out.result.holds);
-  EXPECT_NEAR(out.result.min_margin, 1.325, 0.01);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
+  EXPECT_NEAR(out.result.min_margin, -0.1, 0.01);
 }
 
 TEST(SigmoidBoundsMonitor, PartnerTooCloseEvenOnItsAcceptedProfileBlamesTheEgo) {
@@ -239,7 +245,7 @@ TEST(SigmoidBoundsMonitor, PartnerTooCloseEvenOnItsAcceptedProfileBlamesTheEgo) 
   const MonitorOutput out = test::run(monitor_sigmoid_pc_bounds, s, partner_within_tolerance(s));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, Party::ego());
-  EXPECT_NEAR(out.result.min_margin, -13.75, 0.01);
+  EXPECT_NEAR(out.result.min_margin, -13.75, 0.05);
 }
 
 // The partner (vehicle 1, 50 m behind, on its accepted 20 m/s) of a Def. 2.1 merge granted at

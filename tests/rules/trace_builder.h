@@ -22,6 +22,7 @@
 #include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
 #include "rules/monitor.h"
+#include "rules/situation.h"
 #include "sim/trace.h"
 
 namespace mg::test {
@@ -129,19 +130,20 @@ inline ObservedTrace observed(const Scenario& s, const Trace& t) {
 struct Judged {
   ObservedTrace trace;
   RuleParams params;
-  MergePhases phases;
-  MergeAttempts attempts;
-  RightOfWay row;
-  MonitorContext context() const { return MonitorContext{trace, row, params, phases, attempts}; }
+  Situation situation;
+  const MergePhases& phases = situation.phases;
+  const MergeAttempts& attempts = situation.attempts;
+  const RightOfWay& row = situation.row;
+  MonitorContext context() const {
+    return MonitorContext{trace, row, params, phases, attempts, situation.exchanges};
+  }
 };
 
 inline std::unique_ptr<Judged> judge(const Scenario& s, const Trace& t) {
   auto j = std::make_unique<Judged>();
   j->trace = observed(s, t);
   j->params = j->trace.params.rules;
-  j->phases = observe_merge_phases(j->trace, j->params);
-  j->attempts = observe_merge_attempts(j->trace, j->params, j->phases);
-  j->row = compute_right_of_way(j->trace, j->attempts);
+  j->situation = observe_situation(j->trace, j->params);
   return j;
 }
 

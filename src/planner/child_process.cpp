@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -131,6 +132,39 @@ void remember_group(pid_t pgid) {
   }
 }
 
+// Children being started and not yet in g_live_groups, and whether kill_all_child_groups has
+// begun. A child is registered only once posix_spawn returns, so without them a signal handled
+// on another thread in that window would end mergeguard and leave the new child running.
+std::atomic<int> g_spawning{0};
+std::atomic<bool> g_ending{false};
+static_assert(std::atomic<int>::is_always_lock_free && std::atomic<bool>::is_always_lock_free);
+
+// Starting and registering one child. The stop signals are blocked in this thread meanwhile, so
+// that their handler runs on another thread (which waits for this section) or, in a single
+// thread, after it; a child asked for once the handler has begun is not started at all
+// (ending()). The atomics are sequentially consistent: either the handler sees this section or
+// the section sees the handler's flag.
+class SpawnSection {
+ public:
+  SpawnSection() {
+    sigset_t stop;
+    sigemptyset(&stop);
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stop, sig);
+    pthread_sigmask(SIG_BLOCK, &stop, &previous_);
+    g_spawning.fetch_add(1);
+  }
+  ~SpawnSection() {
+    g_spawning.fetch_sub(1);
+    pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+  }
+  SpawnSection(const SpawnSection&) = delete;
+  SpawnSection& operator=(const SpawnSection&) = delete;
+  static bool ending() { return g_ending.load(); }
+
+ private:
+  sigset_t previous_{};
+};
+
 void forget_group(pid_t pgid) {
   for (std::atomic<pid_t>& slot : g_live_groups) {
     pid_t mine = pgid;
@@ -174,11 +208,15 @@ ChildProcess::ChildProcess(const std::string& command, const std::string& stderr
   default_signals(attr);
   std::string sh = "/bin/sh", dash_c = "-c", cmd = shell_line(command);
   char* argv[] = {sh.data(), dash_c.data(), cmd.data(), nullptr};
-  const int err = ::posix_spawn(&pid_, "/bin/sh", &actions, &attr, argv, environ);
+  int err = 0;
+  {
+    const SpawnSection section;
+    err = SpawnSection::ending() ? ECANCELED : ::posix_spawn(&pid_, "/bin/sh", &actions, &attr, argv, environ);
+    if (err == 0) remember_group(pid_);
+  }
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attr);
   if (err != 0) throw ChildStartError(errno_text("cannot start /bin/sh -c '" + command + "'", err));
-  remember_group(pid_);
   std::swap(in_fd_, fds.to_child[1]);
   std::swap(out_fd_, fds.from_child[0]);
 }
@@ -186,6 +224,13 @@ ChildProcess::ChildProcess(const std::string& command, const std::string& stderr
 ChildProcess::~ChildProcess() { end(); }
 
 void kill_all_child_groups() noexcept {
+  g_ending.store(true);
+  // A child being started on another thread is registered within microseconds; a bounded wait
+  // (nanosleep is async-signal-safe) keeps a stuck thread from holding the end up.
+  for (int waited_ms = 0; g_spawning.load() > 0 && waited_ms < 1000; ++waited_ms) {
+    timespec one_ms{0, 1'000'000};
+    ::nanosleep(&one_ms, nullptr);
+  }
   for (std::atomic<pid_t>& slot : g_live_groups)
     if (const pid_t pgid = slot.load(); pgid > 0) ::kill(-pgid, SIGKILL);
 }

@@ -216,6 +216,10 @@ TEST(ExecPlannerCli, CtrlCLeavesNoPlannerProcess) {
 TEST(ExecPlannerCli, ASecondCtrlCEndsEvenAPlannerThatIgnoresTheEndOfItsInput) {
   const fs::path dir = test::fresh_dir("exec_cli_sigint2");
   const pid_t pid = start_campaign(dir, fake("stubborn", "c6"), {"--planner-timeout", "5"});
+  // Once a planner runs, a call of 0.3 s is nearly always in flight: the first Ctrl-C then has
+  // something to wait for (sent before, it could end the campaign before the second arrives).
+  for (int i = 0; i < 3000 && !marked_process_alive("c6"); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
   ::kill(pid, SIGINT);  // the campaign now waits for its calls in flight, each 0.3 s
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ::kill(pid, SIGINT);

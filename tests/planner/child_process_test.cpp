@@ -2,6 +2,7 @@
 // ended, and that end() leaves no process of the child's group behind. Timeouts are generous
 // upper bounds only: nothing here asserts how fast something happens.
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -111,6 +112,24 @@ TEST(ChildProcess, StderrGoesToTheLogFile) {
 
 TEST(ChildProcess, AnUnwritableLogIsAStartError) {
   EXPECT_THROW(ChildProcess("cat", "/nonexistent-dir/x.log"), ChildStartError);
+}
+
+// Once the signal path has killed every child's group, a child asked for by another thread is
+// not started (it would outlive mergeguard). In a death test's own process: it ends the rest.
+TEST(ChildProcessDeathTest, NoChildStartsOnceTheSignalPathHasKilledTheGroups) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        kill_all_child_groups();
+        try {
+          ChildProcess child("cat", "");
+        } catch (const ChildStartError& e) {
+          std::fprintf(stderr, "%s\n", e.what());
+          std::_Exit(7);
+        }
+        std::_Exit(0);
+      },
+      ::testing::ExitedWithCode(7), "cannot start /bin/sh -c 'cat'");
 }
 
 }  // namespace

@@ -25,6 +25,14 @@ double path_curvature_cap_per_m(const PlannerSetup& s) {
   return std::min(std::tan(dyn.steer_max_rad) / (2.0 * dyn.wheelbase_m()), std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
 }
 
+double crawl_speed_mps(const PlannerSetup& s) { return kCrawlSpeedFraction * s.params.rules.sideslip_min_speed_mps; }
+
+double path_curvature_cap_per_m(const PlannerSetup& s, double top_speed_mps) {
+  if (top_speed_mps > crawl_speed_mps(s)) return path_curvature_cap_per_m(s);
+  const EgoDynamics& dyn = s.ego.dynamics;
+  return std::tan(dyn.steer_max_rad) / (2.0 * dyn.wheelbase_m());
+}
+
 double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
   return d.cg_to_rear_m - d.mass_kg * d.cg_to_front_m * speed_mps * speed_mps / (d.cornering_rear_npr * d.wheelbase_m());
 }
@@ -32,6 +40,11 @@ double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
 double kappa_cap_per_m(const PlannerSetup& s) {
   return std::min(s.params.planner.kappa_max_per_m,
                   std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s) / s.road.lane_width_m));
+}
+
+double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps) {
+  return std::min(s.params.planner.kappa_max_per_m,
+                  std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s, top_speed_mps) / s.road.lane_width_m));
 }
 
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
@@ -44,7 +57,7 @@ KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m,
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
                               half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
-  const double kappa_cap = kappa_cap_per_m(s);
+  const double kappa_cap = kappa_cap_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2()));
   if (lo > kappa_cap) return std::nullopt;
   // The search needs the margin's sign only: a flat sigmoid is comfortable by the bound alone (a
   // lower bound of the margin, then >= 0), without the speed profile.

@@ -38,17 +38,29 @@ double side_exit_limit_x_m(const PlannerSetup& s, double speed_mps = 0.0);
 // peak curvature is W kappa^2/(6 sqrt 3), that caps kappa.
 inline constexpr double kPathSideslipMaxRad = 0.025;
 double path_curvature_cap_per_m(const PlannerSetup& s);
+// A crawl: a merge driven no faster than kCrawlSpeedFraction of the speed from which the judge
+// bounds the sideslip (rules.sideslip_min_speed_mps, public like the speed limit; docs/rules.md
+// `sideslip`). Below it the sideslip bound constrains no path, so a crawl's curvature is capped by
+// half the ego's steering ability alone: an ego halted short of the side lane's end, with too
+// little room for a sideslip-bounded sigmoid, can still merge at walking pace (docs/planner.md).
+inline constexpr double kCrawlSpeedFraction = 0.7;
+double crawl_speed_mps(const PlannerSetup& s);
+// The curvature cap of a path driven at most at top_speed_mps: path_curvature_cap_per_m, or at
+// crawl speed the steering-only cap.
+double path_curvature_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 // The linear single-track model's steady-state sideslip per unit path curvature at speed v,
 // beta / c = l_r - m l_f v^2 / (C_r L) (rear axle: F_yr = m v^2 c l_f / L = C_r alpha_r and
 // beta = l_r c - alpha_r; Rajamani, Vehicle Dynamics and Control, 2nd ed., §3.3). At a crawl it is
 // the kinematic l_r; at speed, with soft rear tyres, many times larger and of the other sign.
 double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps);
 double kappa_cap_per_m(const PlannerSetup& s);
+double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
 // start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak
 // lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
-// bound, and lies in the configured [kappa_min, kappa_max].
+// bound, and lies in the configured [kappa_min, kappa_max] and under the curvature cap of the
+// ramp's top speed (kappa_cap_per_m).
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m);
 

@@ -1,5 +1,7 @@
 #include "planner/merge_path.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -263,6 +265,32 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswerWithMixedWidths, ()) {
       RC_ASSERT(occupancy_clear(s, 0.0, ego_y_m, path, ego, when, tracks, 1.5, &memo) == plain);
     }
   }
+}
+
+// Defaults: sideslip judged from 2 m/s, so a crawl is up to 1.4 m/s; l_r 1.6 m, L 2.8 m, steering
+// 0.5 rad. Above a crawl the path's curvature is capped at tan(0.025)/1.6 = 0.0156/m (kappa 0.215/m
+// on W = 3.5 m), at a crawl at tan(0.5)/5.6 = 0.0975/m (kappa 0.538/m).
+TEST(KappaCap, ACrawlIsCappedByHalfTheSteeringAbilityAlone) {
+  const Scenario s = road_only();
+  const double crawl_mps = crawl_speed_mps(s);
+  EXPECT_DOUBLE_EQ(crawl_mps, 1.4);
+  EXPECT_DOUBLE_EQ(path_curvature_cap_per_m(s, crawl_mps + 0.01), path_curvature_cap_per_m(s));
+  EXPECT_NEAR(path_curvature_cap_per_m(s, crawl_mps), std::tan(0.5) / 5.6, 1e-12);
+  EXPECT_NEAR(kappa_cap_per_m(s, crawl_mps), 0.538, 1e-3);
+  EXPECT_NEAR(kappa_cap_per_m(s, 10.0), 0.215, 1e-3);
+}
+
+// An ego at rest 22 m before the side lane's end (its front 19.6 m): a sigmoid with P_c 8 m ahead,
+// complete 17 m ahead, needs kappa >= ln(49)/8 = 0.486/m. Driven at a crawl it is admissible; at
+// 5 m/s the sideslip cap (0.215/m) rules it out.
+TEST(KappaCap, AnEgoAtRestNearTheSideLaneEndCanMergeAtACrawl) {
+  Scenario s = road_only();
+  s.road.side_lane_end_x_m = 22.0;
+  const KappaRange crawl = kappa_range_for(s, 8.0, 0.0, 17.0, SpeedRamp{0.0, 1.3, 2.0, 4.0}, 0.0);
+  ASSERT_TRUE(crawl.has_value());
+  EXPECT_NEAR(crawl->first, std::log(49.0) / 8.0, 1e-9);
+  EXPECT_LE(crawl->first, crawl->second);
+  EXPECT_FALSE(kappa_range_for(s, 8.0, 0.0, 17.0, SpeedRamp{0.0, 5.0, 2.0, 4.0}, 0.0).has_value());
 }
 
 }  // namespace

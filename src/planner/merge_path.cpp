@@ -72,9 +72,28 @@ KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m,
   return std::make_pair(lo, *hi);
 }
 
+double Track::x_at(double t_s) const {
+  const double own_m = x0_m + motion.distance_at_m(t_s);
+  return behind.active ? std::min(own_m, behind.x_at(t_s)) : own_m;
+}
+
+double Track::v_at(double t_s) const {
+  const double own_mps = motion.speed_at_mps(t_s);
+  if (!behind.active || x0_m + motion.distance_at_m(t_s) < behind.x_at(t_s)) return own_mps;
+  return std::min(own_mps, behind.motion.speed_at_mps(t_s));
+}
+
 Track follower_track(const MainLaneVehicle& f, double rho_s, double observed_accel_mps2) {
   const double a = std::max(f.limits.accel_max_mps2, observed_accel_mps2);
-  return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.width_m, f.limits};
+  return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.width_m, f.limits, 0.0, {}};
+}
+
+Track behind_follower_track(const MainLaneVehicle& v, const MainLaneVehicle& follower, double rho_s,
+                            double observed_accel_mps2, double follower_accel_mps2) {
+  Track t = follower_track(v, rho_s, observed_accel_mps2);
+  const Track ahead = follower_track(follower, rho_s, follower_accel_mps2);
+  t.behind = BehindBound{true, ahead.x0_m, ahead.motion, 0.5 * (v.length_m + follower.length_m) + kLeaderStandoffM};
+  return t;
 }
 
 const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v) {
@@ -120,7 +139,7 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const M
   } else if (seen_mps2 > 0.0) {
     motion = SpeedRamp{l.speed_mps, 0.0, 1.0, seen_mps2};
   }
-  return Track{l.x_m, motion, l.length_m, l.width_m, l.limits};
+  return Track{l.x_m, motion, l.length_m, l.width_m, l.limits, 0.0, {}};
 }
 
 BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2) {
@@ -141,8 +160,11 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
   tracks.followers.reserve(lane.size());
   tracks.leaders.reserve(lane.size());
   for (const MainLaneVehicle& v : lane) {
-    if (gap.follower && !lane_order_before(*gap.follower, v))
+    if (gap.follower && v.id == gap.follower->id)
       tracks.followers.push_back(follower_track(v, follower_window_s, observed_accel_mps2(v.id)));
+    else if (gap.follower && !lane_order_before(*gap.follower, v))
+      tracks.followers.push_back(behind_follower_track(v, *gap.follower, follower_window_s, observed_accel_mps2(v.id),
+                                                       observed_accel_mps2(gap.follower->id)));
     if (gap.leader && !lane_order_before(v, *gap.leader)) {
       const MainLaneVehicle* ahead = next_in_lane(lane, v);
       tracks.leaders.push_back(

@@ -64,8 +64,19 @@ double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m);
 
+// A vehicle a track cannot pass, being behind it in the same lane: its own motion from x0_m, and
+// the bumper-to-centre distance the track keeps behind it (half both lengths and kLeaderStandoffM).
+struct BehindBound {
+  bool active = false;
+  double x0_m = 0.0;
+  SpeedRamp motion;
+  double standoff_m = 0.0;
+  double x_at(double t_s) const { return x0_m + motion.distance_at_m(t_s) - standoff_m; }
+};
+
 // A main-lane vehicle's predicted motion during a merge candidate: from x0_m, one speed ramp, on
-// the lane centred at lane_y_m (0: the merge's target lane).
+// the lane centred at lane_y_m (0: the merge's target lane); with `behind` active, never past the
+// vehicle ahead of it, and no faster than it once it has caught up.
 struct Track {
   double x0_m = 0.0;
   SpeedRamp motion;
@@ -73,14 +84,20 @@ struct Track {
   double width_m = 0.0;
   Limits limits;
   double lane_y_m = 0.0;
-  double x_at(double t_s) const { return x0_m + motion.distance_at_m(t_s); }  // t after the decision
-  double v_at(double t_s) const { return motion.speed_at_mps(t_s); }
+  BehindBound behind;
+  double x_at(double t_s) const;  // t after the decision
+  double v_at(double t_s) const;
 };
 
 // The follower accelerates at its a_accel^max until rho/2 and then holds its speed (Def. 1.1);
 // one seen accelerating harder than that, at the rate seen (a follower racing beyond its declared
 // limit took the gap an ego planned to overtake it into; a campaign finding).
 Track follower_track(const MainLaneVehicle& f, double rho_s, double observed_accel_mps2 = 0.0);
+// A vehicle behind the gap's follower, predicted like a follower but bounded by the follower's own
+// track: it cannot drive through the follower (a vehicle approaching a stopped follower, predicted
+// to accelerate past it, barred every merge ahead of the stopped one; a campaign finding).
+Track behind_follower_track(const MainLaneVehicle& v, const MainLaneVehicle& follower, double rho_s,
+                            double observed_accel_mps2, double follower_accel_mps2);
 // The leader holds its speed (Def. 1.2) unless it is seen braking harder than
 // kLeaderBrakingMps2: then it is predicted to keep braking at that rate until it stops, since a
 // compliant leader may brake for a slower vehicle ahead of it (docs/planner.md); a rate beyond its
@@ -111,7 +128,8 @@ double chained_accel_mps2(const std::vector<MainLaneVehicle>& lane, const MainLa
                           const std::function<double(int)>& observed_accel_mps2);
 
 // The vehicles a merge into a gap is checked against: the gap's follower and every target-lane
-// vehicle behind it (followers, follower_track over follower_window_s), its leader and every
+// vehicle behind it (followers, follower_track over follower_window_s, those behind the follower
+// bounded by it: behind_follower_track), its leader and every
 // vehicle ahead of it (leaders, leader_track with each one's observed acceleration). Vehicles of
 // one lane cannot pass each other, but their separate predictions can: a fast leader predicted
 // at constant speed "passes" a slower vehicle ahead of it, and the ego, merging behind the leader,

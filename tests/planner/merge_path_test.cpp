@@ -293,5 +293,24 @@ TEST(KappaCap, AnEgoAtRestNearTheSideLaneEndCanMergeAtACrawl) {
   EXPECT_FALSE(kappa_range_for(s, 8.0, 0.0, 17.0, SpeedRamp{0.0, 5.0, 2.0, 4.0}, 0.0).has_value());
 }
 
+// Vehicle 2, the gap's follower, stands at X = 90 m; vehicle 1 approaches it at 10 m/s from X = 0.
+// As a follower alone vehicle 1 would be predicted past vehicle 2 (accelerating at 2 m/s2 for
+// rho/2 = 3 s: 39 m at 3 s, 79 m at 6 s, 115 m at 9 s); behind it, it stays 6.8 m (half both
+// lengths and the 2 m standoff) behind vehicle 2's own follower prediction, and at its speed there.
+TEST(FollowerTrack, AVehicleBehindTheFollowerIsPredictedBehindIt) {
+  const std::vector<MainLaneVehicle> lane = {lane_vehicle(1, 0.0, 10.0), lane_vehicle(2, 90.0, 0.0)};
+  const LaneGap gap{lane[1], std::nullopt};
+  const GapTracks tracks = gap_tracks(lane, gap, 6.0, no_accel);
+  ASSERT_EQ(tracks.followers.size(), 2u);
+  const Track& follower = tracks.followers[0].x0_m == 90.0 ? tracks.followers[0] : tracks.followers[1];
+  const Track& behind = tracks.followers[0].x0_m == 90.0 ? tracks.followers[1] : tracks.followers[0];
+  EXPECT_NEAR(follower.x_at(3.0), 99.0, 1e-9);
+  EXPECT_NEAR(behind.x_at(3.0), 39.0, 1e-9);  // not yet at the follower: its own prediction
+  EXPECT_NEAR(behind.v_at(3.0), 16.0, 1e-9);
+  EXPECT_NEAR(behind.x_at(9.0), follower.x_at(9.0) - 6.8, 1e-9);
+  EXPECT_NEAR(behind.v_at(9.0), follower.v_at(9.0), 1e-9);
+  EXPECT_LT(behind.x_at(20.0), follower.x_at(20.0));
+}
+
 }  // namespace
 }  // namespace mg

@@ -22,10 +22,15 @@ constexpr double kDeadlineTieS = 1e-9;
 constexpr double kMergeRetryAfterAbortS = 1.0;
 constexpr double kLongerMergeEveryS = 0.5;
 
+// The merge keeps the ego's offset toward the main lane (from_hold) after a hold, and for an ego
+// that starts off its lane centre toward the main lane and is not on its way back from an abort:
+// steering back to the centre first took it away from the gap it had just chosen, for seconds,
+// while the gap stayed open (progress; a campaign finding). On the way back from an abort the
+// sigmoid is followed (committed_merge.h).
 CommittedMerge commit(const InSideLane& side, const WorldSnapshot& w, const Sigmoid& sig, double speed_mps,
                       RcppDecision d) {
-  return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m),
-                        side.lateral.hold_y_m.has_value()};
+  const bool keep_offset = side.lateral.hold_y_m.has_value() || !side.lateral.return_path;
+  return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m), keep_offset};
 }
 
 RcppCycle keep_main_lane(const WorldSnapshot& w) {

@@ -469,5 +469,25 @@ RC_GTEST_PROP(PlannerProperties, SamePlannerSameSnapshotSameOutput, ()) {
   }
 }
 
+// An ego that starts 0.6 m off its lane centre toward the main lane, with the lane empty, merges at
+// once: its path never takes it back toward the side lane's centre first (progress; a campaign
+// finding: the return took seconds while the gap stayed open).
+TEST(PlannerHarness, AnEgoStartingOffItsLaneCentreTowardTheMainLaneKeepsThatOffsetWhenItMerges) {
+  Scenario s;
+  s.ego.x_m = 0.0;
+  s.ego.y_m = -s.road.lane_width_m + 0.6;
+  s.ego.speed_mps = 15.0;
+  const Rollout r = roll_out(s, "rcpp", 2.0);
+  ASSERT_EQ(decision_of(r.outputs.front()).mode, DecisionMode::kDef1Merge) << r.outputs.front().reason;
+  for (std::size_t k = 0; k < r.outputs.size(); ++k) {
+    for (const PathPoint& p : r.outputs[k].path) {
+      if (p.x_m >= r.egos[k].x_m) {
+        EXPECT_GE(p.y_m, s.ego.y_m - 1e-9) << "cycle " << k << " at X = " << p.x_m;
+      }
+    }
+  }
+}
+
+
 }  // namespace
 }  // namespace mg

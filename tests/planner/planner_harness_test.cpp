@@ -489,5 +489,36 @@ TEST(PlannerHarness, AnEgoStartingOffItsLaneCentreTowardTheMainLaneKeepsThatOffs
 }
 
 
+// A 15 m truck 35 m behind the ego, 3 m/s faster: the only gap is behind it. At t = 0 only a long
+// merge (3 rho_m) is feasible, its sigmoid starting tens of metres ahead; once the truck has come
+// alongside, a merge at rho_m starts sooner and replaces it before the ego has begun the first.
+TEST(PlannerHarness, ACommittedMergeNotYetBegunGivesWayToOneThatBeginsSooner) {
+  Scenario s;
+  s.road.lane_width_m = 3.3;
+  s.road.speed_limit_mps = 28.1;
+  s.road.side_lane_end_x_m = 350.0;
+  s.params.rss.response_time_s = 0.75;
+  s.params.planner.merge_duration_s = 7.3;
+  s.params.rules.merge_duration_s = 7.3;
+  s.ego.x_m = 54.0;
+  s.ego.y_m = -s.road.lane_width_m;
+  s.ego.speed_mps = 9.1;
+  MainVehicle truck;
+  truck.id = 1;
+  truck.x_m = 19.5;
+  truck.speed_mps = 12.0;
+  truck.size.length_m = 15.2;
+  truck.size.width_m = 2.5;
+  s.vehicles = {truck};
+  const Rollout r = roll_out(s, "rcpp", 30.0);
+  ASSERT_EQ(decision_of(r.outputs.front()).mode, DecisionMode::kDef1Merge) << r.outputs.front().reason;
+  const bool replaced = std::any_of(r.outputs.begin(), r.outputs.end(), [](const PlanOutput& o) {
+    return o.reason.find("a sooner merge replaces") != std::string::npos;
+  });
+  EXPECT_TRUE(replaced);
+  EXPECT_TRUE(r.merged);
+  EXPECT_FALSE(r.left_road);
+}
+
 }  // namespace
 }  // namespace mg

@@ -14,6 +14,8 @@
 
 #include "core/scenario.h"
 #include "planner/definition1.h"
+#include "planner/definition1_search.h"
+#include "planner/merge_path.h"
 #include "planner/planner.h"
 #include "planner/rcpp_planner.h"
 
@@ -518,6 +520,24 @@ TEST(PlannerHarness, ACommittedMergeNotYetBegunGivesWayToOneThatBeginsSooner) {
   EXPECT_TRUE(replaced);
   EXPECT_TRUE(r.merged);
   EXPECT_FALSE(r.left_road);
+}
+
+// An ego at rest 24 m before the side lane's end of an empty road (speed limit 35.5 m/s: the
+// shared speed grid's steps are 0.74 m/s, so it holds 0.74 and 1.48 m/s, too slow to reach a P_c
+// the sigmoid can turn in to, and faster than a crawl). The longer merges find a merge at the
+// crawl speed, 1.4 m/s.
+TEST(PlannerHarness, AnEgoAtRestNearTheSideLaneEndMergesAtTheCrawlSpeed) {
+  Scenario s;
+  s.road.speed_limit_mps = 35.5;
+  s.road.side_lane_end_x_m = 24.0;
+  s.ego.x_m = 0.0;
+  s.ego.y_m = -s.road.lane_width_m;
+  s.ego.speed_mps = 0.0;
+  const WorldSnapshot w = initial_snapshot(s);
+  EXPECT_FALSE(plan_definition1(w, MergeDurations::kRhoM, nullptr).has_value());
+  const auto plan = plan_definition1(w, MergeDurations::kLonger, nullptr);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_NEAR(plan->ve_star_mps, crawl_speed_mps(s), 1e-12) << plan->decision.reason;
 }
 
 }  // namespace

@@ -166,10 +166,97 @@ bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t
   return a_end_m - (l.x_m + vl * rho_s) >= d_lon_m;
 }
 
+// The merge a gap's feasibility is shown with, judged along its whole duration, not only at
+// rho / 2 and rho: the ego's centre follows the paper's sigmoid (RCPP §IV) in time, from its
+// observed Y at the start to the target lane's centre at rho through the midpoint at rho / 2
+// (the logistic of steepness c / rho, kWitnessSteepness, cut at 0 and rho and rescaled), while
+// its speed changes from the observed one toward v_e* at its declared rates. At every one of
+// kWitnessSamples + 1 instants at which the ego is laterally nearer a vehicle than RCPP eq. (2)
+// (the judge's lateral RSS distance, with the ego's lateral speed on the path) plus
+// progress_lateral_margin_m, it must be RCPP eq. (1)'s D_lon plus progress_gap_margin_m clear of
+// it: behind every vehicle ahead of it, in the target lane or the lane beyond, each kept at its
+// observed speed (as Def. 1.2 takes the leader), and, until rho / 2 (P_c), ahead of every
+// target-lane vehicle behind it, which may accelerate at its a_accel^max (Def. 1.1). A gap that
+// ineq. (1)/(2) admit at rho / 2 and rho alone can still have the merge enter the RSS danger the
+// distance rules fail on (a leader passing the ego, a vehicle of the lane beyond): the rule
+// demands no merge the other rules would then fail. The lateral margin is the tracking slack a
+// driven merge needs: no controller follows its reference path to the centimetre.
+constexpr int kWitnessSamples = 40;
+constexpr double kWitnessSteepness[] = {6.0, 10.0};
+
+struct WitnessLateral {
+  double y_m, vy_mps;
+};
+WitnessLateral witness_lateral(double y0_m, double rho_s, double c, double tau_s) {
+  const auto logistic = [c](double u) { return 1.0 / (1.0 + std::exp(-c * (u - 0.5))); };
+  const double l0 = logistic(0.0), span = logistic(1.0) - l0;
+  const double l = logistic(tau_s / rho_s);
+  const double frac = (l - l0) / span;
+  return {y0_m * (1.0 - frac), -y0_m * c * l * (1.0 - l) / (rho_s * span)};
+}
+
+bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, double ve,
+                         double c) {
+  const auto& v = t.steps[step].vehicles;
+  const ObservedState& ego = v[0];
+  const Limits& el = t.vehicles[0].limits;
+  const double v0 = std::max(ego.vx_mps, 0.0);
+  const double T = t.params.rss.response_time_s;
+  const double half_lane = 0.5 * t.road.lane_width_m;
+  for (int k = 0; k <= kWitnessSamples; ++k) {
+    const double tau = rho * k / kWitnessSamples;
+    const double x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
+    const double rate = ve >= v0 ? el.accel_max_mps2 : el.brake_min_mps2;
+    const double ve_now = ve >= v0 ? std::min(ve, v0 + rate * tau) : std::max(ve, v0 - rate * tau);
+    const WitnessLateral lat = witness_lateral(ego.y_m, rho, c, tau);
+    for (std::size_t o = 1; o < v.size(); ++o) {
+      const ObservedState& ov = v[o];
+      const bool target_lane = std::abs(ov.y_m) < half_lane;
+      const bool o_left = ov.y_m >= lat.y_m;
+      const double d_lat = rss_lateral_m({o_left ? 0.0 : lat.vy_mps, o_left ? lat.vy_mps : 0.0,
+                                          size_of(t, o_left ? o : 0).width_m, size_of(t, o_left ? 0 : o).width_m, T,
+                                          el.lat_accel_max_mps2, el.lat_brake_min_mps2,
+                                          t.params.rss.fluctuation_margin_m});
+      if (std::abs(ov.y_m - lat.y_m) >= d_lat + p.progress_lateral_margin_m) continue;
+      const double vo = std::max(ov.vx_mps, 0.0);
+      const double xo = ov.x_m + vo * tau;
+      if (xo >= x) {  // ahead: the ego is the rear vehicle
+        const double d_lon = rss_longitudinal_m({ve_now, vo, size_of(t, 0).length_m, size_of(t, o).length_m, T,
+                                                 el.accel_max_mps2, el.brake_min_mps2, limits_of(t, o).brake_max_mps2});
+        if (xo - x < d_lon + p.progress_gap_margin_m) return false;
+        continue;
+      }
+      if (!target_lane || tau > 0.5 * rho + kTieS) continue;  // past P_c the follower keeps D_lon
+      const Limits& ol = limits_of(t, o);
+      const double xf = ov.x_m + vo * tau + 0.5 * ol.accel_max_mps2 * tau * tau;
+      const double vf = vo + ol.accel_max_mps2 * tau;
+      const double d_lon = rss_longitudinal_m({vf, ve_now, size_of(t, o).length_m, size_of(t, 0).length_m, T,
+                                               ol.accel_max_mps2, ol.brake_min_mps2, el.brake_max_mps2});
+      if (x - xf < d_lon + p.progress_gap_margin_m) return false;
+    }
+  }
+  return true;
+}
+
 double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double lateral_m) {
   const double radius_m = 0.5 * t.vehicles[0].size.length_m / std::tan(p.sideslip_max_rad);
   const double h = std::clamp(lateral_m, 0.0, radius_m);
   return std::sqrt(2.0 * radius_m * h - h * h);
+}
+
+// Some v_e* of the interval, its midpoint within the turn-in and the room, whose witness merge
+// (witness_merge_clear, either steepness) is clear along its whole duration.
+constexpr int kWitnessSpeeds = 8;
+template <class ToMid>
+bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, const Def1Interval& in, const ToMid& to_mid_m, double turn_in_m, double room_m) {
+  for (int j = 0; j <= kWitnessSpeeds; ++j) {
+    const double ve = in.ve_lo_mps + (in.ve_hi_mps - in.ve_lo_mps) * j / kWitnessSpeeds;
+    const double mid = to_mid_m(ve);
+    if (mid < turn_in_m || mid > room_m) continue;
+    for (const double c : kWitnessSteepness)
+      if (witness_merge_clear(t, p, step, rho, ve, c)) return true;
+  }
+  return false;
 }
 
 std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step) {
@@ -202,6 +289,7 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
         return speed_change_distance_m(v0, ve, ego.accel_max_mps2, ego.brake_min_mps2, 0.5 * rho);
       };
       if (to_mid_m(in.ve_hi_mps) < turn_in_m || to_mid_m(in.ve_lo_mps) > room_m) continue;
+      if (!witness_exists(t, p, step, rho, in, to_mid_m, turn_in_m, room_m)) continue;
       out.push_back({id(gap.follower), id(gap.leader), rho, in.ve_lo_mps, in.ve_hi_mps});
       break;
     }

@@ -24,7 +24,11 @@ namespace mg {
 // (rho / 2 on) no sooner than a path within the sideslip bound can turn in (shortest_turn_in_m)
 // and with its front still progress_gap_margin_m short of the side lane's end. A gap whose leader
 // brakes harder than progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader
-// holds its speed). Path shape and comfort beyond that are the planner's business.
+// holds its speed). The merge must also be clear along its whole duration, not only at rho / 2 and
+// rho: on a sigmoid in time through the lane line at rho / 2, wherever the ego is laterally nearer
+// a vehicle (of the target lane or the lane beyond) than D_lat plus progress_lateral_margin_m, it
+// is D_lon plus progress_gap_margin_m behind it if ahead, and ahead of it until rho / 2 if it is a
+// target-lane vehicle behind. Path shape and comfort beyond that are the planner's business.
 struct FeasibleMerge {
   int follower_id = -1;  // -1: open gap
   int leader_id = -1;

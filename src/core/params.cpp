@@ -11,7 +11,7 @@ RuleParams read_rules(const ObjectReader& r) {
                "accel_tolerance_mps2", "speed_tolerance_mps", "yield_speed_tolerance_mps", "halted_speed_mps",
                "road_edge_tolerance_m", "lat_speed_hysteresis_mps", "max_lat_speed_sign_changes_per_merge",
                "sideslip_max_rad", "sideslip_min_speed_mps", "progress_grace_s", "progress_gap_margin_m",
-               "progress_leader_braking_mps2", "progress_min_merge_speed_mps"});
+               "progress_leader_braking_mps2", "progress_min_merge_speed_mps", "progress_lateral_margin_m"});
   RuleParams p;
   p.merge_duration_s = r.number_or("merge_duration_s", p.merge_duration_s, 0.5, 20.0);
   p.comm_threshold_s = r.number_or("comm_threshold_s", p.comm_threshold_s, 0.05, 10.0);
@@ -39,6 +39,7 @@ RuleParams read_rules(const ObjectReader& r) {
       r.number_or("progress_leader_braking_mps2", p.progress_leader_braking_mps2, 0.0, 15.0);
   p.progress_min_merge_speed_mps =
       r.number_or("progress_min_merge_speed_mps", p.progress_min_merge_speed_mps, 0.0, 10.0);
+  p.progress_lateral_margin_m = r.number_or("progress_lateral_margin_m", p.progress_lateral_margin_m, 0.0, 1.5);
   return p;
 }
 
@@ -133,7 +134,8 @@ nlohmann::json rule_params_to_json(const RuleParams& p) {
           {"progress_grace_s", p.progress_grace_s},
           {"progress_gap_margin_m", p.progress_gap_margin_m},
           {"progress_leader_braking_mps2", p.progress_leader_braking_mps2},
-          {"progress_min_merge_speed_mps", p.progress_min_merge_speed_mps}};
+          {"progress_min_merge_speed_mps", p.progress_min_merge_speed_mps},
+          {"progress_lateral_margin_m", p.progress_lateral_margin_m}};
 }
 
 nlohmann::json params_to_json(const Params& p) {

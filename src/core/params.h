@@ -74,6 +74,7 @@ struct RuleParams {
   double progress_gap_margin_m = 5.0;   // progress: slack a gap must have to count as feasible, [0, 20]
   double progress_leader_braking_mps2 = 0.5;  // progress: leader braking that excuses waiting, [0, 15]
   double progress_min_merge_speed_mps = 5.0;  // progress: the slowest v_e* that counts as a drivable merge, [0, 10]
+  double progress_lateral_margin_m = 0.75;  // progress: lateral slack of a feasible merge beyond D_lat, [0, 1.5]
   bool operator==(const RuleParams&) const = default;
 };
 

@@ -92,6 +92,25 @@ TEST(ProgressMonitor, AnEgoTooCloseToTheEndToTurnInIsNotJudged) {
   EXPECT_TRUE(out.result.holds) << out.result.detail;
 }
 
+TEST(ProgressMonitor, AGapIsJudgedAlongTheWholeMergeNotOnlyAtItsMidpointAndEnd) {
+  // Vehicle 1 overtakes the ego (12 m/s) at 20 m/s from alongside it on 3 m lanes. Ineq. (1.2)
+  // holds at rho/2 and rho for a v_e* the ego brakes to, and holds there whatever the lateral
+  // slack; but a merge leaving the side lane while the leader is still beside the ego comes within
+  // D_lat plus the slack of it without D_lon behind it. With the largest slack (1.5 m) the ego is
+  // that near it from the first instant, and the gap is not offered; with none it is.
+  Scenario s = base_scenario();
+  s.road.lane_width_m = 3.0;
+  s.ego.y_m = -3.0;
+  s.ego.x_m = 100.0;
+  s.ego.speed_mps = 12.0;
+  s.vehicles = {vehicle(1, 100.0, 20.0)};
+  const auto j = test::judge(s, constant_accel_trace(s, 1.0));
+  j->params.progress_lateral_margin_m = 1.5;
+  EXPECT_TRUE(def1_gaps_feasible(j->trace, j->params, 0).empty());
+  j->params.progress_lateral_margin_m = 0.0;
+  EXPECT_FALSE(def1_gaps_feasible(j->trace, j->params, 0).empty());
+}
+
 TEST(ProgressMonitor, TheTurnInIsOneArcWithinTheSideslipBound) {
   // R = (l / 2) / tan(0.05) = 2.4 / 0.05004 = 47.96 m; 1.75 m to the side: sqrt(2 R h - h^2).
   const Scenario s = base_scenario();

@@ -98,6 +98,12 @@ namespace {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
+nlohmann::json measures_to_json(const RuleResult& r) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [name, value] : r.measures) out[name] = number_or_null(value);
+  return out;
+}
+
 nlohmann::json rule_to_json(const RuleResult& r) {
   return {{"rule_id", r.rule_id},
           {"paper_ref", r.paper_ref},
@@ -110,10 +116,15 @@ nlohmann::json rule_to_json(const RuleResult& r) {
           {"liable", party_name(r.holds ? Party::nobody() : r.liable_id)},
           {"required_value", number_or_null(r.required_value)},
           {"actual_value", number_or_null(r.actual_value)},
-          {"detail", r.detail}};
+          {"detail", r.detail},
+          {"measures", measures_to_json(r)}};
 }
 
 }  // namespace
+
+nlohmann::json judged_with_json(const CheckResult& r) {
+  return {{"rules", rule_params_to_json(r.rule_params)}, {"rss", rss_params_to_json(r.trace.params.rss)}};
+}
 
 nlohmann::json check_result_to_json(const CheckResult& r) {
   nlohmann::json rules = nlohmann::json::array();
@@ -149,6 +160,7 @@ nlohmann::json check_result_to_json(const CheckResult& r) {
           {"collision", r.collision},
           {"collision_liable", party_name(r.collision ? r.collision_liable_id : Party::nobody())},
           {"rules_violated", violated},
+          {"judged_with", judged_with_json(r)},
           {"rules", rules},
           {"right_of_way", row},
           {"right_of_way_observations", r.right_of_way_observations},

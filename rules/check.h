@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -29,6 +30,9 @@ struct RuleResult {
   double required_value = 0.0;  // at the worst moment: what the rule required ...
   double actual_value = 0.0;    // ... and what the trace had
   std::string detail;           // one line for the report
+  // Named figures of the judgement beyond its margin (progress: the feasible gaps the ego let pass
+  // and for how long), report.json's "measures".
+  std::vector<std::pair<std::string, double>> measures;
 };
 
 struct CheckResult {
@@ -57,5 +61,7 @@ CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams
 CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules = std::nullopt);
 
 nlohmann::json check_result_to_json(const CheckResult& r);
+// The parameters a result was judged with: {"rules": RuleParams, "rss": RssParams}.
+nlohmann::json judged_with_json(const CheckResult& r);
 
 }  // namespace mg

@@ -55,7 +55,7 @@ Rollout roll_out(const Scenario& s, const std::string& planner_name, double hori
   std::vector<double> responder_target(w.others.size(), -1.0);
   std::vector<std::pair<double, V2vMessage>> in_flight;
   Rollout r;
-  MergePhaseDetector merge(s.road, s.params.rules, w.ego.y_m);
+  MergePhaseDetector merge(s.road, s.params.rules, s.ego.size, w.ego.y_m);
   double v = s.ego.speed_mps;
   for (int k = 0; k * dt < horizon_s; ++k) {
     w.time_s = k * dt;

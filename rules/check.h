@@ -55,10 +55,17 @@ struct CheckResult {
   std::uint64_t trace_digest = 0;     // trace_digest(trace)
 };
 
+// Which of the catalogue's rules a judgement applies (rules/catalog.json, "kind"). An audit of a
+// recording applies the safety rules only (docs/audit.md): a liveness rule's result then holds,
+// is not applicable, and says why.
+enum class RuleSet { kAll, kSafety };
+
 // Judges a trace with its own rule parameters (trace.params), or with `rules` when given
 // (`--params`). The rvalue overload takes the trace without a copy.
-CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams>& rules = std::nullopt);
-CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules = std::nullopt);
+CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams>& rules = std::nullopt,
+                           RuleSet applied = RuleSet::kAll);
+CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules = std::nullopt,
+                           RuleSet applied = RuleSet::kAll);
 
 nlohmann::json check_result_to_json(const CheckResult& r);
 // The parameters a result was judged with: {"rules": RuleParams, "rss": RssParams}.

@@ -88,6 +88,42 @@ Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepte
   return o;
 }
 
+// A merge into the main lane that the ego did not abort: an attempt whose body entered the main
+// lane and that completed or was under way when the trace ended. One that never entered does not
+// count, or an ego drifting out and back would always have an attempt under way at the end. The
+// gap it entered (by the vehicles' ids, -1 open) and from which step on (its entry) it no longer
+// excuses a wait.
+struct LaterMerge {
+  std::size_t entry_step = 0;
+  std::pair<int, int> gap;
+};
+std::vector<LaterMerge> completed_merges(const ObservedTrace& t, const MergeAttempts& attempts) {
+  const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
+  std::vector<LaterMerge> out;
+  for (const MergeAttempt& a : attempts.attempts)
+    if (a.entry_step && (a.completed || !a.end_time_s))
+      out.push_back({*a.entry_step, {id(a.entered_gap.follower), id(a.entered_gap.leader)}});
+  return out;
+}
+
+// The offer the ego let pass at step i: the offer less what it used later. A gap it merges into
+// after step i (completed, or under way at the end), and an acceptance whose sender bounds that gap, were not let pass but
+// taken, however long the ego took to position itself for them (the wait is measured apart).
+Offer let_pass(const Offer& offered, const std::vector<LaterMerge>& merges, std::size_t i) {
+  Offer o;
+  o.partner_id = offered.partner_id;
+  for (const FeasibleMerge& g : offered.gaps) {
+    const bool taken = std::any_of(merges.begin(), merges.end(), [&](const LaterMerge& m) {
+      return m.entry_step >= i && m.gap == std::pair<int, int>{g.follower_id, g.leader_id};
+    });
+    if (!taken) o.gaps.push_back(g);
+  }
+  for (const LaterMerge& m : merges)
+    if (m.entry_step >= i && o.partner_id >= 0 && (m.gap.first == o.partner_id || m.gap.second == o.partner_id))
+      o.partner_id = -1;
+  return o;
+}
+
 // A merge into a gap begins with the ego changing speed toward the gap's v_e* (dropping back
 // behind a vehicle alongside, catching up with a gap ahead): braking while faster than every
 // feasible v_e*, or accelerating while slower than every one, deliberately (at least
@@ -103,28 +139,43 @@ bool adjusting_speed(const ObservedState& ego, const Offer& o) {
 
 std::string side_text(int id) { return id < 0 ? std::string("open") : std::to_string(id); }
 
-// What the ego let pass over the whole trace: the distinct feasible gaps (by their vehicles) it did
-// not enter, the accepted requests it did not use, and the time a merge was offered and unused.
+// Time offered and unused: in all, and the longest stretch.
+struct Unused {
+  double total_s = 0.0;
+  double longest_s = 0.0;
+};
+
+// One run of offered time: it starts at the first step offered and counts the steps at which the
+// ego is idle (waiting, not changing speed toward the offer) until the offer lapses, the ego merges
+// or responds.
+struct Stretch {
+  double start_s = -1.0;
+  double unused_s = 0.0;
+  void end() { start_s = -1.0; }
+  void step(bool offered, bool idle, double now_s, double dt_s, Unused& sum) {
+    if (!offered) return end();
+    if (start_s < 0.0) {
+      start_s = now_s;
+      unused_s = 0.0;
+    } else if (idle) {
+      unused_s += dt_s;
+      sum.total_s += dt_s;
+    }
+    sum.longest_s = std::max(sum.longest_s, unused_s);
+  }
+};
+
+// What the ego let pass over the whole trace (the distinct feasible gaps, by their vehicles, and
+// the accepted requests it did not use) and the time it waited for an offer it took later.
 struct Tally {
   std::set<std::pair<int, int>> gaps;
   std::set<int> partners;
-  double unused_s = 0.0;
-  double longest_s = 0.0;
+  Unused passed, taken;
 };
 
 void note(Tally& tally, const Offer& o) {
   for (const FeasibleMerge& g : o.gaps) tally.gaps.insert({g.follower_id, g.leader_id});
   if (o.partner_id >= 0) tally.partners.insert(o.partner_id);
-}
-
-// Gaps the ego entered and partners it merged with were used, not let pass.
-void remove_used(const ObservedTrace& t, const MergeAttempts& attempts, Tally& tally) {
-  const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
-  for (const MergeAttempt& a : attempts.attempts) {
-    if (!a.entry_step) continue;
-    tally.gaps.erase({id(a.entered_gap.follower), id(a.entered_gap.leader)});
-    if (a.exchange && a.basis == RowBasis::kDef2) tally.partners.erase(a.exchange->request->to_id);
-  }
 }
 
 std::string violation_text(double unused_s, double from_s, const ObservedStep& st, const Offer& o) {
@@ -140,6 +191,22 @@ std::string violation_text(double unused_s, double from_s, const ObservedStep& s
   if (o.partner_id >= 0) os << (o.gaps.empty() ? "" : "; ") << "vehicle " << o.partner_id << "'s acceptance in force";
   os << ")";
   return os.str();
+}
+
+MonitorOutput finish_progress(MarginAccumulator acc, const Tally& tally, double grace_s) {
+  if (!std::isfinite(acc.min_margin())) return acc.finish();  // never waiting in the side lane
+  std::ostringstream os;
+  os << "let " << tally.gaps.size() << " feasible Def. 1 gap(s) and " << tally.partners.size()
+     << " Def. 2 acceptance(s) pass; a merge was offered and unused for " << tally.passed.total_s
+     << " s in all, at most " << tally.passed.longest_s << " s at a stretch (grace " << grace_s
+     << " s); waited " << tally.taken.longest_s << " s at most for a merge taken later";
+  acc.append_detail(os.str());
+  acc.add_measure("feasible_gaps_let_pass", static_cast<double>(tally.gaps.size()));
+  acc.add_measure("acceptances_let_pass", static_cast<double>(tally.partners.size()));
+  acc.add_measure("offered_unused_s", tally.passed.total_s);
+  acc.add_measure("longest_unused_s", tally.passed.longest_s);
+  acc.add_measure("longest_wait_for_taken_s", tally.taken.longest_s);
+  return acc.finish();
 }
 
 }  // namespace
@@ -199,6 +266,16 @@ WitnessLateral witness_lateral(double y0_m, double rho_s, double c, double tau_s
   return {y0_m * (1.0 - frac), -y0_m * c * l * (1.0 - l) / (rho_s * span)};
 }
 
+// The witness path's peak lateral acceleration: |y0| c^2 max|l (1 - l)(1 - 2 l)| / (rho^2 span),
+// the logistic's third factor at most 1 / (6 sqrt 3). A merge that needs more than the ego's
+// declared a_lat,accel^max breaks the ego's own RSS declaration (every other vehicle's lateral
+// distance counts on it), so the rule never demands it.
+double witness_peak_lat_accel_mps2(double y0_m, double rho_s, double c) {
+  const auto logistic = [c](double u) { return 1.0 / (1.0 + std::exp(-c * (u - 0.5))); };
+  const double span = logistic(1.0) - logistic(0.0);
+  return std::abs(y0_m) * c * c / (6.0 * std::sqrt(3.0) * rho_s * rho_s * span);
+}
+
 bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, double ve,
                          double c) {
   const auto& v = t.steps[step].vehicles;
@@ -207,6 +284,7 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
   const double v0 = std::max(ego.vx_mps, 0.0);
   const double T = t.params.rss.response_time_s;
   const double half_lane = 0.5 * t.road.lane_width_m;
+  if (witness_peak_lat_accel_mps2(ego.y_m, rho, c) > el.lat_accel_max_mps2) return false;
   for (int k = 0; k <= kWitnessSamples; ++k) {
     const double tau = rho * k / kWitnessSamples;
     const double x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
@@ -307,50 +385,39 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
   const double grace = ctx.params.progress_grace_s;
   const std::vector<Activity> doing = activities(t, ctx.params, ctx.attempts);
   const std::vector<Acceptance> accepted = acceptances(t, ctx.params, ctx.exchanges);
+  const std::vector<LaterMerge> merges = completed_merges(t, ctx.attempts);
   Tally tally;
-  double run_start_s = -1.0, unused_s = 0.0, last_eval_s = -1.0;
-  Offer offer;
+  Stretch passing, taking;  // offers let pass; offers waited for and taken later
+  double last_eval_s = -1.0;
+  Offer offered, offer;
   for (std::size_t i = 0; i < t.steps.size(); ++i) {
     const ObservedStep& st = t.steps[i];
     if (doing[i] == Activity::kMerging) {
-      run_start_s = last_eval_s = -1.0;
+      passing.end(), taking.end();
+      last_eval_s = -1.0;
       continue;
     }
     if (last_eval_s < 0.0 || st.time_s - last_eval_s >= kProgressEvalS - kTieS) {
-      offer = offer_at(ctx, accepted, i);
+      offered = offer_at(ctx, accepted, i);
+      offer = let_pass(offered, merges, i);
       last_eval_s = st.time_s;
     }
-    // Nothing offered, or busy with the RSS proper response: waiting is what the ego should do.
-    if (!offer.any() || ego_rear_in_rss_danger(ctx, i)) {
-      run_start_s = -1.0;
+    // Busy with the RSS proper response: waiting is what the ego should do.
+    const bool responding = ego_rear_in_rss_danger(ctx, i);
+    const bool idle = doing[i] == Activity::kWaiting && !adjusting_speed(ego_of(st), offered);
+    const double dt = i > 0 ? st.time_s - t.steps[i - 1].time_s : 0.0;
+    taking.step(offered.any() && !offer.any() && !responding, idle, st.time_s, dt, tally.taken);
+    if (!offer.any() || responding) {
+      passing.end();
       acc.record(i, st.time_s, grace, Party::ego(), grace, 0.0);
       continue;
     }
-    if (run_start_s < 0.0) {
-      run_start_s = st.time_s;
-      unused_s = 0.0;
-    } else if (doing[i] == Activity::kWaiting && !adjusting_speed(ego_of(st), offer)) {
-      const double dt = st.time_s - t.steps[i - 1].time_s;
-      unused_s += dt;
-      tally.unused_s += dt;
-    }
-    tally.longest_s = std::max(tally.longest_s, unused_s);
+    passing.step(true, idle, st.time_s, dt, tally.passed);
     note(tally, offer);
-    if (acc.record(i, st.time_s, grace - unused_s, Party::ego(), grace, unused_s))
-      acc.set_detail(violation_text(unused_s, run_start_s, st, offer));
+    if (acc.record(i, st.time_s, grace - passing.unused_s, Party::ego(), grace, passing.unused_s))
+      acc.set_detail(violation_text(passing.unused_s, passing.start_s, st, offer));
   }
-  remove_used(t, ctx.attempts, tally);
-  if (!std::isfinite(acc.min_margin())) return acc.finish();  // never waiting in the side lane
-  std::ostringstream os;
-  os << "let " << tally.gaps.size() << " feasible Def. 1 gap(s) and " << tally.partners.size()
-     << " Def. 2 acceptance(s) pass; a merge was offered and unused for " << tally.unused_s << " s in all, at most "
-     << tally.longest_s << " s at a stretch (grace " << grace << " s)";
-  acc.append_detail(os.str());
-  acc.add_measure("feasible_gaps_let_pass", static_cast<double>(tally.gaps.size()));
-  acc.add_measure("acceptances_let_pass", static_cast<double>(tally.partners.size()));
-  acc.add_measure("offered_unused_s", tally.unused_s);
-  acc.add_measure("longest_unused_s", tally.longest_s);
-  return acc.finish();
+  return finish_progress(std::move(acc), tally, grace);
 }
 
 }  // namespace mg

@@ -82,6 +82,35 @@ TEST(ProgressMonitor, AnEgoMergingWithinTheGraceIsNotJudged) {
   EXPECT_TRUE(out.result.holds) << out.result.detail;
 }
 
+TEST(ProgressMonitor, WaitingForAGapTheEgoThenMergesIntoIsNotLettingItPass) {
+  // The ego stands at X = 100 while the gap behind vehicle 1 (driving away at 20 m/s from X = 160)
+  // is feasible from t = 0, and merges into it from t = 5 s: it took the gap after a 5 s wait,
+  // longer than the grace. The wait is reported, not judged.
+  Scenario s = base_scenario();
+  s.ego.x_m = 100.0;
+  s.ego.speed_mps = 0.0;
+  s.vehicles = {vehicle(1, 160.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_progress, s, test::with_lateral_move(constant_accel_trace(s, 12.0), 5.0, 1.0));
+  EXPECT_TRUE(out.result.holds) << out.result.detail;
+  double waited_s = 0.0;
+  for (const auto& [name, value] : out.result.measures)
+    if (name == "longest_wait_for_taken_s") waited_s = value;
+  EXPECT_GT(waited_s, 4.5);
+}
+
+TEST(ProgressMonitor, AMergeIntoTheGapThatIsAbortedDidNotTakeIt) {
+  // The same wait, but the merge's body enters the main lane (its centre 2 m out of 3.5) and it
+  // turns back: the gap was let pass, and the wait before the attempt fails the rule at the end
+  // of the grace.
+  Scenario s = base_scenario();
+  s.ego.x_m = 100.0;
+  s.ego.speed_mps = 0.0;
+  s.vehicles = {vehicle(1, 160.0, 20.0)};
+  const MonitorOutput out = test::run(monitor_progress, s, test::with_aborted_move(constant_accel_trace(s, 12.0), 5.0, 1.0, 1.5));
+  ASSERT_FALSE(out.result.holds) << out.result.detail;
+  EXPECT_NEAR(*out.result.first_violation_time_s, 3.02, 1e-9);
+}
+
 TEST(ProgressMonitor, AnEgoTooCloseToTheEndToTurnInIsNotJudged) {
   // At rest 10 m before the side lane's end: a path within the sideslip bound needs more than
   // that to reach the lane line, so no gap is offered however empty the road.

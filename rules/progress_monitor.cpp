@@ -211,11 +211,6 @@ MonitorOutput finish_progress(MarginAccumulator acc, const Tally& tally, double 
 
 }  // namespace
 
-// RCPP §IV, the sideslip rule: a path driven within |beta| <= sideslip_max_rad has curvature at
-// most tan(beta_max) / l_r (kinematic sideslip atan(l_r c)). l_r, the centre of gravity's distance
-// to the rear axle, is not declared; half the ego's length bounds it from above, so the radius
-// taken is the largest any car may need. The shortest X in which a path of that radius moves the
-// centre `lateral_m` to the side from a heading along the road is one arc: sqrt(2 R h - h^2).
 // Definition 1.2 counts on the gap's leader holding its speed. A leader seen braking harder than
 // progress_leader_braking_mps2 does not, nor one closing on the vehicle ahead of it in its lane so
 // fast that, holding its speed over rho, it would come within that vehicle's D_lon (RCPP eq. (1);
@@ -266,16 +261,6 @@ WitnessLateral witness_lateral(double y0_m, double rho_s, double c, double tau_s
   return {y0_m * (1.0 - frac), -y0_m * c * l * (1.0 - l) / (rho_s * span)};
 }
 
-// The witness path's peak lateral acceleration: |y0| c^2 max|l (1 - l)(1 - 2 l)| / (rho^2 span),
-// the logistic's third factor at most 1 / (6 sqrt 3). A merge that needs more than the ego's
-// declared a_lat,accel^max breaks the ego's own RSS declaration (every other vehicle's lateral
-// distance counts on it), so the rule never demands it.
-double witness_peak_lat_accel_mps2(double y0_m, double rho_s, double c) {
-  const auto logistic = [c](double u) { return 1.0 / (1.0 + std::exp(-c * (u - 0.5))); };
-  const double span = logistic(1.0) - logistic(0.0);
-  return std::abs(y0_m) * c * c / (6.0 * std::sqrt(3.0) * rho_s * rho_s * span);
-}
-
 bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, double ve,
                          double c) {
   const auto& v = t.steps[step].vehicles;
@@ -284,7 +269,6 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
   const double v0 = std::max(ego.vx_mps, 0.0);
   const double T = t.params.rss.response_time_s;
   const double half_lane = 0.5 * t.road.lane_width_m;
-  if (witness_peak_lat_accel_mps2(ego.y_m, rho, c) > el.lat_accel_max_mps2) return false;
   for (int k = 0; k <= kWitnessSamples; ++k) {
     const double tau = rho * k / kWitnessSamples;
     const double x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
@@ -320,10 +304,27 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
   return true;
 }
 
-double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double lateral_m) {
-  const double radius_m = 0.5 * t.vehicles[0].size.length_m / std::tan(p.sideslip_max_rad);
-  const double h = std::clamp(lateral_m, 0.0, radius_m);
-  return std::sqrt(2.0 * radius_m * h - h * h);
+// RCPP §IV: the merge path is a sigmoid (a logistic across the lanes) driven within the sideslip
+// rule, |beta| <= sideslip_max_rad, so its curvature is at most c = tan(beta_max) / l_r
+// (kinematic sideslip atan(l_r c)). l_r, the centre of gravity's distance to the rear axle, is not
+// declared; half the ego's length bounds it from above, so c is the smallest any car may need. A
+// logistic of amplitude A (the ego's Y to the target lane's centre) and steepness kappa has peak
+// curvature A kappa^2 / (6 sqrt 3) at small slopes, so the steepest within the bound has kappa =
+// sqrt(6 sqrt 3 c / A). The turn-in is the X it takes from a heading along the road (its
+// kSigmoidStartFraction point) to the lane line: (logit(f_line) - logit(start)) / kappa, f_line =
+// (-W/2 - Y) / A. One arc of the same curvature would reach the line sooner, but it arrives
+// turned across the lane and is no merge the paper's planner draws.
+constexpr double kSigmoidStartFraction = 0.02;
+double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m) {
+  const double line_y = -0.5 * t.road.lane_width_m;
+  const double amplitude_m = std::abs(y_m);
+  if (y_m >= line_y || amplitude_m <= 0.0) return 0.0;
+  const double c = std::tan(p.sideslip_max_rad) / (0.5 * t.vehicles[0].size.length_m);
+  const double kappa = std::sqrt(6.0 * std::sqrt(3.0) * c / amplitude_m);
+  const double f_line = (line_y - y_m) / amplitude_m;
+  if (f_line <= kSigmoidStartFraction) return 0.0;
+  const auto logit = [](double f) { return std::log(f / (1.0 - f)); };
+  return (logit(f_line) - logit(kSigmoidStartFraction)) / kappa;
 }
 
 // Some v_e* of the interval, its midpoint within the turn-in and the room, whose witness merge
@@ -348,7 +349,7 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   const double v0 = std::max(v[0].vx_mps, 0.0);
   // The midpoint (the centre on the lane line) at least the turn-in ahead, and the front still
   // `margin` short of the side lane's end there (side_lane_end).
-  const double turn_in_m = shortest_turn_in_m(t, p, -0.5 * t.road.lane_width_m - v[0].y_m);
+  const double turn_in_m = shortest_turn_in_m(t, p, v[0].y_m);
   const double room_m = t.road.side_lane_end_x_m - margin - (v[0].x_m + 0.5 * t.vehicles[0].size.length_m);
   const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
   std::vector<FeasibleMerge> out;

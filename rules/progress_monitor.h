@@ -21,7 +21,7 @@ namespace mg {
 // progress_gap_margin_m under both position models (the bounded-rate one starts from the ego's
 // observed speed and changes it at its declared a_accel^max / a_brake^min, so a v_e* it cannot
 // reach in time does not count), and at such a v_e* the ego's centre reaches the lane line
-// (rho / 2 on) no sooner than a path within the sideslip bound can turn in (shortest_turn_in_m)
+// (rho / 2 on) no sooner than the paper's sigmoid within the sideslip bound can turn in (shortest_turn_in_m)
 // and with its front still progress_gap_margin_m short of the side lane's end. A gap whose leader
 // brakes harder than progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader
 // holds its speed). The merge must also be clear along its whole duration, not only at rho / 2 and
@@ -36,10 +36,10 @@ struct FeasibleMerge {
   double ve_star_mps = 0.0;  // the slowest feasible v_e*
   double ve_max_mps = 0.0;   // the fastest
 };
-// The shortest X in which a path within the sideslip bound (sideslip_max_rad; kinematic
-// sideslip, the centre of gravity at most half the length ahead of the rear axle) moves the ego's
-// centre `lateral_m` to the side from a heading along the road.
-double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double lateral_m);
+// The shortest X in which the paper's sigmoid path within the sideslip bound (sideslip_max_rad;
+// kinematic sideslip, the centre of gravity at most half the length ahead of the rear axle) takes
+// the ego's centre from Y = y_m, heading along the road, to the lane line (0 at or past it).
+double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m);
 std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step);
 
 MonitorOutput monitor_progress(const MonitorContext& ctx);

@@ -140,13 +140,19 @@ TEST(ProgressMonitor, AGapIsJudgedAlongTheWholeMergeNotOnlyAtItsMidpointAndEnd) 
   EXPECT_FALSE(def1_gaps_feasible(j->trace, j->params, 0).empty());
 }
 
-TEST(ProgressMonitor, TheTurnInIsOneArcWithinTheSideslipBound) {
-  // R = (l / 2) / tan(0.05) = 2.4 / 0.05004 = 47.96 m; 1.75 m to the side: sqrt(2 R h - h^2).
+TEST(ProgressMonitor, TheTurnInIsTheSteepestSigmoidWithinTheSideslipBound) {
+  // c = tan(0.05) / 2.4 (half the 4.8 m length); from the side-lane centre (Y = -3.5, A = 3.5) the
+  // steepest logistic has kappa = sqrt(6 sqrt 3 c / 3.5) = 0.2489/m and reaches the line (its
+  // middle) ln 49 / kappa = 15.64 m after its 2 % point; from Y = -2.5 (A = 2.5, the line at
+  // f = 0.3) the same with logit(0.3); at the line itself, nothing.
   const Scenario s = base_scenario();
   const auto j = test::judge(s, constant_accel_trace(s, 0.1));
-  const double r = 2.4 / std::tan(0.05);
-  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, 1.75), std::sqrt(2.0 * r * 1.75 - 1.75 * 1.75), 1e-9);
-  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, 0.0), 0.0, 1e-12);
+  const double c = std::tan(0.05) / 2.4;
+  const double k35 = std::sqrt(6.0 * std::sqrt(3.0) * c / 3.5), k25 = std::sqrt(6.0 * std::sqrt(3.0) * c / 2.5);
+  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -3.5), std::log(49.0) / k35, 1e-9);
+  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -3.5), 15.64, 0.01);
+  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -2.5), (std::log(0.3 / 0.7) + std::log(49.0)) / k25, 1e-9);
+  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -1.75), 0.0, 1e-12);
 }
 
 }  // namespace

@@ -55,6 +55,7 @@ std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, co
 // (other_gap_vehicle_clear, as for the right of way).
 struct Acceptance {
   int partner_id = 0;
+  bool ego_ahead = true;  // Def. 2.1 (the ego merges ahead of the partner) or 2.2
   double from_s = 0.0, to_s = 0.0;
 };
 std::vector<Acceptance> acceptances(const ObservedTrace& t, const RuleParams& p,
@@ -67,7 +68,8 @@ std::vector<Acceptance> acceptances(const ObservedTrace& t, const RuleParams& p,
     // grants nothing, as for the right of way (merge_attempts.cpp try_def2).
     if (!x.complete() || x.order_margin_m < 0.0) continue;
     if (!other_gap_vehicle_clear(t, p, x)) continue;
-    out.push_back({x.request->to_id, d, x.request_time_s + p.comm_threshold_s + p.merge_duration_s});
+    out.push_back({x.request->to_id, x.request->coop_case == CoopCase::kEgoAhead, d,
+                   x.request_time_s + p.comm_threshold_s + p.merge_duration_s});
   }
   return out;
 }
@@ -79,12 +81,28 @@ struct Offer {
   bool any() const { return !gaps.empty() || partner_id >= 0; }
 };
 
+// An acceptance of Def. 2.1 offers the merge it was asked for only while the vehicle ahead of the
+// partner, the gap's other vehicle, holds its speed as for a Definition 1 gap (leader_holds_speed's
+// first condition): one seen braking harder than progress_leader_braking_mps2 shrinks the gap the
+// request counted on, and an ego that drops the merge then is waiting for a reason. (In 2.2 the
+// other vehicle is behind the partner; Def. 1.1 already lets it accelerate.)
+bool other_vehicle_holds_speed(const ObservedTrace& t, const RuleParams& p, const Acceptance& a, std::size_t i) {
+  if (!a.ego_ahead) return true;
+  const int partner = t.index_of(a.partner_id);
+  for (const GapIndices& g : lane_gaps(t, i)) {
+    if (g.follower != partner || g.leader < 1) continue;
+    return !(t.steps[i].vehicles[static_cast<std::size_t>(g.leader)].accel_mps2 < -p.progress_leader_braking_mps2);
+  }
+  return true;
+}
+
 Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepted, std::size_t i) {
   Offer o;
   o.gaps = def1_gaps_feasible(ctx.trace, ctx.params, i);
   const double now = ctx.trace.steps[i].time_s;
   for (const Acceptance& a : accepted)
-    if (now >= a.from_s - kTieS && now <= a.to_s + kTieS) o.partner_id = a.partner_id;
+    if (now >= a.from_s - kTieS && now <= a.to_s + kTieS && other_vehicle_holds_speed(ctx.trace, ctx.params, a, i))
+      o.partner_id = a.partner_id;
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include "core/atomic_file.h"
 #include "fuzz/corpus_case.h"
 #include "fuzz/rule_coverage.h"
+#include "fuzz/scenario_spec.h"
 #include "report/report_table.h"
 #include "report/svg_plot.h"
 
@@ -142,6 +143,27 @@ std::string findings_over_time(const CampaignResult& r) {
   plot.series = {failing, signatures};
   plot.y_range = svg::Range{0.0, std::max(1.0, std::max(failing.y.back(), signatures.y.back()) * 1.1)};
   return "<h2>Findings over time</h2>\n" + svg::render(plot) + "\n";
+}
+
+// The rule and RSS parameters the campaign's generated scenarios are judged with: the defaults,
+// except those the generator draws per scenario (rho_m, rho_c and T, given as their ranges).
+// Corpus cases are judged with the parameters they carry.
+json judged_with_json() {
+  const auto per_scenario = [](const RealRange& r) { return json{{"per_scenario", {r.lo, r.hi}}}; };
+  json rules = rule_params_to_json(RuleParams{});
+  rules["merge_duration_s"] = per_scenario(range::kMergeDuration);
+  rules["comm_threshold_s"] = per_scenario(range::kCommThreshold);
+  json rss = rss_params_to_json(RssParams{});
+  rss["response_time_s"] = per_scenario(range::kResponseTime);
+  return {{"rules", rules}, {"rss", rss}};
+}
+
+ReportTable judged_with_table() {
+  ReportTable t{{"parameter", "value"}, {}};
+  const json judged = judged_with_json();
+  for (const auto& [group, values] : judged.items())
+    for (const auto& [name, value] : values.items()) t.rows.push_back({group + "." + name, value.dump()});
+  return t;
 }
 
 struct Section {
@@ -283,6 +305,7 @@ json campaign_summary_json(const CampaignOptions& o, const CampaignResult& r) {
           {"margins", margins},
           {"rules_never_exercised", r.scenarios > 0 ? rules_never_exercised(o.planner, r) : std::vector<std::string>{}},
           {"rules_not_applicable", not_applicable},
+          {"judged_with", judged_with_json()},
           {"date", utc_now_iso8601()}};
   if (!r.planner_process.is_null()) summary["planner_process"] = r.planner_process;
   return summary;
@@ -298,6 +321,7 @@ void write_campaign_report(const std::string& dir, const CampaignOptions& o, con
       {"Rule coverage and robustness margins (statistics over the scenarios that exercised the rule; bins in "
        "the rule's unit)",
        margin_table(o, r)},
+      {"Judged with (generated scenarios; corpus cases carry their own parameters)", judged_with_table()},
   };
   std::string md = "# mergeguard fuzzing campaign\n\n" + headline(o, r) + "\n";
   const std::vector<std::string> warnings = coverage_warnings(o, r);

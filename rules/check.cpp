@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -16,6 +17,7 @@
 #include "rules/monitor.h"
 #include "rules/progress_monitor.h"
 #include "rules/road_monitor.h"
+#include "rules/rule_catalog.h"
 #include "rules/rss_distance_monitor.h"
 #include "rules/sigmoid_bounds_monitor.h"
 #include "rules/situation.h"
@@ -70,7 +72,22 @@ std::vector<RuleResult> run_monitors(const MonitorContext& ctx, std::vector<std:
   return results;
 }
 
-CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams>& rules) {
+namespace {
+
+void set_aside_liveness(std::vector<RuleResult>& results) {
+  for (RuleResult& r : results) {
+    if (!rule_spec(r.rule_id).liveness) continue;
+    RuleResult set_aside;
+    set_aside.rule_id = r.rule_id, set_aside.paper_ref = r.paper_ref, set_aside.unit = r.unit;
+    r = std::move(set_aside);
+    r.min_margin = std::numeric_limits<double>::infinity();
+    r.detail = "not judged: a liveness rule, and this judgement applies the safety rules only";
+  }
+}
+
+}  // namespace
+
+CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams>& rules, RuleSet applied) {
   CheckResult r;
   if (trace.planner_annotations.is_object() && trace.planner_annotations.contains("planner") &&
       trace.planner_annotations["planner"].is_string())
@@ -83,6 +100,7 @@ CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams
   r.right_of_way = s.row.timeline;
   for (const MergeAttempt& a : s.attempts.attempts) r.right_of_way_observations.push_back(a.observation);
   r.rules = run_monitors(MonitorContext{trace, s.row, params, s.phases, s.attempts, s.exchanges}, nullptr);
+  if (applied == RuleSet::kSafety) set_aside_liveness(r.rules);
   for (const RuleResult& rule : r.rules) r.holds = r.holds && rule.holds;
   assign_liability(r);
   r.trace_digest = trace_digest(trace);
@@ -90,13 +108,19 @@ CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams
   return r;
 }
 
-CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules) {
-  return check_observed(ObservedTrace(trace), rules);
+CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules, RuleSet applied) {
+  return check_observed(ObservedTrace(trace), rules, applied);
 }
 
 namespace {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+nlohmann::json measures_to_json(const RuleResult& r) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [name, value] : r.measures) out[name] = number_or_null(value);
+  return out;
+}
 
 nlohmann::json rule_to_json(const RuleResult& r) {
   return {{"rule_id", r.rule_id},
@@ -110,10 +134,15 @@ nlohmann::json rule_to_json(const RuleResult& r) {
           {"liable", party_name(r.holds ? Party::nobody() : r.liable_id)},
           {"required_value", number_or_null(r.required_value)},
           {"actual_value", number_or_null(r.actual_value)},
-          {"detail", r.detail}};
+          {"detail", r.detail},
+          {"measures", measures_to_json(r)}};
 }
 
 }  // namespace
+
+nlohmann::json judged_with_json(const CheckResult& r) {
+  return {{"rules", rule_params_to_json(r.rule_params)}, {"rss", rss_params_to_json(r.trace.params.rss)}};
+}
 
 nlohmann::json check_result_to_json(const CheckResult& r) {
   nlohmann::json rules = nlohmann::json::array();
@@ -149,6 +178,7 @@ nlohmann::json check_result_to_json(const CheckResult& r) {
           {"collision", r.collision},
           {"collision_liable", party_name(r.collision ? r.collision_liable_id : Party::nobody())},
           {"rules_violated", violated},
+          {"judged_with", judged_with_json(r)},
           {"rules", rules},
           {"right_of_way", row},
           {"right_of_way_observations", r.right_of_way_observations},

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -29,6 +30,9 @@ struct RuleResult {
   double required_value = 0.0;  // at the worst moment: what the rule required ...
   double actual_value = 0.0;    // ... and what the trace had
   std::string detail;           // one line for the report
+  // Named figures of the judgement beyond its margin (progress: the feasible gaps the ego let pass
+  // and for how long), report.json's "measures".
+  std::vector<std::pair<std::string, double>> measures;
 };
 
 struct CheckResult {
@@ -51,11 +55,20 @@ struct CheckResult {
   std::uint64_t trace_digest = 0;     // trace_digest(trace)
 };
 
+// Which of the catalogue's rules a judgement applies (rules/catalog.json, "kind"). An audit of a
+// recording applies the safety rules only (docs/audit.md): a liveness rule's result then holds,
+// is not applicable, and says why.
+enum class RuleSet { kAll, kSafety };
+
 // Judges a trace with its own rule parameters (trace.params), or with `rules` when given
 // (`--params`). The rvalue overload takes the trace without a copy.
-CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams>& rules = std::nullopt);
-CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules = std::nullopt);
+CheckResult check_observed(ObservedTrace&& trace, const std::optional<RuleParams>& rules = std::nullopt,
+                           RuleSet applied = RuleSet::kAll);
+CheckResult check_observed(const ObservedTrace& trace, const std::optional<RuleParams>& rules = std::nullopt,
+                           RuleSet applied = RuleSet::kAll);
 
 nlohmann::json check_result_to_json(const CheckResult& r);
+// The parameters a result was judged with: {"rules": RuleParams, "rss": RssParams}.
+nlohmann::json judged_with_json(const CheckResult& r);
 
 }  // namespace mg

@@ -613,6 +613,14 @@ void AttemptJudge::run() {
 
 }  // namespace
 
+bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x) {
+  const std::vector<CoopExchange> no_exchanges;
+  const std::vector<GapIndices> no_gaps;
+  const Inputs in{t, p, no_exchanges, no_gaps};
+  const bool other_is_follower = x.request->coop_case == CoopCase::kEgoBehind;
+  return other_vehicle_margin_m(in, x, requested_gap_other(in, x), other_is_follower) >= 0.0;
+}
+
 MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p, const MergePhases& phases,
                                      const std::vector<CoopExchange>& exchanges,
                                      const std::vector<GapIndices>& around) {

@@ -139,6 +139,12 @@ struct MergeAttempts {
   std::vector<MergeAttempt> attempts;
 };
 
+// Whether the gap's vehicle other than the partner of an accepted request leaves room for the
+// Definition 2 merge, judged at the request as for the right of way (the vehicle ahead of the
+// partner for 2.1 by ineq. (1.2) over rho_c + rho_m, the one behind it for 2.2 by ineq. (1.1) over
+// 2 rho_c + rho_m; an open side is clear).
+bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x);
+
 // `exchanges` as coop_exchanges gives them; `around` the gap around the ego at every step.
 MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p, const MergePhases& phases,
                                      const std::vector<CoopExchange>& exchanges,

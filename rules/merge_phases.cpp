@@ -14,10 +14,14 @@ std::optional<MergePhaseEvent> MergePhases::first(MergePhaseKind k, double from_
   return std::nullopt;
 }
 
+double ego_left_edge_y_m(const ObservedTrace& t, const ObservedState& ego) {
+  return MergePhaseDetector::left_edge_y_m(t.vehicles[0].size, ego.y_m, ego.yaw_rad);
+}
+
 MergePhases observe_merge_phases(const ObservedTrace& t, const RuleParams& p) {
   MergePhases out;
   if (t.steps.empty()) return out;
-  MergePhaseDetector detector(t.road, p, t.steps[0].vehicles[0].y_m);
+  MergePhaseDetector detector(t.road, p, t.vehicles[0].size, t.steps[0].vehicles[0].y_m);
   for (std::size_t k = 0; k < t.steps.size() && !detector.completed(); ++k) {
     const ObservedState& ego = t.steps[k].vehicles[0];
     const MergePhaseStep phase = detector.step(ego.y_m, ego.vy_mps, ego.yaw_rad);

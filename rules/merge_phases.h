@@ -24,6 +24,10 @@ struct MergePhases {
   std::optional<MergePhaseEvent> first(MergePhaseKind k, double from_time_s = 0.0) const;
 };
 
+// The Y of the ego's leftmost corner (toward the main lane) from its declared size and observed
+// yaw (MergePhaseDetector::left_edge_y_m).
+double ego_left_edge_y_m(const ObservedTrace& t, const ObservedState& ego);
+
 MergePhases observe_merge_phases(const ObservedTrace& t, const RuleParams& p);
 
 }  // namespace mg

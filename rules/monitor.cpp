@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 namespace mg {
 
@@ -12,6 +14,19 @@ MarginAccumulator::MarginAccumulator(std::string_view rule_id, std::size_t steps
   out_.result.unit = spec.unit;
   out_.result.min_margin = std::numeric_limits<double>::infinity();
   out_.margin.assign(steps, kNotApplicable);
+}
+
+bool MarginAccumulator::record_non_finite(double time_s, Party party) {
+  RuleResult& r = out_.result;
+  r.min_margin = std::numeric_limits<double>::lowest();  // the worst margin there is, and finite
+  r.min_margin_time_s = time_s;
+  r.required_value = r.actual_value = std::numeric_limits<double>::quiet_NaN();
+  if (r.first_violation_time_s) return false;
+  r.first_violation_time_s = time_s;
+  r.liable_id = party;
+  r.holds = false;
+  r.detail = "a number this rule needs is missing or not finite at t = " + std::to_string(time_s) + " s";
+  return false;  // the detail says why; the caller's detail would quote the non-finite margin
 }
 
 MonitorOutput MarginAccumulator::finish() {

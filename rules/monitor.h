@@ -49,8 +49,11 @@ class MarginAccumulator {
   MarginAccumulator(std::string_view rule_id, std::size_t steps);
   // Records a margin at a step. Returns true when this is the rule's first violation (the
   // caller may then set the detail line).
+  // A NaN margin (a number the rule needs is missing or not finite) fails the rule: it is
+  // never read as "not applicable" (monitors leave such steps out instead of recording them).
   bool record(std::size_t step, double time_s, double margin, Party party, double required,
               double actual) {
+    if (std::isnan(margin)) return record_non_finite(time_s, party);
     if (step < out_.margin.size()) {
       double& m = out_.margin[step];
       m = std::isnan(m) ? margin : std::min(m, margin);
@@ -71,6 +74,12 @@ class MarginAccumulator {
     return false;
   }
   void set_detail(std::string detail) { out_.result.detail = std::move(detail); }
+  // Adds a sentence to the detail line ("; " between).
+  void append_detail(const std::string& more) {
+    std::string& d = out_.result.detail;
+    d += (d.empty() ? "" : "; ") + more;
+  }
+  void add_measure(std::string name, double value) { out_.result.measures.emplace_back(std::move(name), value); }
   bool violated() const { return out_.result.first_violation_time_s.has_value(); }
   // The smallest margin recorded so far (+inf before the first). A record of a margin at least
   // this large, and not negative, changes nothing in the RuleResult: monitors skip computing
@@ -80,6 +89,8 @@ class MarginAccumulator {
   MonitorOutput finish();
 
  private:
+  bool record_non_finite(double time_s, Party party);
+
   MonitorOutput out_;
 };
 

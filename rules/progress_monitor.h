@@ -1,31 +1,46 @@
-// Progress (RCPP Def. 1.3: halt only while space is insufficient): the ego must not stay at rest
-// in the side lane for longer than progress_grace_s while a Definition 1 gap stays feasible by
-// progress_gap_margin_m. (Braking toward a stop cannot be told from braking toward a slow merge
-// by observation, so the grace period counts from the standstill.)
+// Progress (RCPP Def. 1.3: the ego halts only while space is insufficient; RCPP exists to merge):
+// an ego whose centre is in the side lane must not let the right of way pass, at any speed. While
+// some gap of the rightmost main lane offers it Definition 1's right of way from its observed
+// state (def1_gaps_feasible), or a timely Definition 2 acceptance addressed to it is in force,
+// continuously for longer than progress_grace_s, and the ego neither merges (an attempt whose body
+// reaches into the main lane) nor is in its RSS proper response, the rule fails, ego liable.
+// Waiting for a better gap within the grace is allowed; so is any wait while nothing is offered.
 #pragma once
 
 #include <cstddef>
-#include <optional>
+#include <vector>
 
 #include "rules/monitor.h"
 
 namespace mg {
 
-// Whether some gap of the rightmost main lane admits a Definition 1 merge from the ego's observed
-// state at `step`, judged with the rules' own code (rules/definition1_gap.h): for rho_m, some v_e*
-// in [progress_min_merge_speed_mps, speed limit] satisfies ineq. (1.1) and (1.2) by margin_m, at the
-// slowest such v_e* the ego's front reaches the merge midpoint (rho_m / 2 on) margin_m before the
-// side lane's end, and at least progress_min_room_m of side lane is left ahead of its front.
-// A gap whose leader brakes harder than leader_braking_mps2 does not count (Def. 1.2 assumes the
-// leader holds its speed). Path shape and comfort are the planner's business, not the rule's.
+// A gap of the rightmost main lane that admits a Definition 1 merge from the ego's observed state
+// at `step`, judged with the rules' own code (rules/definition1_gap.h): for rho = rho_m (or 1.5 or
+// 2 rho_m: a merge that observably takes longer is read over its own duration), some v_e* in
+// [progress_min_merge_speed_mps, speed limit] satisfies ineq. (1.1) and (1.2) by
+// progress_gap_margin_m under both position models (the bounded-rate one starts from the ego's
+// observed speed and changes it at its declared a_accel^max / a_brake^min, so a v_e* it cannot
+// reach in time does not count), and at such a v_e* the ego's centre reaches the lane line
+// (rho / 2 on) no sooner than the paper's sigmoid within the sideslip bound can turn in (shortest_turn_in_m)
+// and with its front still progress_gap_margin_m short of the side lane's end. A gap whose leader
+// brakes harder than progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader
+// holds its speed). The merge must also be clear along its whole duration, not only at rho / 2 and
+// rho: on a sigmoid in time through the lane line at rho / 2, wherever the ego is laterally nearer
+// a vehicle (of the target lane or the lane beyond) than D_lat plus progress_lateral_margin_m, it
+// is D_lon plus progress_gap_margin_m behind it if ahead, and ahead of it until rho / 2 if it is a
+// target-lane vehicle behind. Path shape and comfort beyond that are the planner's business.
 struct FeasibleMerge {
   int follower_id = -1;  // -1: open gap
   int leader_id = -1;
   double merge_duration_s = 0.0;
-  double ve_star_mps = 0.0;
+  double ve_star_mps = 0.0;  // the slowest feasible v_e*
+  double ve_max_mps = 0.0;   // the fastest
 };
-std::optional<FeasibleMerge> def1_gap_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step,
-                                               double margin_m, double leader_braking_mps2);
+// The shortest X in which the paper's sigmoid path within the sideslip bound (sideslip_max_rad;
+// kinematic sideslip, the centre of gravity at most half the length ahead of the rear axle) takes
+// the ego's centre from Y = y_m, heading along the road, to the lane line (0 at or past it).
+double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m);
+std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step);
 
 MonitorOutput monitor_progress(const MonitorContext& ctx);
 

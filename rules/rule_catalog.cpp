@@ -15,9 +15,12 @@ const std::vector<RuleSpec>& rule_catalog() {
   static const std::vector<RuleSpec> specs = [] {
     std::vector<RuleSpec> out;
     for (const auto& r : rule_catalog_json().at("rules")) {
+      const std::string kind = r.at("kind").get<std::string>();
+      if (kind != "safety" && kind != "liveness") throw std::logic_error("rules/catalog.json: unknown kind " + kind);
       out.push_back({r.at("id").get<std::string>(), r.at("paper_ref").get<std::string>(),
                      r.at("unit").get<std::string>(), r.at("statement").get<std::string>(),
-                     r.at("liability").get<std::string>(), r.at("parameters").get<std::vector<std::string>>()});
+                     r.at("liability").get<std::string>(), r.at("parameters").get<std::vector<std::string>>(),
+                     kind == "liveness"});
     }
     return out;
   }();

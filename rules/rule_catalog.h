@@ -1,5 +1,5 @@
 // The rule catalogue (rules/catalog.json, embedded at build time): per rule its id, paper
-// reference, unit, temporal-logic statement, liability logic and the rule parameters it reads
+// reference, unit, temporal-logic statement, liability logic, kind and the rule parameters it reads
 // (their defaults and ranges are RuleParams' and RssParams', core/params.h). The catalogue is
 // where rule ids are declared: a monitor names the rule it judges (MarginAccumulator), which must
 // be in it, and rules/check.cpp orders the monitors' results as it does.
@@ -21,6 +21,7 @@ struct RuleSpec {
   std::string statement;
   std::string liability;
   std::vector<std::string> parameters;  // keys of params.rules and params.rss
+  bool liveness = false;  // "kind": "liveness" (what a planner must do) or "safety" (what no run may do)
 };
 
 const nlohmann::json& rule_catalog_json();

@@ -7,13 +7,37 @@
 
 namespace mg {
 
+namespace {
+
+// The ego's merge approaches: its first observed start, each start after it came back within
+// merge_abort_offset_m of its side-lane centre (an abort, which §6 may mandate, and a new
+// attempt), and at most one start after an abort by reversal alone, the ego still off its lane
+// centre (a planner that aborts and re-merges before it is back at the centre). Further starts
+// after reversals continue the same approach: a weave toward the main lane earns no new allowance
+// by turning back again and again.
+int approaches(const MonitorContext& ctx) {
+  const ObservedTrace& t = ctx.trace;
+  const double centre_y = t.road.side_lane_y_m() + ctx.params.merge_abort_offset_m;
+  int from_centre = 0, after_reversal = 0;
+  std::size_t since = 0;  // the step after which a return to the lane centre counts
+  for (const MergePhaseEvent& e : ctx.phases.events) {
+    if (e.kind != MergePhaseKind::kStart) continue;
+    bool returned = from_centre == 0;
+    for (std::size_t i = since; i < e.step && !returned; ++i) returned = ego_of(t.steps[i]).y_m < centre_y;
+    (returned ? from_centre : after_reversal) += 1;
+    since = e.step;
+  }
+  return from_centre + std::min(after_reversal, 1);
+}
+
+}  // namespace
+
 MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
   const auto& steps = ctx.trace.steps;
   MarginAccumulator acc("smoothness_oscillation", steps.size());
-  // Each observed merge attempt (an abort back to the side lane and a new start is a new one, spec
-  // §6) may change the lateral speed's sign a few times; more is oscillation. At least one attempt
-  // is allowed for, so that a weave in a lane without any merge is judged too.
-  const int merges = std::max(ctx.phases.count(MergePhaseKind::kStart), 1);
+  // Each merge approach may change the lateral speed's sign a few times; more is oscillation. At
+  // least one approach is allowed for, so that a weave in a lane without any merge is judged too.
+  const int merges = std::max(approaches(ctx), 1);
   const int allowed = ctx.params.max_lat_speed_sign_changes_per_merge * merges;
   const double h = ctx.params.lat_speed_hysteresis_mps;
   // Lateral motion before the first start is the ego keeping (or centring itself in) its lane:
@@ -27,7 +51,7 @@ MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
     if (now != 0) sign = now;
     if (acc.record(i, steps[i].time_s, allowed - changes, Party::ego(), allowed, changes)) {
       std::ostringstream os;
-      os << "ego lateral velocity changed sign " << changes << " times (" << merges << " merge(s), at most "
+      os << "ego lateral velocity changed sign " << changes << " times (" << merges << " merge approach(es), at most "
          << allowed << " allowed) by t = " << steps[i].time_s << " s: the path oscillates";
       acc.set_detail(os.str());
     }

@@ -29,7 +29,7 @@ double follower_brake_min(const CheckResult& r) {
 
 ComplianceFrontier frontier_of(const MergeAudit& m, const AuditProfile& p) {
   const JudgeAt judge = [&m](double rho_s, double scale) {
-    const CheckResult r = check_observed(with_profile_variation(m.merge.trace, rho_s, scale));
+    const CheckResult r = check_observed(with_profile_variation(m.merge.trace, rho_s, scale), std::nullopt, RuleSet::kSafety);
     VariedJudgement j;
     j.holds = r.holds;
     if (const RuleResult* d = deciding_rule(r)) j.first_rule = d->rule_id, j.first_rule_ref = d->paper_ref;
@@ -47,7 +47,7 @@ void judge(const RecordingView& view, MergeAudit& m) {
   const MergeTrace whole = m.merge;
   std::size_t cut = 0;
   for (int round = 0;; ++round) {
-    m.result = check_observed(m.merge.trace);
+    m.result = check_observed(m.merge.trace, std::nullopt, RuleSet::kSafety);
     m.result.planner = "recorded driver (CommonRoad obstacle " + std::to_string(m.merge.change.vehicle_id) + ")";
     const std::optional<DecisionWindow> w = decision_window(m.merge.trace, m.merge.change.time_step * dt);
     std::vector<std::string> missing;
@@ -167,7 +167,7 @@ SensitivitySweep sweep_sensitivity(const ObservedTrace& trace, const Sensitivity
   int holding = 0;
   for (const double t : ranges.response_times_s) {
     for (const double scale : ranges.brake_scales) {
-      const CheckResult r = check_observed(with_profile_variation(trace, t, scale));
+      const CheckResult r = check_observed(with_profile_variation(trace, t, scale), std::nullopt, RuleSet::kSafety);
       s.points.push_back({t, scale, r.holds, r.liable_id});
       holding += r.holds ? 1 : 0;
     }

@@ -5,9 +5,11 @@
 
 namespace mg {
 
-MergePhaseDetector::MergePhaseDetector(const Road& road, const RuleParams& p, double initial_y_m)
+MergePhaseDetector::MergePhaseDetector(const Road& road, const RuleParams& p, const VehicleSize& ego_size,
+                                       double initial_y_m)
     : side_y_m_(road.side_lane_y_m()),
       line_y_m_(-0.5 * road.lane_width_m),
+      ego_size_(ego_size),
       start_offset_m_(p.merge_start_offset_m),
       abort_offset_m_(p.merge_abort_offset_m),
       abort_reversal_m_(p.merge_abort_reversal_m),
@@ -17,16 +19,22 @@ MergePhaseDetector::MergePhaseDetector(const Road& road, const RuleParams& p, do
       from_side_(initial_y_m < line_y_m_),
       furthest_y_m_(side_y_m_) {}
 
+double MergePhaseDetector::left_edge_y_m(const VehicleSize& size, double y_m, double yaw_rad) {
+  return y_m + 0.5 * size.width_m * std::abs(std::cos(yaw_rad)) + 0.5 * size.length_m * std::abs(std::sin(yaw_rad));
+}
+
 MergePhaseStep MergePhaseDetector::step(double y_m, double vy_mps, double yaw_rad) {
   MergePhaseStep out;
   if (!from_side_ || completed_) return out;
   if (started_) furthest_y_m_ = std::max(furthest_y_m_, y_m);
+  const bool over_line = left_edge_y_m(ego_size_, y_m, yaw_rad) > line_y_m_;
   // A start is motion toward the main lane, not an offset alone: an ego placed off its lane
-  // centre, or drifting back to it, has not started merging.
-  if (!started_ && y_m > side_y_m_ + start_offset_m_ && vy_mps > hysteresis_mps_) {
+  // centre, or drifting back to it, has not started merging. A body over the lane line is in the
+  // main lane whatever its lateral speed.
+  if (!started_ && ((y_m > side_y_m_ + start_offset_m_ && vy_mps > hysteresis_mps_) || over_line)) {
     started_ = out.start = true;
     furthest_y_m_ = y_m;
-  } else if (started_ && !midpoint_ &&
+  } else if (started_ && !midpoint_ && !over_line &&
              (y_m < side_y_m_ + abort_offset_m_ || (y_m < furthest_y_m_ - abort_reversal_m_ && vy_mps < -hysteresis_mps_))) {
     // Back in the side lane, or turned back toward it by more than the reversal hysteresis
     // (which keeps path-tracking ripple from counting): the next departure toward the main lane

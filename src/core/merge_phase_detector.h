@@ -5,15 +5,18 @@
 // merge is the same thing wherever it is counted.
 //
 //   side lane centre  ──●──── start: Y > y_side + merge_start_offset_m moving toward the main lane
-//                        ╲           (v_Y > lat_speed_hysteresis_mps)
-//                         ╲   abort: before the line, back below y_side + merge_abort_offset_m,
-//                          ╲         or moving back, merge_abort_reversal_m short of its furthest Y
+//                        ╲           (v_Y > lat_speed_hysteresis_mps), or any part of its body
+//                         ╲          over the lane line, however slowly it got there
+//                          ╲  abort: before the line, with its body back off it, back below
+//                           ╲        y_side + merge_abort_offset_m, or moving back,
+//                            ╲       merge_abort_reversal_m short of its furthest Y
 //   lane line  ─ ─ ─ ─ ─ ─●─ midpoint: the centre reaches the line (Y >= -W/2)
 //                          ╲
 //   main lane centre  ──────●── complete: |Y| < merge_complete_offset_m, |yaw| < merge_complete_yaw_rad
 //
-// Only an ego that starts in the side lane merges. After the midpoint an attempt is no longer
-// aborted (the ego is in the main lane; the RSS rules judge what follows); after
+// An ego whose body reaches over the lane line is always in an attempt: a slow drift into the main
+// lane is a merge. Only an ego that starts in the side lane merges. After the midpoint an attempt
+// is no longer aborted (the ego is in the main lane; the RSS rules judge what follows); after
 // completion nothing more is read.
 #pragma once
 
@@ -33,16 +36,21 @@ struct MergePhaseStep {
 
 class MergePhaseDetector {
  public:
-  // initial_y_m decides whether the ego starts in the side lane, the only place it merges from.
-  MergePhaseDetector(const Road& road, const RuleParams& p, double initial_y_m);
+  // initial_y_m decides whether the ego starts in the side lane, the only place it merges from;
+  // ego_size (declared) places its body's corners against the lane line.
+  MergePhaseDetector(const Road& road, const RuleParams& p, const VehicleSize& ego_size, double initial_y_m);
 
   // The next observed state of the ego.
   MergePhaseStep step(double y_m, double vy_mps, double yaw_rad);
 
   bool completed() const { return completed_; }
 
+  // The Y of the ego's leftmost corner (toward the main lane) from its declared size and yaw.
+  static double left_edge_y_m(const VehicleSize& size, double y_m, double yaw_rad);
+
  private:
   double side_y_m_, line_y_m_;
+  VehicleSize ego_size_;
   double start_offset_m_, abort_offset_m_, abort_reversal_m_, complete_offset_m_, complete_yaw_rad_, hysteresis_mps_;
   bool from_side_;
   bool started_ = false, midpoint_ = false, completed_ = false;

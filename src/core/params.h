@@ -69,9 +69,7 @@ struct RuleParams {
   double progress_gap_margin_m = 5.0;
   double progress_leader_braking_mps2 = 0.5;
   double progress_min_merge_speed_mps = 5.0;
-  // How close to the side lane's end a merge from rest is a matter of path design, not of the
-  // progress rule.
-  double progress_min_room_m = 40.0;
+  double progress_lateral_margin_m = 0.75;
   bool operator==(const RuleParams&) const = default;
 };
 

@@ -29,17 +29,30 @@ bool can_still_halt(const WorldSnapshot& w) {
   return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
 }
 
+std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSnapshot& w,
+                                         const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& o,
+                                         double t_s);
+
 // Before P_c behind a braking leader: the fastest speed up to target_mps at which the ego reaches
-// P_c at D_lon behind the leader as predicted.
+// P_c at D_lon behind the leader as predicted. A Def. 2 partner is predicted on the profile it
+// accepted (gap_vehicle_at): its braking toward v_o* is the yield it promised, not a threat to
+// extrapolate (so extrapolated, a 2.2 partner slowing to v_o* capped the ego's speed to 0, and
+// the merge it had just accepted was aborted on the next cycle).
 double pc_bound_speed_mps(const CommittedMerge& m, const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
                           const MainLaneVehicle& leader, double target_mps) {
   const PlannerSetup& s = *w.setup;
   const double pc_m = m.sigmoid.pc_m;
   const Track ahead = predicted_leader(w, lane, leader);
+  const bool partner = m.decision.mode == DecisionMode::kDef2Merge && leader.id == m.decision.coop_partner_id;
+  const auto leader_at = [&](double t_s) {
+    return partner ? gap_vehicle_at(m, w, lane, leader, t_s) : std::pair<double, double>{ahead.x_at(t_s), ahead.v_at(t_s)};
+  };
   const auto holds = [&](double v) {
     const SpeedRamp ramp{ego_speed_mps(w), v, s.ego.limits.accel_max_mps2, s.ego.limits.brake_min_mps2};
     const auto t = time_to_reach_s(w, ramp, pc_m);
-    return t && leader_bound_margin_m(s, leader, ahead.x_at(*t), ahead.v_at(*t), ramp.speed_at_mps(*t), pc_m) >= 0.0;
+    if (!t) return false;
+    const auto [x_m, v_mps] = leader_at(*t);
+    return leader_bound_margin_m(s, leader, x_m, v_mps, ramp.speed_at_mps(*t), pc_m) >= 0.0;
   };
   if (holds(target_mps)) return target_mps;
   // The bound's margin falls as the speed rises (later at P_c: the leader farther on, D_lon

@@ -25,8 +25,8 @@ struct CommittedMerge {
   // abort is not committed from its first cycle: it would then follow, at RSS distance, the
   // gap's follower it is about to pass, and stop behind it for good; a campaign finding).
   double start_y_m = 0.0;
-  // Begun from a hold after an abort (side_lane_path): the path then stays at or above
-  // start_y_m (merge_path_points).
+  // Begun from a hold after an abort (side_lane_path), or from an offset toward the main lane the
+  // ego started at: the path then stays at or above start_y_m (merge_path_points).
   bool from_hold = false;
   bool committed(double ego_y_m) const {
     const double move_m = sigmoid.offset_m + sigmoid.width_m - start_y_m;
@@ -47,8 +47,9 @@ bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
 // sigmoid passes it: steering back to the sigmoid's start first would reverse the lateral motion,
 // which an observer reads as an abort and a new attempt, and undo what the hold was for
 // (merge_path.cpp's occupancy check already puts the ego no farther from the main lane than it
-// is). A merge begun on the way back to the centre follows the sigmoid: that return also takes
-// the ego away from the main lane's vehicles.
+// is); so for an ego that started off its centre toward the main lane. A merge begun on the way
+// back to the centre after an abort follows the sigmoid: that return also takes the ego away
+// from the main lane's vehicles.
 std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m);
 
 // This cycle's command along the merge.

@@ -83,11 +83,16 @@ std::optional<PcBounds> def1_pc_bounds(const Def1Search& f, const LaneGap& gap, 
   return PcBounds{v_hi, pc_min, pc_max};
 }
 
-// The v_e* candidates: pc_candidates values evenly over [lo, v_hi], and the speed grid shared
-// with the progress rule within it. The grid is over v_e*, not P_c: an ego that cannot reach
-// v_e* by rho/2 has the same P_c for a range of v_e*, which differ after P_c.
+// The v_e* candidates: pc_candidates values evenly over [lo, v_hi], the speed grid shared with
+// the progress rule within it, and the crawl speed (merge_path.h) when it lies in [lo, v_hi]: the
+// grid's steps (speed limit / 48) may hold none between half the crawl speed and the crawl
+// speed, where an ego at rest near the side lane's end can still turn in. The grid is over v_e*,
+// not P_c: an ego that cannot reach v_e* by rho/2 has the same P_c for a range of v_e*, which
+// differ after P_c.
 std::vector<double> def1_candidate_speeds(const Def1Search& f, double lo_mps, double v_hi_mps) {
   std::vector<double> speeds = even_grid(lo_mps, v_hi_mps, rcpp_params(f.s).pc_candidates);
+  if (const double crawl_mps = crawl_speed_mps(f.s); crawl_mps >= lo_mps && crawl_mps <= v_hi_mps)
+    speeds.push_back(crawl_mps);
   const double grid_step_mps = f.ctx.speed_limit_mps / kDef1SpeedGridSteps;
   for (int i = static_cast<int>(std::ceil(lo_mps / grid_step_mps)); i * grid_step_mps <= v_hi_mps; ++i)
     speeds.push_back(i * grid_step_mps);

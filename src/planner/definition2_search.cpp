@@ -83,7 +83,7 @@ std::optional<CoopBounds> coop_bounds(const CoopCandidate& x) {
 // merged onto that vehicle: rcpp-coop sigmoid_pc_bounds; docs/planner.md), the other lanes.
 GapTracks coop_tracks(const CoopCandidate& x, const SpeedRamp& responder_ramp) {
   const MainLaneVehicle& o = x.responder();
-  const Track responder{o.x_m, responder_ramp, o.length_m, o.width_m, o.limits};
+  const Track responder{o.x_m, responder_ramp, o.length_m, o.width_m, o.limits, 0.0, {}};
   GapTracks tracks;
   tracks.beside = beside_tracks(x.w);
   if (x.k == CoopCase::kEgoAhead) {

@@ -26,6 +26,14 @@ double path_curvature_cap_per_m(const PlannerSetup& s) {
   return std::min(std::tan(dyn.steer_max_rad) / (2.0 * dyn.wheelbase_m()), std::tan(kPathSideslipMaxRad) / dyn.cg_to_rear_m);
 }
 
+double crawl_speed_mps(const PlannerSetup& s) { return kCrawlSpeedFraction * s.params.rules.sideslip_min_speed_mps; }
+
+double path_curvature_cap_per_m(const PlannerSetup& s, double top_speed_mps) {
+  if (top_speed_mps > crawl_speed_mps(s)) return path_curvature_cap_per_m(s);
+  const EgoDynamics& dyn = s.ego.dynamics;
+  return std::tan(dyn.steer_max_rad) / (2.0 * dyn.wheelbase_m());
+}
+
 double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
   return d.cg_to_rear_m - d.mass_kg * d.cg_to_front_m * speed_mps * speed_mps / (d.cornering_rear_npr * d.wheelbase_m());
 }
@@ -33,6 +41,11 @@ double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
 double kappa_cap_per_m(const PlannerSetup& s) {
   return std::min(rcpp_params(s).kappa_max_per_m,
                   std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s) / s.road.lane_width_m));
+}
+
+double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps) {
+  return std::min(rcpp_params(s).kappa_max_per_m,
+                  std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s, top_speed_mps) / s.road.lane_width_m));
 }
 
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
@@ -45,7 +58,7 @@ KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m,
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
                               half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
-  const double kappa_cap = kappa_cap_per_m(s);
+  const double kappa_cap = kappa_cap_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2()));
   if (lo > kappa_cap) return std::nullopt;
   // The search needs the margin's sign only: a flat sigmoid is comfortable by the bound alone (a
   // lower bound of the margin, then >= 0), without the speed profile.
@@ -60,9 +73,28 @@ KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m,
   return std::make_pair(lo, *hi);
 }
 
+double Track::x_at(double t_s) const {
+  const double own_m = x0_m + motion.distance_at_m(t_s);
+  return behind.active ? std::min(own_m, behind.x_at(t_s)) : own_m;
+}
+
+double Track::v_at(double t_s) const {
+  const double own_mps = motion.speed_at_mps(t_s);
+  if (!behind.active || x0_m + motion.distance_at_m(t_s) < behind.x_at(t_s)) return own_mps;
+  return std::min(own_mps, behind.motion.speed_at_mps(t_s));
+}
+
 Track follower_track(const MainLaneVehicle& f, double rho_s, double observed_accel_mps2) {
   const double a = std::max(f.limits.accel_max_mps2, observed_accel_mps2);
-  return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.width_m, f.limits};
+  return Track{f.x_m, SpeedRamp{f.speed_mps, f.speed_mps + a * 0.5 * rho_s, a, a}, f.length_m, f.width_m, f.limits, 0.0, {}};
+}
+
+Track behind_follower_track(const MainLaneVehicle& v, const MainLaneVehicle& follower, double rho_s,
+                            double observed_accel_mps2, double follower_accel_mps2) {
+  Track t = follower_track(v, rho_s, observed_accel_mps2);
+  const Track ahead = follower_track(follower, rho_s, follower_accel_mps2);
+  t.behind = BehindBound{true, ahead.x0_m, ahead.motion, 0.5 * (v.length_m + follower.length_m) + kLeaderStandoffM};
+  return t;
 }
 
 const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v) {
@@ -108,7 +140,7 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const M
   } else if (seen_mps2 > 0.0) {
     motion = SpeedRamp{l.speed_mps, 0.0, 1.0, seen_mps2};
   }
-  return Track{l.x_m, motion, l.length_m, l.width_m, l.limits};
+  return Track{l.x_m, motion, l.length_m, l.width_m, l.limits, 0.0, {}};
 }
 
 BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2) {
@@ -129,8 +161,11 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
   tracks.followers.reserve(lane.size());
   tracks.leaders.reserve(lane.size());
   for (const MainLaneVehicle& v : lane) {
-    if (gap.follower && !lane_order_before(*gap.follower, v))
+    if (gap.follower && v.id == gap.follower->id)
       tracks.followers.push_back(follower_track(v, follower_window_s, observed_accel_mps2(v.id)));
+    else if (gap.follower && !lane_order_before(*gap.follower, v))
+      tracks.followers.push_back(behind_follower_track(v, *gap.follower, follower_window_s, observed_accel_mps2(v.id),
+                                                       observed_accel_mps2(gap.follower->id)));
     if (gap.leader && !lane_order_before(v, *gap.leader)) {
       const MainLaneVehicle* ahead = next_in_lane(lane, v);
       tracks.leaders.push_back(

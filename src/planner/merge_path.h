@@ -38,22 +38,45 @@ double side_exit_limit_x_m(const PlannerSetup& s, double speed_mps = 0.0);
 // peak curvature is W kappa^2/(6 sqrt 3), that caps kappa.
 inline constexpr double kPathSideslipMaxRad = 0.025;
 double path_curvature_cap_per_m(const PlannerSetup& s);
+// A crawl: a merge driven no faster than kCrawlSpeedFraction of the speed from which the judge
+// bounds the sideslip (rules.sideslip_min_speed_mps, public like the speed limit; docs/rules.md
+// `sideslip`). Below it the sideslip bound constrains no path, so a crawl's curvature is capped by
+// half the ego's steering ability alone: an ego halted short of the side lane's end, with too
+// little room for a sideslip-bounded sigmoid, can still merge at walking pace (docs/planner.md).
+inline constexpr double kCrawlSpeedFraction = 0.7;
+double crawl_speed_mps(const PlannerSetup& s);
+// The curvature cap of a path driven at most at top_speed_mps: path_curvature_cap_per_m, or at
+// crawl speed the steering-only cap.
+double path_curvature_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 // The linear single-track model's steady-state sideslip per unit path curvature at speed v,
 // beta / c = l_r - m l_f v^2 / (C_r L) (rear axle: F_yr = m v^2 c l_f / L = C_r alpha_r and
 // beta = l_r c - alpha_r; Rajamani, Vehicle Dynamics and Control, 2nd ed., §3.3). At a crawl it is
 // the kinematic l_r; at speed, with soft rear tyres, many times larger and of the other sign.
 double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps);
 double kappa_cap_per_m(const PlannerSetup& s);
+double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
 // start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak
 // lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
-// bound, and lies in the configured [kappa_min, kappa_max].
+// bound, and lies in the configured [kappa_min, kappa_max] and under the curvature cap of the
+// ramp's top speed (kappa_cap_per_m).
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m);
 
+// A vehicle a track cannot pass, being behind it in the same lane: its own motion from x0_m, and
+// the bumper-to-centre distance the track keeps behind it (half both lengths and kLeaderStandoffM).
+struct BehindBound {
+  bool active = false;
+  double x0_m = 0.0;
+  SpeedRamp motion;
+  double standoff_m = 0.0;
+  double x_at(double t_s) const { return x0_m + motion.distance_at_m(t_s) - standoff_m; }
+};
+
 // A main-lane vehicle's predicted motion during a merge candidate: from x0_m, one speed ramp, on
-// the lane centred at lane_y_m (0: the merge's target lane).
+// the lane centred at lane_y_m (0: the merge's target lane); with `behind` active, never past the
+// vehicle ahead of it, and no faster than it once it has caught up.
 struct Track {
   double x0_m = 0.0;
   SpeedRamp motion;
@@ -61,14 +84,20 @@ struct Track {
   double width_m = 0.0;
   Limits limits;
   double lane_y_m = 0.0;
-  double x_at(double t_s) const { return x0_m + motion.distance_at_m(t_s); }  // t after the decision
-  double v_at(double t_s) const { return motion.speed_at_mps(t_s); }
+  BehindBound behind;
+  double x_at(double t_s) const;  // t after the decision
+  double v_at(double t_s) const;
 };
 
 // The follower accelerates at its a_accel^max until rho/2 and then holds its speed (Def. 1.1);
 // one seen accelerating harder than that, at the rate seen (a follower racing beyond its declared
 // limit took the gap an ego planned to overtake it into; a campaign finding).
 Track follower_track(const MainLaneVehicle& f, double rho_s, double observed_accel_mps2 = 0.0);
+// A vehicle behind the gap's follower, predicted like a follower but bounded by the follower's own
+// track: it cannot drive through the follower (a vehicle approaching a stopped follower, predicted
+// to accelerate past it, barred every merge ahead of the stopped one; a campaign finding).
+Track behind_follower_track(const MainLaneVehicle& v, const MainLaneVehicle& follower, double rho_s,
+                            double observed_accel_mps2, double follower_accel_mps2);
 // The leader holds its speed (Def. 1.2) unless it is seen braking harder than
 // kLeaderBrakingMps2: then it is predicted to keep braking at that rate until it stops, since a
 // compliant leader may brake for a slower vehicle ahead of it (docs/planner.md); a rate beyond its
@@ -99,7 +128,8 @@ double chained_accel_mps2(const std::vector<MainLaneVehicle>& lane, const MainLa
                           const std::function<double(int)>& observed_accel_mps2);
 
 // The vehicles a merge into a gap is checked against: the gap's follower and every target-lane
-// vehicle behind it (followers, follower_track over follower_window_s), its leader and every
+// vehicle behind it (followers, follower_track over follower_window_s, those behind the follower
+// bounded by it: behind_follower_track), its leader and every
 // vehicle ahead of it (leaders, leader_track with each one's observed acceleration). Vehicles of
 // one lane cannot pass each other, but their separate predictions can: a fast leader predicted
 // at constant speed "passes" a slower vehicle ahead of it, and the ego, merging behind the leader,

@@ -21,11 +21,20 @@ constexpr double kDeadlineTieS = 1e-9;
 // at once, every cycle, against a leader that keeps braking would weave (docs/planner.md).
 constexpr double kMergeRetryAfterAbortS = 1.0;
 constexpr double kLongerMergeEveryS = 0.5;
+// A committed merge whose lateral move has not begun is replaced by one whose sigmoid starts at
+// least kSoonerStartM nearer (the search runs every kSoonerMergeEveryS while the ego waits).
+constexpr double kSoonerMergeEveryS = 0.5;
+constexpr double kSoonerStartM = 10.0;
 
+// The merge keeps the ego's offset toward the main lane (from_hold) after a hold, and for an ego
+// that starts off its lane centre toward the main lane and is not on its way back from an abort:
+// steering back to the centre first took it away from the gap it had just chosen, for seconds,
+// while the gap stayed open (progress; a campaign finding). On the way back from an abort the
+// sigmoid is followed (committed_merge.h).
 CommittedMerge commit(const InSideLane& side, const WorldSnapshot& w, const Sigmoid& sig, double speed_mps,
                       RcppDecision d) {
-  return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m),
-                        side.lateral.hold_y_m.has_value()};
+  const bool keep_offset = side.lateral.hold_y_m.has_value() || !side.lateral.return_path;
+  return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m), keep_offset};
 }
 
 RcppCycle keep_main_lane(const WorldSnapshot& w) {
@@ -146,7 +155,8 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
     } else {
       out = std::move(step.out);
     }
-  } else if (const auto* merging = std::get_if<Merging>(&phase_)) {
+  } else if (auto* merging = std::get_if<Merging>(&phase_)) {
+    take_sooner_merge(*merging, w);
     out = follow_merge(merging->merge, w);
   } else {
     out = keep_main_lane(w);
@@ -154,6 +164,28 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
   if (!note.empty()) out.decision.reason = note + out.decision.reason;
   apply_proper_response(w, out);
   return to_command(std::move(out));
+}
+
+// RCPP decides a Def. 1 merge at T_dec from the world then (RCPP §II-B); one decided with a long
+// duration has its sigmoid start far ahead (P_c at rho/2), and the ego drove on in its side lane
+// for seconds while a shorter merge had become feasible (progress; a campaign finding). Until the
+// ego reaches the sigmoid's start, a new decision whose sigmoid starts kSoonerStartM nearer
+// replaces it: nothing of the first merge has been driven yet.
+void RcppPlanner::take_sooner_merge(Merging& merging, const WorldSnapshot& w) const {
+  const CommittedMerge& m = merging.merge;
+  const double start_x_m = m.sigmoid.x_at_fraction_m(kSigmoidEndFraction);
+  if (m.decision.mode != DecisionMode::kDef1Merge || w.ego.x_m >= start_x_m - kSoonerStartM) return;
+  if (w.time_s + 1e-9 < merging.next_sooner_search_s) return;
+  merging.next_sooner_search_s = w.time_s + kSoonerMergeEveryS;
+  for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
+    auto plan = plan_definition1(w, durations, nullptr);
+    if (!plan || plan->sigmoid.x_at_fraction_m(kSigmoidEndFraction) > start_x_m - kSoonerStartM) continue;
+    plan->decision.reason = "a sooner merge replaces the one decided at t = " + fixed_text(m.decision.time_s, 2) +
+                            " s: " + plan->decision.reason;
+    merging.merge = CommittedMerge{plan->sigmoid, plan->ve_star_mps, plan->decision,
+                                   std::max(w.ego.y_m, plan->sigmoid.offset_m), m.from_hold};
+    return;
+  }
 }
 
 std::string RcppPlanner::advance_phase(const WorldSnapshot& w) {

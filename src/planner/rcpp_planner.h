@@ -36,8 +36,11 @@ struct InSideLane {
   double no_merge_before_s = -1.0;    // after an abort: earliest time of a new merge
   double next_longer_merge_s = -1.0;  // next time the longer merge durations are searched
 };
+// Merging; until the lateral move begins, a Definition 1 merge that begins it sooner may replace
+// the committed one (searched for every kSoonerMergeEveryS, from next_sooner_search_s).
 struct Merging {
   CommittedMerge merge;
+  double next_sooner_search_s = -1.0;
 };
 struct InMainLane {};
 using RcppPhase = std::variant<InSideLane, Merging, InMainLane>;
@@ -57,6 +60,7 @@ class RcppPlanner : public Planner {
   };
   std::string advance_phase(const WorldSnapshot& w);  // completion, abort, a start in the main lane
   SideLaneStep decide_in_side_lane(InSideLane& side, const WorldSnapshot& w);
+  void take_sooner_merge(Merging& merging, const WorldSnapshot& w) const;
   std::optional<CommittedMerge> read_reply(InSideLane& side, const WorldSnapshot& w, std::string& note);
   void send_request(InSideLane& side, const WorldSnapshot& w, RcppCycle& out, std::string& note);
 

@@ -238,6 +238,16 @@ void violations_table(std::ostringstream& h, const CheckResult& r) {
   h << (any ? "</table>\n" : "<p>None: every rule holds.</p>\n");
 }
 
+// The rule and RSS parameters the verdict was reached with (a verdict means nothing without them).
+void judged_with_table(std::ostringstream& h, const CheckResult& r) {
+  h << "<h2>Judged with</h2>\n<table><tr><th>parameter</th><th>value</th></tr>\n";
+  const nlohmann::json judged = judged_with_json(r);
+  for (const auto& [group, values] : judged.items())
+    for (const auto& [name, value] : values.items())
+      h << "<tr><td>" << escape(group + "." + name) << "</td><td>" << escape(value.dump()) << "</td></tr>\n";
+  h << "</table>\n";
+}
+
 }  // namespace
 
 std::string report_html(const CheckResult& r) {
@@ -282,7 +292,9 @@ std::string report_html(const CheckResult& r) {
       << "</td><td>" << format_number(rule.min_margin_time_s, 2) << "</td><td>" << escape(spec.statement)
       << "</td><td>" << escape(spec.liability) << "</td></tr>\n";
   }
-  h << "</table>\n<h2>Timeline (V2V channel)</h2>\n<ul>\n";
+  h << "</table>\n";
+  judged_with_table(h, r);
+  h << "<h2>Timeline (V2V channel)</h2>\n<ul>\n";
   for (std::size_t k = 0; k < std::min(r.trace.channel.size(), kMaxListedEntries); ++k) {
     const ChannelEvent& e = r.trace.channel[k];
     h << "<li>t = " << format_number(e.time_s, 2) << " s &mdash; " << escape(to_string(e.message.type)) << " "

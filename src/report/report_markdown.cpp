@@ -80,6 +80,10 @@ std::string report_markdown(const CheckResult& r) {
     if (c.disagrees) md << " **(disagrees: observed, the ego did not hold the right of way then)**";
     md << "\n";
   }
+  md << "\n## Judged with\n\n";
+  const nlohmann::json judged = judged_with_json(r);
+  for (const auto& [group, values] : judged.items())
+    for (const auto& [name, value] : values.items()) md << "- `" << group << "." << name << "` = " << value.dump() << "\n";
   md << "\nTrace: " << r.trace.steps.size() << " steps, digest " << std::hex << r.trace_digest << std::dec << ".\n";
   return md.str();
 }

@@ -24,7 +24,7 @@ constexpr double kInLaneOffsetM = 0.5;        // drivers treat the ego as merged
 // simulator's merge events are the merges the rules judge.
 class EgoEventDetector {
  public:
-  EgoEventDetector(const Scenario& s, const VehicleState& ego0) : merge_(s.road, s.params.rules, ego0.y_m) {}
+  EgoEventDetector(const Scenario& s, const VehicleState& ego0) : merge_(s.road, s.params.rules, s.ego.size, ego0.y_m) {}
 
   void update(double t, const VehicleState& ego, std::vector<TraceEvent>& events) {
     const double speed = std::hypot(ego.vx_mps, ego.vy_mps);

@@ -98,8 +98,8 @@ TEST(ParamsCommand, ADocsTableCellThatDisagreesFails) {
                      "`planner.pf_search_distance_m`: unit: km in the file, m in the table");
   expect_check_fails(md("| `sim.horizon_s` | s | 30 | (0, 3600]", "| `sim.horizon_s` | s | 30 | [0, 3600]"),
                      "`sim.horizon_s`: valid range: [0, 3600]");
-  expect_check_fails(md("| `rules.progress_min_room_m`", "| `rules.progress_room_m`"),
-                     "docs table: no row `rules.progress_min_room_m`");
+  expect_check_fails(md("| `rules.progress_lateral_margin_m`", "| `rules.progress_margin_m`"),
+                     "docs table: no row `rules.progress_lateral_margin_m`");
 }
 
 TEST(ParamsCommand, PrintsTheGeneratedTableAndSchema) {

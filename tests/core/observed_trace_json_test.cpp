@@ -130,8 +130,8 @@ ObservedTrace any_trace() {
   t.params.rss.response_time_s = any_in(0.0, 5.0);
   t.params.rss.fluctuation_margin_m = any_in(0.0, 5.0);
   t.params.rules.merge_duration_s = any_in(0.5, 20.0);
-  t.params.rules.accel_tolerance_mps2 = any_in(0.0, 2.0);
-  t.params.rules.max_lat_speed_sign_changes_per_merge = *rc::gen::inRange(0, 101);
+  t.params.rules.accel_tolerance_mps2 = any_in(0.0, 0.2);
+  t.params.rules.max_lat_speed_sign_changes_per_merge = *rc::gen::inRange(0, 5);
   double time = any_in(0.0, 100.0);
   const int steps = *rc::gen::inRange(1, 16);
   for (int i = 0; i < steps; ++i) {

@@ -38,9 +38,9 @@ TEST(ParamDocs, NumbersAsTheDocumentationWritesThem) {
 
 TEST(ParamDocs, RangesWithOpenEndsParameterEndsAndConstraints) {
   EXPECT_EQ(doc_range(info("rss", "response_time_s")), "[0, 5]");
-  EXPECT_EQ(doc_range(info("rules", "sideslip_max_rad")), "(0, 1]");
+  EXPECT_EQ(doc_range(info("rules", "sideslip_max_rad")), "(0, 0.2]");
   EXPECT_EQ(doc_range(info("rules", "merge_abort_offset_m")), "[0, `merge_start_offset_m`)");
-  EXPECT_EQ(doc_range(info("rules", "max_lat_speed_sign_changes_per_merge")), "[0, 100], integer");
+  EXPECT_EQ(doc_range(info("rules", "max_lat_speed_sign_changes_per_merge")), "[0, 4], integer");
   EXPECT_EQ(doc_range(info("sim", "planner_cycle_s")), "[`step_s`, 5]");
   EXPECT_EQ(doc_range(info("sim", "horizon_s")), "(0, 3600]; horizon_s / step_s ≤ 1e6");
 }
@@ -50,7 +50,7 @@ TEST(ParamDocs, SchemaOfAParameterBoundIsItsWidestRange) {
   const ordered_json schema = params_schema(core_param_sections());
   const ordered_json& abort = schema["properties"]["rules"]["properties"]["merge_abort_offset_m"];
   EXPECT_EQ(abort["minimum"], 0.0);
-  EXPECT_EQ(abort["exclusiveMaximum"], 2.0);  // below merge_start_offset_m, itself at most 2
+  EXPECT_EQ(abort["exclusiveMaximum"], 0.5);  // below merge_start_offset_m, itself at most 0.5
   EXPECT_NE(abort["description"].get<std::string>().find("below merge_start_offset_m"), std::string::npos);
   const ordered_json& cycle = schema["properties"]["sim"]["properties"]["planner_cycle_s"];
   EXPECT_EQ(cycle["minimum"], 0.001);

@@ -61,7 +61,7 @@ TEST(ParamTables, WriteThenReadGivesEqualParams) {
   Params p;
   p.rss.response_time_s = 0.8;
   p.rules.merge_abort_offset_m = 0.07;
-  p.rules.max_lat_speed_sign_changes_per_merge = 5;
+  p.rules.max_lat_speed_sign_changes_per_merge = 3;
   p.sim.planner_cycle_s = 0.2;
   p.planner.halt_margin_m = 7.5;
   EXPECT_EQ(params_from_json(params_to_json(p), "p.json", ""), p);
@@ -81,11 +81,11 @@ TEST(ParamTables, BadValuesAreOneLineErrorsNamingTheField) {
           {"open lower end", [](json& j) { j["rules"] = {{"sideslip_max_rad", 0}}; },
            "/params/rules/sideslip_max_rad: must be > 0, got 0"},
           {"open lower end, above", [](json& j) { j["rules"] = {{"sideslip_max_rad", 2}}; },
-           "/params/rules/sideslip_max_rad: must be in (0, 1], got 2"},
+           "/params/rules/sideslip_max_rad: must be in (0, 0.2], got 2"},
           {"integer", [](json& j) { j["rules"] = {{"max_lat_speed_sign_changes_per_merge", 2.5}}; },
            "/params/rules/max_lat_speed_sign_changes_per_merge: must be an integer"},
           {"integer range", [](json& j) { j["rules"] = {{"max_lat_speed_sign_changes_per_merge", 101}}; },
-           "/params/rules/max_lat_speed_sign_changes_per_merge: must be in [0, 100], got 101"},
+           "/params/rules/max_lat_speed_sign_changes_per_merge: must be in [0, 4], got 101"},
           {"abort at the start offset", [](json& j) { j["rules"] = {{"merge_abort_offset_m", 0.1}}; },
            "/params/rules/merge_abort_offset_m: must be in [0, merge_start_offset_m = 0.1), got 0.1"},
           {"abort above a given start", [](json& j) {

@@ -1,5 +1,7 @@
 #include "planner/merge_path.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -263,6 +265,51 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswerWithMixedWidths, ()) {
       RC_ASSERT(occupancy_clear(s, 0.0, ego_y_m, path, ego, when, tracks, 1.5, &memo) == plain);
     }
   }
+}
+
+// Defaults: sideslip judged from 2 m/s, so a crawl is up to 1.4 m/s; l_r 1.6 m, L 2.8 m, steering
+// 0.5 rad. Above a crawl the path's curvature is capped at tan(0.025)/1.6 = 0.0156/m (kappa 0.215/m
+// on W = 3.5 m), at a crawl at tan(0.5)/5.6 = 0.0975/m (kappa 0.538/m).
+TEST(KappaCap, ACrawlIsCappedByHalfTheSteeringAbilityAlone) {
+  const Scenario s = road_only();
+  const double crawl_mps = crawl_speed_mps(s);
+  EXPECT_DOUBLE_EQ(crawl_mps, 1.4);
+  EXPECT_DOUBLE_EQ(path_curvature_cap_per_m(s, crawl_mps + 0.01), path_curvature_cap_per_m(s));
+  EXPECT_NEAR(path_curvature_cap_per_m(s, crawl_mps), std::tan(0.5) / 5.6, 1e-12);
+  EXPECT_NEAR(kappa_cap_per_m(s, crawl_mps), 0.538, 1e-3);
+  EXPECT_NEAR(kappa_cap_per_m(s, 10.0), 0.215, 1e-3);
+}
+
+// An ego at rest 22 m before the side lane's end (its front 19.6 m): a sigmoid with P_c 8 m ahead,
+// complete 17 m ahead, needs kappa >= ln(49)/8 = 0.486/m. Driven at a crawl it is admissible; at
+// 5 m/s the sideslip cap (0.215/m) rules it out.
+TEST(KappaCap, AnEgoAtRestNearTheSideLaneEndCanMergeAtACrawl) {
+  Scenario s = road_only();
+  s.road.side_lane_end_x_m = 22.0;
+  const KappaRange crawl = kappa_range_for(s, 8.0, 0.0, 17.0, SpeedRamp{0.0, 1.3, 2.0, 4.0}, 0.0);
+  ASSERT_TRUE(crawl.has_value());
+  EXPECT_NEAR(crawl->first, std::log(49.0) / 8.0, 1e-9);
+  EXPECT_LE(crawl->first, crawl->second);
+  EXPECT_FALSE(kappa_range_for(s, 8.0, 0.0, 17.0, SpeedRamp{0.0, 5.0, 2.0, 4.0}, 0.0).has_value());
+}
+
+// Vehicle 2, the gap's follower, stands at X = 90 m; vehicle 1 approaches it at 10 m/s from X = 0.
+// As a follower alone vehicle 1 would be predicted past vehicle 2 (accelerating at 2 m/s2 for
+// rho/2 = 3 s: 39 m at 3 s, 79 m at 6 s, 115 m at 9 s); behind it, it stays 6.8 m (half both
+// lengths and the 2 m standoff) behind vehicle 2's own follower prediction, and at its speed there.
+TEST(FollowerTrack, AVehicleBehindTheFollowerIsPredictedBehindIt) {
+  const std::vector<MainLaneVehicle> lane = {lane_vehicle(1, 0.0, 10.0), lane_vehicle(2, 90.0, 0.0)};
+  const LaneGap gap{lane[1], std::nullopt};
+  const GapTracks tracks = gap_tracks(lane, gap, 6.0, no_accel);
+  ASSERT_EQ(tracks.followers.size(), 2u);
+  const Track& follower = tracks.followers[0].x0_m == 90.0 ? tracks.followers[0] : tracks.followers[1];
+  const Track& behind = tracks.followers[0].x0_m == 90.0 ? tracks.followers[1] : tracks.followers[0];
+  EXPECT_NEAR(follower.x_at(3.0), 99.0, 1e-9);
+  EXPECT_NEAR(behind.x_at(3.0), 39.0, 1e-9);  // not yet at the follower: its own prediction
+  EXPECT_NEAR(behind.v_at(3.0), 16.0, 1e-9);
+  EXPECT_NEAR(behind.x_at(9.0), follower.x_at(9.0) - 6.8, 1e-9);
+  EXPECT_NEAR(behind.v_at(9.0), follower.v_at(9.0), 1e-9);
+  EXPECT_LT(behind.x_at(20.0), follower.x_at(20.0));
 }
 
 }  // namespace

@@ -15,6 +15,8 @@
 #include "core/merge_phase_detector.h"
 #include "core/scenario.h"
 #include "planner/definition1.h"
+#include "planner/definition1_search.h"
+#include "planner/merge_path.h"
 #include "planner/planner.h"
 #include "planner/rcpp_planner.h"
 
@@ -55,7 +57,7 @@ Rollout roll_out(const Scenario& s, const std::string& planner_name, double hori
   std::vector<double> responder_target(w.others.size(), -1.0);
   std::vector<std::pair<double, V2vMessage>> in_flight;
   Rollout r;
-  MergePhaseDetector merge(s.road, s.params.rules, w.ego.y_m);
+  MergePhaseDetector merge(s.road, s.params.rules, s.ego.size, w.ego.y_m);
   double v = s.ego.speed_mps;
   for (int k = 0; k * dt < horizon_s; ++k) {
     w.time_s = k * dt;
@@ -470,6 +472,75 @@ RC_GTEST_PROP(PlannerProperties, SamePlannerSameSnapshotSameOutput, ()) {
     for (std::size_t i = 0; i < a.path.size(); ++i)
       RC_ASSERT(a.path[i].x_m == b.path[i].x_m && a.path[i].y_m == b.path[i].y_m);
   }
+}
+
+// An ego that starts 0.6 m off its lane centre toward the main lane, with the lane empty, merges at
+// once: its path never takes it back toward the side lane's centre first (progress; a campaign
+// finding: the return took seconds while the gap stayed open).
+TEST(PlannerHarness, AnEgoStartingOffItsLaneCentreTowardTheMainLaneKeepsThatOffsetWhenItMerges) {
+  Scenario s;
+  s.ego.x_m = 0.0;
+  s.ego.y_m = -s.road.lane_width_m + 0.6;
+  s.ego.speed_mps = 15.0;
+  const Rollout r = roll_out(s, "rcpp", 2.0);
+  ASSERT_EQ(decision_of(r.outputs.front()).mode, DecisionMode::kDef1Merge) << r.outputs.front().reason;
+  for (std::size_t k = 0; k < r.outputs.size(); ++k) {
+    for (const PathPoint& p : r.outputs[k].path) {
+      if (p.x_m >= r.egos[k].x_m) {
+        EXPECT_GE(p.y_m, s.ego.y_m - 1e-9) << "cycle " << k << " at X = " << p.x_m;
+      }
+    }
+  }
+}
+
+
+// A 15 m truck 35 m behind the ego, 3 m/s faster: the only gap is behind it. At t = 0 only a long
+// merge (3 rho_m) is feasible, its sigmoid starting tens of metres ahead; once the truck has come
+// alongside, a merge at rho_m starts sooner and replaces it before the ego has begun the first.
+TEST(PlannerHarness, ACommittedMergeNotYetBegunGivesWayToOneThatBeginsSooner) {
+  Scenario s;
+  s.road.lane_width_m = 3.3;
+  s.road.speed_limit_mps = 28.1;
+  s.road.side_lane_end_x_m = 350.0;
+  s.params.rss.response_time_s = 0.75;
+  s.params.planner.merge_duration_s = 7.3;
+  s.params.rules.merge_duration_s = 7.3;
+  s.ego.x_m = 54.0;
+  s.ego.y_m = -s.road.lane_width_m;
+  s.ego.speed_mps = 9.1;
+  MainVehicle truck;
+  truck.id = 1;
+  truck.x_m = 19.5;
+  truck.speed_mps = 12.0;
+  truck.size.length_m = 15.2;
+  truck.size.width_m = 2.5;
+  s.vehicles = {truck};
+  const Rollout r = roll_out(s, "rcpp", 30.0);
+  ASSERT_EQ(decision_of(r.outputs.front()).mode, DecisionMode::kDef1Merge) << r.outputs.front().reason;
+  const bool replaced = std::any_of(r.outputs.begin(), r.outputs.end(), [](const PlanOutput& o) {
+    return o.reason.find("a sooner merge replaces") != std::string::npos;
+  });
+  EXPECT_TRUE(replaced);
+  EXPECT_TRUE(r.merged);
+  EXPECT_FALSE(r.left_road);
+}
+
+// An ego at rest 24 m before the side lane's end of an empty road (speed limit 35.5 m/s: the
+// shared speed grid's steps are 0.74 m/s, so it holds 0.74 and 1.48 m/s, too slow to reach a P_c
+// the sigmoid can turn in to, and faster than a crawl). The longer merges find a merge at the
+// crawl speed, 1.4 m/s.
+TEST(PlannerHarness, AnEgoAtRestNearTheSideLaneEndMergesAtTheCrawlSpeed) {
+  Scenario s;
+  s.road.speed_limit_mps = 35.5;
+  s.road.side_lane_end_x_m = 24.0;
+  s.ego.x_m = 0.0;
+  s.ego.y_m = -s.road.lane_width_m;
+  s.ego.speed_mps = 0.0;
+  const WorldSnapshot w = initial_snapshot(s);
+  EXPECT_FALSE(plan_definition1(w, MergeDurations::kRhoM, nullptr).has_value());
+  const auto plan = plan_definition1(w, MergeDurations::kLonger, nullptr);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_NEAR(plan->ve_star_mps, crawl_speed_mps(s), 1e-12) << plan->decision.reason;
 }
 
 }  // namespace

@@ -1,13 +1,17 @@
 #include "rules/rule_catalog.h"
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/params.h"
+#include "rules/check.h"
 #include "rules/monitor.h"
 #include "trace_builder.h"
 
@@ -68,6 +72,30 @@ TEST(RuleCatalog, EveryRuleNamesItsPaperReferenceStatementAndLiability) {
                                "smoothness_oscillation", "sideslip", "progress"}) {
     EXPECT_EQ(ids.count(required), 1u) << required;
   }
+}
+
+TEST(RuleCatalog, ProgressIsTheOneLivenessRule) {
+  std::vector<std::string> liveness;
+  for (const RuleSpec& r : rule_catalog())
+    if (r.liveness) liveness.push_back(r.id);
+  EXPECT_EQ(liveness, std::vector<std::string>{"progress"});
+}
+
+// A judgement of the safety rules only (an audit's) sets the liveness rule aside: an ego that
+// never merges on an empty road fails `progress` in a full check and holds in a safety check,
+// where `progress` is not applicable and says why.
+TEST(RuleCatalog, ASafetyJudgementSetsTheLivenessRuleAside) {
+  const Scenario s = test::base_scenario();
+  const ObservedTrace t = test::observed(s, test::constant_accel_trace(s, 5.0));
+  const CheckResult all = check_observed(t);
+  const CheckResult safety = check_observed(t, std::nullopt, RuleSet::kSafety);
+  EXPECT_FALSE(all.rules[rule_index("progress")].holds);
+  EXPECT_FALSE(all.holds);
+  const RuleResult& p = safety.rules[rule_index("progress")];
+  EXPECT_TRUE(p.holds);
+  EXPECT_TRUE(std::isinf(p.min_margin));
+  EXPECT_NE(p.detail.find("not judged"), std::string::npos);
+  EXPECT_TRUE(safety.holds);
 }
 
 TEST(RuleCatalog, UnknownRuleIdIsALogicError) { EXPECT_THROW(rule_spec("no_such_rule"), std::logic_error); }

@@ -16,6 +16,7 @@
 #include "planner/planner.h"
 #include "rules/check.h"
 #include "check/checked_run.h"
+#include "tests/sim/test_planners.h"
 
 namespace mg {
 namespace {
@@ -91,13 +92,8 @@ class ScriptedPlanner : public Planner {
 };
 
 Scenario road_scenario(double horizon_s) {
-  Scenario s;
+  Scenario s = test::empty_scenario();
   s.name = "adversarial";
-  s.road.side_lane_start_x_m = -100.0;
-  s.road.side_lane_end_x_m = 1000.0;
-  s.ego.x_m = 0.0;
-  s.ego.y_m = -3.5;
-  s.ego.speed_mps = 20.0;
   s.ego.v2v = V2v{true, 0.05, 0.0};
   s.params.sim.horizon_s = horizon_s;
   return s;

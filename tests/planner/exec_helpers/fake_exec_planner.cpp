@@ -53,20 +53,26 @@ void append_number(std::string& out, double v) {
   out.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
 }
 
+// A command along a straight path at the ego's Y from x_from_m to x_to_m; `tail` closes the
+// object after the target speed (the acceleration limit and any annotation).
+std::string straight_command(double x_from_m, double x_to_m, double y_m, double speed_mps, const std::string& tail) {
+  std::string out = R"({"type":"command","path":[[)";
+  append_number(out, x_from_m);
+  out += ',';
+  append_number(out, y_m);
+  out += "],[";
+  append_number(out, x_to_m);
+  out += ',';
+  append_number(out, y_m);
+  out += R"(]],"target_speed_mps":)";
+  append_number(out, speed_mps);
+  return out + tail;
+}
+
 std::string command_for(const std::string& observe) {
   const double x = ego_number(observe, "x_m"), y = ego_number(observe, "y_m");
-  std::string out = R"({"type":"command","path":[[)";
-  append_number(out, x);
-  out += ',';
-  append_number(out, y);
-  out += "],[";
-  append_number(out, x + 100.0);
-  out += ',';
-  append_number(out, y);
-  out += R"(]],"target_speed_mps":)";
-  append_number(out, ego_number(observe, "speed_mps"));
-  out += R"(,"accel_limit_mps2":2.0,"annotation":{"mode":"echo","pid":)" + std::to_string(getpid()) + "}}";
-  return out;
+  return straight_command(x, x + 100.0, y, ego_number(observe, "speed_mps"),
+                          R"(,"accel_limit_mps2":2.0,"annotation":{"mode":"echo","pid":)" + std::to_string(getpid()) + "}}");
 }
 
 // What `reset` told the planner (the liveness adversaries need the side lane's end).
@@ -77,18 +83,7 @@ double g_lane_width_m = 3.5;
 // Keeps the ego's lane at `speed_mps`, changing speed at most 3 m/s^2.
 std::string lane_keeping_at(const std::string& observe, double speed_mps) {
   const double x = ego_number(observe, "x_m"), y = ego_number(observe, "y_m");
-  std::string out = R"({"type":"command","path":[[)";
-  append_number(out, x - 10.0);
-  out += ',';
-  append_number(out, y);
-  out += "],[";
-  append_number(out, x + 100.0);
-  out += ',';
-  append_number(out, y);
-  out += R"(]],"target_speed_mps":)";
-  append_number(out, speed_mps);
-  out += R"(,"accel_limit_mps2":3.0})";
-  return out;
+  return straight_command(x - 10.0, x + 100.0, y, speed_mps, R"(,"accel_limit_mps2":3.0})");
 }
 
 // Follows y(x) from 10 m behind to 200 m ahead of the ego at `speed_mps`.

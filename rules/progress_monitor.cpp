@@ -115,7 +115,7 @@ struct LaterMerge {
   std::size_t entry_step = 0;
   std::pair<int, int> gap;
 };
-std::vector<LaterMerge> completed_merges(const ObservedTrace& t, const MergeAttempts& attempts) {
+std::vector<LaterMerge> merges_taken(const ObservedTrace& t, const MergeAttempts& attempts) {
   const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
   std::vector<LaterMerge> out;
   for (const MergeAttempt& a : attempts.attempts)
@@ -404,7 +404,7 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
   const double grace = ctx.params.progress_grace_s;
   const std::vector<Activity> doing = activities(t, ctx.params, ctx.attempts);
   const std::vector<Acceptance> accepted = acceptances(t, ctx.params, ctx.exchanges);
-  const std::vector<LaterMerge> merges = completed_merges(t, ctx.attempts);
+  const std::vector<LaterMerge> merges = merges_taken(t, ctx.attempts);
   Tally tally;
   Stretch passing, taking;  // offers let pass; offers waited for and taken later
   double last_eval_s = -1.0;

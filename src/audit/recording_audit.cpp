@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "audit/censoring.h"
 #include "rules/monitor.h"
@@ -15,6 +16,9 @@ std::string fmt(double v) {
   std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
 }
+
+// A recording is judged by the safety rules only (docs/audit.md, "From a merge to a trace").
+CheckResult check_recorded(ObservedTrace trace) { return check_observed(std::move(trace), std::nullopt, RuleSet::kSafety); }
 
 bool joins_at_ramp(const LaneChange& c) { return c.from_lane == kRampLane || c.to_lane == kRampLane; }
 
@@ -29,7 +33,7 @@ double follower_brake_min(const CheckResult& r) {
 
 ComplianceFrontier frontier_of(const MergeAudit& m, const AuditProfile& p) {
   const JudgeAt judge = [&m](double rho_s, double scale) {
-    const CheckResult r = check_observed(with_profile_variation(m.merge.trace, rho_s, scale), std::nullopt, RuleSet::kSafety);
+    const CheckResult r = check_recorded(with_profile_variation(m.merge.trace, rho_s, scale));
     VariedJudgement j;
     j.holds = r.holds;
     if (const RuleResult* d = deciding_rule(r)) j.first_rule = d->rule_id, j.first_rule_ref = d->paper_ref;
@@ -47,7 +51,7 @@ void judge(const RecordingView& view, MergeAudit& m) {
   const MergeTrace whole = m.merge;
   std::size_t cut = 0;
   for (int round = 0;; ++round) {
-    m.result = check_observed(m.merge.trace, std::nullopt, RuleSet::kSafety);
+    m.result = check_recorded(m.merge.trace);
     m.result.planner = "recorded driver (CommonRoad obstacle " + std::to_string(m.merge.change.vehicle_id) + ")";
     const std::optional<DecisionWindow> w = decision_window(m.merge.trace, m.merge.change.time_step * dt);
     std::vector<std::string> missing;
@@ -167,7 +171,7 @@ SensitivitySweep sweep_sensitivity(const ObservedTrace& trace, const Sensitivity
   int holding = 0;
   for (const double t : ranges.response_times_s) {
     for (const double scale : ranges.brake_scales) {
-      const CheckResult r = check_observed(with_profile_variation(trace, t, scale), std::nullopt, RuleSet::kSafety);
+      const CheckResult r = check_recorded(with_profile_variation(trace, t, scale));
       s.points.push_back({t, scale, r.holds, r.liable_id});
       holding += r.holds ? 1 : 0;
     }

@@ -35,8 +35,10 @@ double shortest_comfortable_merge_s(double width_m, double lat_accel_mps2);
 // The merge durations the Definition 1 searches try, as multiples of a base duration: rho_m itself
 // first; longer ones for slow egos (e.g. merging from standstill after Def. 1.3), whose trackable
 // sigmoid does not fit in rho_m, and for egos that must drop behind a vehicle passing them
-// (docs/planner.md). The planner and the progress rule share the grid, so the rule never finds a
-// merge at a duration the planner does not try.
+// (docs/planner.md). The progress rule tries the same factors of rules.merge_duration_s; the grids
+// differ when merge_duration_base_s raises rho_m (a declared rho_m shorter than the shortest
+// comfortable merge): then the rule offers merges faster than any the planner draws
+// (docs/planner.md, "What remains").
 inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
 // No comfortable sigmoid at constant speed fits in less than shortest_comfortable_merge_s; a
 // configured rho_m below it is raised to kShortestMergeFactor times that duration.

@@ -1,12 +1,14 @@
 #include "rules/progress_monitor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <sstream>
 #include <utility>
 #include <vector>
 
+#include "core/merge_duration.h"
 #include "core/rss.h"
 #include "rules/coop_exchange.h"
 #include "rules/definition1_gap.h"
@@ -253,7 +255,7 @@ bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t
 // The merge a gap's feasibility is shown with, judged along its whole duration, not only at
 // rho / 2 and rho: the ego's centre follows the paper's sigmoid (RCPP §IV) in time, from its
 // observed Y at the start to the target lane's centre at rho through the midpoint at rho / 2
-// (the logistic of steepness c / rho, kWitnessSteepness, cut at 0 and rho and rescaled), while
+// (the logistic of steepness c / rho, witness_steepness, cut at 0 and rho and rescaled), while
 // its speed changes from the observed one toward v_e* at its declared rates. At every one of
 // kWitnessSamples + 1 instants at which the ego is laterally nearer a vehicle than RCPP eq. (2)
 // (the judge's lateral RSS distance, with the ego's lateral speed on the path) plus
@@ -266,7 +268,33 @@ bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t
 // demands no merge the other rules would then fail. The lateral margin is the tracking slack a
 // driven merge needs: no controller follows its reference path to the centimetre.
 constexpr int kWitnessSamples = 40;
-constexpr double kWitnessSteepness[] = {6.0, 10.0};
+
+namespace {
+
+// The paper's sigmoid starts (its heading along the road) at this fraction of the lane change, as
+// RCPP's planner draws it (2 % to 98 % of W); shortest_turn_in_m starts it there too.
+constexpr double kSigmoidStartFraction = 0.02;
+double logit(double f) { return std::log(f / (1.0 - f)); }
+
+// Two witnesses per duration: the logistic cut at kSigmoidStartFraction (c = 2 logit(0.98) = 2 ln 49,
+// the flattest, whose lateral speed starts near 0 like a driven path's) and a steeper one (c = 10)
+// that crosses the zone of lateral closeness sooner. A flatter cut starts with a jump of lateral
+// speed and is no merge a planner draws.
+const std::array<double, 2>& witness_steepness() {
+  static const std::array<double, 2> c{2.0 * logit(1.0 - kSigmoidStartFraction), 10.0};
+  return c;
+}
+
+// The witness's peak lateral acceleration: y'' = -y0 (c/rho)^2 l(1-l)(1-2l) / span, and
+// |l(1-l)(1-2l)| peaks at 1/(6 sqrt 3) (within the cut for c > 2.6). A merge above
+// progress_lat_accel_max_mps2 is not offered: a comfortable lane change is what the rule demands.
+double witness_peak_lat_accel_mps2(double y0_m, double rho_s, double c) {
+  const auto logistic = [c](double u) { return 1.0 / (1.0 + std::exp(-c * (u - 0.5))); };
+  const double span = logistic(1.0) - logistic(0.0);
+  return std::abs(y0_m) * c * c / (6.0 * std::sqrt(3.0) * span * rho_s * rho_s);
+}
+
+}  // namespace
 
 struct WitnessLateral {
   double y_m, vy_mps;
@@ -332,7 +360,6 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
 // kSigmoidStartFraction point) to the lane line: (logit(f_line) - logit(start)) / kappa, f_line =
 // (-W/2 - Y) / A. One arc of the same curvature would reach the line sooner, but it arrives
 // turned across the lane and is no merge the paper's planner draws.
-constexpr double kSigmoidStartFraction = 0.02;
 double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m) {
   const double line_y = -0.5 * t.road.lane_width_m;
   const double amplitude_m = std::abs(y_m);
@@ -341,12 +368,12 @@ double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_
   const double kappa = std::sqrt(6.0 * std::sqrt(3.0) * c / amplitude_m);
   const double f_line = (line_y - y_m) / amplitude_m;
   if (f_line <= kSigmoidStartFraction) return 0.0;
-  const auto logit = [](double f) { return std::log(f / (1.0 - f)); };
   return (logit(f_line) - logit(kSigmoidStartFraction)) / kappa;
 }
 
 // Some v_e* of the interval, its midpoint within the turn-in and the room, whose witness merge
-// (witness_merge_clear, either steepness) is clear along its whole duration.
+// (witness_merge_clear, either steepness within progress_lat_accel_max_mps2) is clear along its
+// whole duration.
 constexpr int kWitnessSpeeds = 8;
 template <class ToMid>
 bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, const Def1Interval& in, const ToMid& to_mid_m, double turn_in_m, double room_m) {
@@ -354,8 +381,10 @@ bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t ste
     const double ve = in.ve_lo_mps + (in.ve_hi_mps - in.ve_lo_mps) * j / kWitnessSpeeds;
     const double mid = to_mid_m(ve);
     if (mid < turn_in_m || mid > room_m) continue;
-    for (const double c : kWitnessSteepness)
-      if (witness_merge_clear(t, p, step, rho, ve, c)) return true;
+    for (const double c : witness_steepness())
+      if (witness_peak_lat_accel_mps2(t.steps[step].vehicles[0].y_m, rho, c) <= p.progress_lat_accel_max_mps2 &&
+          witness_merge_clear(t, p, step, rho, ve, c))
+        return true;
   }
   return false;
 }
@@ -373,13 +402,15 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   std::vector<FeasibleMerge> out;
   if (room_m < turn_in_m) return out;
   const std::vector<GapIndices> gaps = lane_gaps(t, step);
+  const double base_rho_s = merge_duration_base_s(p.merge_duration_s, t.road.lane_width_m, p.progress_lat_accel_max_mps2);
   for (std::size_t g = 0; g < gaps.size(); ++g) {
     const GapIndices& gap = gaps[g];
     const GapIndices ahead = g + 1 < gaps.size() ? gaps[g + 1] : GapIndices{};
     // rho_m, or longer: a merge that observably takes longer holds the right of way on a reading
     // over its own duration (rules/merge_attempts.h), and from low speed only a longer one
-    // reaches a midpoint the turn-in allows.
-    for (const double rho : {p.merge_duration_s, 1.5 * p.merge_duration_s, 2.0 * p.merge_duration_s}) {
+    // reaches a midpoint the turn-in allows. A declared rho_m shorter than the shortest
+    // comfortable lane change is raised to it, as RCPP's planner raises it (core/merge_duration.h).
+    for (const double rho : {base_rho_s, 1.5 * base_rho_s, 2.0 * base_rho_s}) {
       if (!leader_holds_speed(t, p, step, gap, ahead, rho)) continue;
       Def1Interval in = def1_interval(t, step, gap, rho, margin);
       in.ve_lo_mps = std::max(in.ve_lo_mps, p.progress_min_merge_speed_mps);

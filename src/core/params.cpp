@@ -84,6 +84,8 @@ constexpr Param<RuleParams> kRuleRows[] = {
           "`progress`: the slowest v_e* that counts as a drivable merge"),
     param("progress_lateral_margin_m", &R::progress_lateral_margin_m, "m", at_least(0.0), at_most(1.5),
           "`progress`: lateral slack of a feasible merge beyond D_lat"),
+    param("progress_lat_accel_max_mps2", &R::progress_lat_accel_max_mps2, "m/s²", at_least(0.5), at_most(5.0),
+          "`progress`: peak lateral acceleration of a merge the rule offers (a comfortable lane change)"),
 };
 static_assert(well_formed<RuleParams>(kRuleRows));
 

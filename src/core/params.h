@@ -70,6 +70,7 @@ struct RuleParams {
   double progress_leader_braking_mps2 = 0.5;
   double progress_min_merge_speed_mps = 5.0;
   double progress_lateral_margin_m = 0.75;
+  double progress_lat_accel_max_mps2 = 1.5;
   bool operator==(const RuleParams&) const = default;
 };
 

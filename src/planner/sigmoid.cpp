@@ -38,14 +38,6 @@ double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_acce
   return std::sqrt(kSixRootThree * lat_accel_mps2 / width_m) / speed_mps;
 }
 
-double merge_duration_base_s(double rho_m_s, double width_m, double lat_accel_mps2) {
-  return std::max(rho_m_s, kShortestMergeFactor * shortest_comfortable_merge_s(width_m, lat_accel_mps2));
-}
-
-double shortest_comfortable_merge_s(double width_m, double lat_accel_mps2) {
-  return 2.0 * std::log(49.0) / std::sqrt(6.0 * std::sqrt(3.0) * lat_accel_mps2 / width_m);
-}
-
 namespace {
 constexpr int kPeakSamples = 40;
 constexpr double kPeakSpan = 4.0;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/merge_duration.h"
 #include "planner/definition1.h"
 #include "planner/planner.h"
 
@@ -28,22 +29,14 @@ struct Sigmoid {
 double sigmoid_peak_lat_accel_mps2(double speed_mps, double width_m, double kappa_per_m);
 // The largest kappa with sigmoid_peak_lat_accel <= lat_accel_mps2 (infinite at speed 0).
 double kappa_comfort_max_per_m(double speed_mps, double width_m, double lat_accel_mps2);
-// The shortest merge (2 % to 98 % of W) whose peak lateral acceleration stays within
-// lat_accel_mps2 at any constant speed v: the path spans 2 ln(49)/kappa <= v rho and the bound
-// gives kappa <= sqrt(6 sqrt3 a / W)/v, so rho >= 2 ln(49) / sqrt(6 sqrt3 a / W), whatever v.
-double shortest_comfortable_merge_s(double width_m, double lat_accel_mps2);
 // The merge durations the Definition 1 searches try, as multiples of a base duration: rho_m itself
 // first; longer ones for slow egos (e.g. merging from standstill after Def. 1.3), whose trackable
 // sigmoid does not fit in rho_m, and for egos that must drop behind a vehicle passing them
-// (docs/planner.md). The progress rule tries the same factors of rules.merge_duration_s; the grids
-// differ when merge_duration_base_s raises rho_m (a declared rho_m shorter than the shortest
-// comfortable merge): then the rule offers merges faster than any the planner draws
-// (docs/planner.md, "What remains").
+// (docs/planner.md). The base is merge_duration_base_s (core/merge_duration.h) of rho_m and the
+// comfort bound; the progress rule tries the factors up to 2 of the same base, with its own bound
+// (rules.progress_lat_accel_max_mps2, by default the planner's), so it offers no merge at a
+// duration the planner does not try.
 inline constexpr double kMergeDurationFactors[] = {1.0, 1.5, 2.0, 3.0};
-// No comfortable sigmoid at constant speed fits in less than shortest_comfortable_merge_s; a
-// configured rho_m below it is raised to kShortestMergeFactor times that duration.
-inline constexpr double kShortestMergeFactor = 1.05;
-double merge_duration_base_s(double rho_m_s, double width_m, double lat_accel_mps2);
 
 // Peak lateral acceleration along a sigmoid driven with a speed profile (the ramp starting at
 // ramp_origin_x_m): max of v(x)^2 |y''(x)| over points within +-4/kappa of P_c, y'' = W kappa^2

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -138,6 +139,26 @@ TEST(ProgressMonitor, AGapIsJudgedAlongTheWholeMergeNotOnlyAtItsMidpointAndEnd) 
   EXPECT_TRUE(def1_gaps_feasible(j->trace, j->params, 0).empty());
   j->params.progress_lateral_margin_m = 0.0;
   EXPECT_FALSE(def1_gaps_feasible(j->trace, j->params, 0).empty());
+}
+
+TEST(ProgressMonitor, ADeclaredMergeDurationBelowTheShortestComfortableOneIsRaisedToIt) {
+  // rho_m = 2 s: a lane change of 3.5 m in 2 s needs 4.4 m/s^2 of lateral acceleration on the
+  // flattest witness (c = 2 ln 49, cut at 2 %): with the default bound (1.5 m/s^2) the empty
+  // road is offered at the shortest comfortable duration, 1.05 * 2 ln 49 / sqrt(6 sqrt 3 * 1.5 /
+  // 3.5) = 3.87 s; with a bound of 5 m/s^2 at 2.12 s; at rho_m = 5 s (above both) at rho_m.
+  const Scenario s = base_scenario();
+  const auto j = test::judge(s, constant_accel_trace(s, 1.0));
+  j->params.merge_duration_s = 2.0;
+  const auto offered = [&] {
+    const std::vector<FeasibleMerge> gaps = def1_gaps_feasible(j->trace, j->params, 0);
+    EXPECT_EQ(gaps.size(), 1u);
+    return gaps.empty() ? 0.0 : gaps.front().merge_duration_s;
+  };
+  EXPECT_NEAR(offered(), 3.8726, 1e-4);
+  j->params.progress_lat_accel_max_mps2 = 5.0;
+  EXPECT_NEAR(offered(), 1.05 * 2.0 * std::log(49.0) / std::sqrt(6.0 * std::sqrt(3.0) * 5.0 / 3.5), 1e-9);
+  j->params.merge_duration_s = 5.0;
+  EXPECT_NEAR(offered(), 5.0, 1e-12);
 }
 
 TEST(ProgressMonitor, TheTurnInIsTheSteepestSigmoidWithinTheSideslipBound) {

@@ -277,9 +277,9 @@ constexpr double kSigmoidStartFraction = 0.02;
 double logit(double f) { return std::log(f / (1.0 - f)); }
 
 // Two witnesses per duration: the logistic cut at kSigmoidStartFraction (c = 2 logit(0.98) = 2 ln 49,
-// the flattest, whose lateral speed starts near 0 like a driven path's) and a steeper one (c = 10)
-// that crosses the zone of lateral closeness sooner. A flatter cut starts with a jump of lateral
-// speed and is no merge a planner draws.
+// the paper's sigmoid from its 2 % point, as RCPP draws it) and a steeper one (c = 10) that crosses
+// the zone of lateral closeness sooner. A flatter cut starts with a larger jump of lateral speed
+// (it begins farther up the logistic) and is no merge a planner draws.
 const std::array<double, 2>& witness_steepness() {
   static const std::array<double, 2> c{2.0 * logit(1.0 - kSigmoidStartFraction), 10.0};
   return c;

@@ -285,13 +285,18 @@ const std::array<double, 2>& witness_steepness() {
   return c;
 }
 
+// The logistic of steepness c over u in [0, 1], centred at u = 1/2, and the rise of its cut.
+struct CutLogistic {
+  double c;
+  double at(double u) const { return 1.0 / (1.0 + std::exp(-c * (u - 0.5))); }
+  double span() const { return at(1.0) - at(0.0); }
+};
+
 // The witness's peak lateral acceleration: y'' = -y0 (c/rho)^2 l(1-l)(1-2l) / span, and
 // |l(1-l)(1-2l)| peaks at 1/(6 sqrt 3) (within the cut for c > 2.6). A merge above
 // progress_lat_accel_max_mps2 is not offered: a comfortable lane change is what the rule demands.
 double witness_peak_lat_accel_mps2(double y0_m, double rho_s, double c) {
-  const auto logistic = [c](double u) { return 1.0 / (1.0 + std::exp(-c * (u - 0.5))); };
-  const double span = logistic(1.0) - logistic(0.0);
-  return std::abs(y0_m) * c * c / (6.0 * std::sqrt(3.0) * span * rho_s * rho_s);
+  return std::abs(y0_m) * c * c / (6.0 * std::sqrt(3.0) * CutLogistic{c}.span() * rho_s * rho_s);
 }
 
 }  // namespace
@@ -300,9 +305,9 @@ struct WitnessLateral {
   double y_m, vy_mps;
 };
 WitnessLateral witness_lateral(double y0_m, double rho_s, double c, double tau_s) {
-  const auto logistic = [c](double u) { return 1.0 / (1.0 + std::exp(-c * (u - 0.5))); };
-  const double l0 = logistic(0.0), span = logistic(1.0) - l0;
-  const double l = logistic(tau_s / rho_s);
+  const CutLogistic logistic{c};
+  const double l0 = logistic.at(0.0), span = logistic.span();
+  const double l = logistic.at(tau_s / rho_s);
   const double frac = (l - l0) / span;
   return {y0_m * (1.0 - frac), -y0_m * c * l * (1.0 - l) / (rho_s * span)};
 }
@@ -377,14 +382,18 @@ double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_
 constexpr int kWitnessSpeeds = 8;
 template <class ToMid>
 bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, const Def1Interval& in, const ToMid& to_mid_m, double turn_in_m, double room_m) {
+  // The steepnesses within the bound depend on the duration and the ego's Y only, not on v_e*.
+  std::array<bool, 2> comfortable{};
+  for (std::size_t k = 0; k < comfortable.size(); ++k)
+    comfortable[k] = witness_peak_lat_accel_mps2(t.steps[step].vehicles[0].y_m, rho, witness_steepness()[k]) <=
+                     p.progress_lat_accel_max_mps2;
+  if (!comfortable[0] && !comfortable[1]) return false;
   for (int j = 0; j <= kWitnessSpeeds; ++j) {
     const double ve = in.ve_lo_mps + (in.ve_hi_mps - in.ve_lo_mps) * j / kWitnessSpeeds;
     const double mid = to_mid_m(ve);
     if (mid < turn_in_m || mid > room_m) continue;
-    for (const double c : witness_steepness())
-      if (witness_peak_lat_accel_mps2(t.steps[step].vehicles[0].y_m, rho, c) <= p.progress_lat_accel_max_mps2 &&
-          witness_merge_clear(t, p, step, rho, ve, c))
-        return true;
+    for (std::size_t k = 0; k < comfortable.size(); ++k)
+      if (comfortable[k] && witness_merge_clear(t, p, step, rho, ve, witness_steepness()[k])) return true;
   }
   return false;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fuzz/simulator_faithful.h"
 #include "planner/planner_fault.h"
 
 namespace mg::fuzz {
@@ -87,7 +88,7 @@ const std::vector<std::string>& property_names() {
                                               property::kCollisionLiable, property::kSideLaneEnd,
                                               property::kNoOscillation,  property::kDeterminism,
                                               property::kProgress,       property::kCheckCompletes,
-                                              property::kPlannerResponds};
+                                              property::kPlannerResponds, property::kSimulatorFaithful};
   return names;
 }
 
@@ -102,6 +103,9 @@ std::vector<PropertyFailure> evaluate_properties(const Scenario& scenario, const
   if (rerun_digest && *rerun_digest != result.trace_digest)
     out.push_back({property::kDeterminism, kRuleDigest, Party::nobody(), 0.0, -1.0, "a second run gave another trace digest"});
   failed_rules(property::kProgress, {kRuleProgress}, result, out);
+  for (const SimulatorFinding& f : simulator_findings(scenario, result))
+    out.push_back({property::kSimulatorFaithful, f.rule,
+                   f.vehicle_id >= 1 ? Party::vehicle(f.vehicle_id) : Party::nobody(), f.time_s, f.margin, f.detail});
   return out;
 }
 

@@ -28,6 +28,9 @@ inline constexpr const char* kCheckCompletes = "check_completes";         // the
 // An exec planner answered every call in time and within the protocol (planner/planner_fault.h);
 // its rule is the fault's kind (planner_timeout, planner_exit, planner_reply), its party the ego.
 inline constexpr const char* kPlannerResponds = "planner_responds";
+// The simulated traffic and channel did what the scenario declares (fuzz/simulator_faithful.h);
+// its rule names the check, its party the vehicle concerned (nobody for the channel).
+inline constexpr const char* kSimulatorFaithful = "simulator_faithful";
 }  // namespace property
 const std::vector<std::string>& property_names();
 

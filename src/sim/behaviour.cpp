@@ -14,6 +14,10 @@ constexpr double kGapMarginM = 2.0;       // RSS follower / constant speed: marg
 constexpr double kBehaviourSpeedGainPerS = 1.0;  // speed tracking gain of the simple behaviours (the ego's is speed_controller.h's)
 constexpr double kGapGainPerS2 = 0.2;     // RSS follower gap gain
 constexpr double kCoopReleaseExtraS = 2.0;// cooperation ends rho_c + rho_m + this after acceptance
+// A cooperative driver promises v_o* only if it expects to be within this of it, on the side the
+// ego counts on, from t_r + rho_c + T to t_r + rho_c + rho_m (half the judge's default yield
+// tolerance).
+constexpr double kPromiseToleranceMps = 0.25;
 
 double lane_centre_y(const Road& road, int lane) { return lane * road.lane_width_m; }
 
@@ -169,7 +173,50 @@ bool MainLaneDriver::non_compliant(double time_s) const {
   return mode_ == Mode::kReneging;
 }
 
-std::optional<V2vMessage> MainLaneDriver::answer(const V2vMessage& request, double time_s, double speed_mps) {
+double MainLaneDriver::cooperating_accel(double speed_mps, double target_mps, CoopCase c,
+                                         const std::optional<Leader>& leader) const {
+  // Definition 2: brake at most b_min to v_o* (2.1 B: v_o* bounds the speed from above) or
+  // accelerate at most a_acc to it (2.2 B: from below); a responder already on the right side of
+  // v_o* holds its speed (tracking v_o* back from there would leave the profile the ego's
+  // ineq. (3)/(4) counts on, which runs from its speed at the acceptance). Never closer to a leader
+  // than IDM's interaction term allows (its free-road term is dropped: v_o* replaces the desired
+  // speed).
+  const Limits& lim = spec_.limits;
+  double track =
+      std::clamp(kBehaviourSpeedGainPerS * 4.0 * (target_mps - speed_mps), -lim.brake_min_mps2, lim.accel_max_mps2);
+  track = c == CoopCase::kEgoAhead ? std::min(track, 0.0) : std::max(track, 0.0);
+  const double idm = idm_accel_mps2(speed_mps, std::numeric_limits<double>::infinity(), leader, spec_.size.length_m,
+                                    spec_.behaviour, lim);
+  return std::clamp(std::min(track, idm), -lim.brake_max_mps2, lim.accel_max_mps2);
+}
+
+// The cooperating law run ahead on the leader held at its current speed, at the simulation step:
+// a 2.2 responder must not be held back by the vehicle ahead of it below v_o* -
+// kPromiseToleranceMps, nor a 2.1 responder stay above v_o* + kPromiseToleranceMps, in
+// [t_r + rho_c + T, t_r + rho_c + rho_m] (T the RSS response time: Def. 2's responder rules
+// judge the speed from then on).
+bool MainLaneDriver::keeps_promise(const V2vMessage& request, double time_s, double speed_mps,
+                                   const std::optional<Leader>& leader) const {
+  const double dt = params_.sim.step_s;
+  const double due_s = request.sent_time_s + params_.planner.comm_threshold_s + params_.rss.response_time_s;
+  const double end_s = request.sent_time_s + params_.planner.comm_threshold_s + params_.planner.merge_duration_s;
+  const double target = request.target_speed_mps;
+  const bool speed_up = request.coop_case == CoopCase::kEgoBehind;
+  std::optional<Leader> ahead = leader;
+  double v = speed_mps;
+  for (double t = time_s; t <= end_s + 1e-9; t += dt) {
+    if (t >= due_s - 1e-9 && (speed_up ? v < target - kPromiseToleranceMps : v > target + kPromiseToleranceMps))
+      return false;
+    const double a = cooperating_accel(v, target, request.coop_case, ahead);
+    const double v_next = std::max(0.0, v + a * dt);
+    if (ahead) ahead->distance_m += (ahead->speed_mps - 0.5 * (v + v_next)) * dt;
+    v = v_next;
+  }
+  return true;
+}
+
+std::optional<V2vMessage> MainLaneDriver::answer(const V2vMessage& request, double time_s, double speed_mps,
+                                                 const std::optional<Leader>& leader) {
   if (request.type != MessageType::kRequest) return std::nullopt;
   if (spec_.behaviour.type == BehaviourType::kNonResponsive) return std::nullopt;
   V2vMessage reply = request;
@@ -189,10 +236,11 @@ std::optional<V2vMessage> MainLaneDriver::answer(const V2vMessage& request, doub
   const double rate = braking ? spec_.limits.brake_min_mps2 : spec_.limits.accel_max_mps2;
   const bool reachable = std::isfinite(target) && target >= 0.0 && target <= road_.speed_limit_mps &&
                          std::abs(target - speed_mps) <= rate * params_.planner.comm_threshold_s + 1e-9;
-  if (reachable) {
+  if (reachable && keeps_promise(request, time_s, speed_mps, leader)) {
     reply.type = MessageType::kAccept;
     mode_ = Mode::kCooperating;
     coop_target_mps_ = target;
+    coop_case_ = request.coop_case;
     coop_since_s_ = time_s;
   }
   return reply;
@@ -252,14 +300,7 @@ double MainLaneDriver::accel_mps2(const DriverInput& in) {
 
   double a = 0.0;
   if (mode_ == Mode::kCooperating) {
-    // Definition 2: brake at most b_min (2.1 B) or accelerate at most a_acc (2.2 B) to v_o*,
-    // and never closer to a leader than IDM's interaction term allows (its free-road term is
-    // dropped: v_o* replaces the desired speed).
-    const double track = std::clamp(kBehaviourSpeedGainPerS * 4.0 * (coop_target_mps_ - in.speed_mps), -lim.brake_min_mps2,
-                                    lim.accel_max_mps2);
-    const double idm = idm_accel_mps2(in.speed_mps, std::numeric_limits<double>::infinity(), in.leader,
-                                      spec_.size.length_m, spec_.behaviour, lim);
-    a = std::min(track, idm);
+    a = cooperating_accel(in.speed_mps, coop_target_mps_, coop_case_, in.leader);
   } else if (mode_ == Mode::kReneging) {
     // Accepted, but keeps driving as if the ego were not there.
     a = idm_accel_mps2(in.speed_mps, desired_speed(), in.leader_main_only, spec_.size.length_m, spec_.behaviour, lim);

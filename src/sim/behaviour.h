@@ -83,9 +83,13 @@ class MainLaneDriver {
   MainLaneDriver(const MainVehicle& spec, const Road& road, const Params& params);
 
   // The answer to a delivered cooperation request (accept or refuse), or nothing
-  // (non-responsive). Cooperative: accepts when 0 <= v_o* <= speed limit and v_o* is
-  // reachable within rho_c at brake_min (ego ahead) or accel_max (ego behind).
-  std::optional<V2vMessage> answer(const V2vMessage& request, double time_s, double speed_mps);
+  // (non-responsive). Cooperative: accepts when 0 <= v_o* <= speed limit, v_o* is reachable
+  // within rho_c at brake_min (ego ahead) or accel_max (ego behind), and its cooperating law
+  // keeps the promise behind `leader` (the vehicle ahead of it in its lane, predicted at its
+  // current speed) from t_r + rho_c + T to t_r + rho_c + rho_m: a driver does not promise a
+  // speed the traffic ahead of it will not let it reach (RCPP Def. 2.2 B counts on it).
+  std::optional<V2vMessage> answer(const V2vMessage& request, double time_s, double speed_mps,
+                                   const std::optional<Leader>& leader = std::nullopt);
 
   // Longitudinal acceleration to apply this step.
   double accel_mps2(const DriverInput& in);
@@ -99,6 +103,10 @@ class MainLaneDriver {
   enum class Mode { kNormal, kCooperating, kReneging };
 
   double behaviour_accel(const DriverInput& in);
+  // Definition 2's cooperating law toward `target`, behind `leader` (clamped to the limits).
+  double cooperating_accel(double speed_mps, double target_mps, CoopCase c, const std::optional<Leader>& leader) const;
+  bool keeps_promise(const V2vMessage& request, double time_s, double speed_mps,
+                     const std::optional<Leader>& leader) const;
   double desired_speed() const;
   bool in_window(double time_s) const;
 
@@ -110,6 +118,7 @@ class MainLaneDriver {
   double segment_accel_mps2_ = 0.0;
   Mode mode_ = Mode::kNormal;
   double coop_target_mps_ = 0.0;
+  CoopCase coop_case_ = CoopCase::kEgoAhead;
   double coop_since_s_ = 0.0;
 };
 

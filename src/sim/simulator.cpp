@@ -118,7 +118,8 @@ class Run {
         continue;
       }
       const std::size_t i = static_cast<std::size_t>(s_.index_of(m.to_id));
-      const std::optional<V2vMessage> reply = drivers_[i].answer(m, t, others_[i].vx_mps);
+      const std::optional<V2vMessage> reply =
+          drivers_[i].answer(m, t, others_[i].vx_mps, find_leaders(s_, others_, i, ego_).main_only);
       note_non_compliance(i, t);
       if (reply) channel_.send(*reply, t, trace_.events);
     }

@@ -58,6 +58,12 @@ RC_GTEST_PROP(RcppCoopProperties, CompliantOthersMeanNoCollisionAndNoUnansweredD
 RC_GTEST_PROP(RcppCoopProperties, EveryCollisionHasALiableParty, ()) {
   holds_for_generated_scenarios("rcpp-coop", property::kCollisionLiable);
 }
+// The simulator keeps the scenario's declarations (fuzz/simulator_faithful.h): its drivers their
+// limits and the speeds they accept, its channel the declared latencies and losses. The
+// cooperative planner exercises the responders and the channel.
+RC_GTEST_PROP(RcppCoopProperties, TheSimulatorKeepsWhatTheScenarioDeclares, ()) {
+  holds_for_generated_scenarios("rcpp-coop", property::kSimulatorFaithful);
+}
 
 // The baseline is expected to fail (spec §6: it weaves and merges late); determinism and
 // completing the check are what it must still satisfy.

@@ -1,5 +1,6 @@
 #include "sim/behaviour.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -131,6 +132,42 @@ TEST(Behaviour, CooperativeResponderReachesRequestedSpeedWithinItsLimits) {
   }
 }
 
+// The speed-up of Def. 2.2 B is promised only where the vehicle ahead lets the responder reach
+// it: a responder 170 m behind a stopped vehicle would be held back by its own gap keeping.
+TEST(Behaviour, CooperativeResponderRefusesASpeedUpTheVehicleAheadWillNotLetItReach) {
+  const MainVehicle v = test::vehicle(1, 0.0, 20.5, BehaviourType::kCooperative);
+  const Params p;
+  Leader stopped;
+  stopped.id = 2;
+  stopped.distance_m = 173.0;
+  stopped.speed_mps = 0.0;
+  stopped.length_m = 4.8;
+  stopped.brake_max_mps2 = 8.0;
+  MainLaneDriver held(v, Road{}, p);
+  const auto refused = held.answer(request(CoopCase::kEgoBehind, 22.35), 0.0, 20.5, stopped);
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->type, MessageType::kRefuse);
+  MainLaneDriver free(v, Road{}, p);
+  const auto accepted = free.answer(request(CoopCase::kEgoBehind, 22.35), 0.0, 20.5);
+  ASSERT_TRUE(accepted);
+  EXPECT_EQ(accepted->type, MessageType::kAccept) << "the same request with nobody ahead";
+}
+
+// A responder already on the side of v_o* the ego counts on holds its speed: speeding back up to
+// a Def. 2.1 v_o* (or slowing to a Def. 2.2 one) would leave the profile ineq. (3)/(4) assume.
+TEST(Behaviour, CooperativeResponderAlreadyOnTheRightSideOfTheSpeedHoldsIt) {
+  const MainVehicle v = test::vehicle(1, 0.0, 20.0, BehaviourType::kCooperative);
+  const Params p;
+  for (const auto& [c, target] : {std::pair{CoopCase::kEgoAhead, 21.0}, std::pair{CoopCase::kEgoBehind, 19.0}}) {
+    MainLaneDriver driver(v, Road{}, p);
+    const auto reply = driver.answer(request(c, target), 0.0, 20.0);
+    ASSERT_TRUE(reply);
+    ASSERT_EQ(reply->type, MessageType::kAccept);
+    const Drive r = drive_alone(driver, 20.0, 3.0);
+    for (double speed : r.speed) EXPECT_DOUBLE_EQ(speed, 20.0) << to_string(c);
+  }
+}
+
 TEST(Behaviour, CooperativeResponderRefusesAnUnreachableSpeed) {
   const MainVehicle v = test::vehicle(1, 0.0, 20.0, BehaviourType::kCooperative);
   MainLaneDriver driver(v, Road{}, Params{});
@@ -236,6 +273,68 @@ RC_GTEST_PROP(Behaviour, LaneOrderFindsTheSameLeadersAsTheScan, ()) {
         RC_ASSERT(x->length_m == y->length_m);
         RC_ASSERT(x->brake_max_mps2 == y->brake_max_mps2);
       }
+    }
+  }
+}
+
+// The Intelligent Driver Model as Treiber, Hennecke and Helbing (2000) write it, for a follower
+// at speed v behind a leader at bumper gap s closing at dv:
+// a [1 - (v/v0)^4 - (s*/s)^2], s* = s0 + max(0, v T + v dv / (2 sqrt(a b))); free road without
+// the interaction term. Written here from the paper, not from the simulator's code.
+double treiber_idm_mps2(double v, double v0, double a, double b, double s0, double T, std::optional<std::pair<double, double>> gap_dv) {
+  double free = 1.0 - std::pow(v / v0, 4.0);
+  if (!gap_dv) return a * free;
+  const auto [s, dv] = *gap_dv;
+  const double s_star = s0 + std::max(0.0, v * T + v * dv / (2.0 * std::sqrt(a * b)));
+  return a * (free - (s_star / s) * (s_star / s));
+}
+
+// Every IDM vehicle of a simulated platoon applies, at every step, the IDM acceleration of its
+// state and its leader's at the step before (the model's gap and acceleration laws), clamped
+// to its declared limits, or stops within the step.
+RC_GTEST_PROP(Behaviour, IdmVehiclesFollowTheModelsLawsInTheSimulator, ()) {
+  Scenario s = test::empty_scenario();
+  s.params.sim.horizon_s = 8.0;
+  const int n = *rc::gen::inRange(1, 5);
+  double x = 0.0;
+  for (int i = 0; i < n; ++i) {
+    x += *rc::gen::inRange(8, 80);  // metres between centres, ahead of the previous vehicle
+    MainVehicle v = test::vehicle(i + 1, x, *rc::gen::inRange(0, 35), BehaviourType::kIdm);
+    v.behaviour.desired_speed_mps = *rc::gen::inRange(5, 35);
+    v.behaviour.time_headway_s = *rc::gen::inRange(5, 30) / 10.0;
+    v.behaviour.min_gap_m = *rc::gen::inRange(1, 6);
+    v.behaviour.comfort_brake_mps2 = *rc::gen::inRange(10, 40) / 10.0;
+    v.limits.accel_max_mps2 = *rc::gen::inRange(5, 40) / 10.0;
+    v.limits.brake_max_mps2 = *rc::gen::inRange(40, 100) / 10.0;
+    s.vehicles.push_back(v);
+  }
+  test::LaneKeepPlanner stay(-3.5, 20.0, 2.0);  // the ego never reaches the main lane
+  const Trace trace = simulate(s, stay);
+  const double dt = s.params.sim.step_s;
+  for (std::size_t k = 1; k < trace.steps.size(); ++k) {
+    const auto& before = trace.steps[k - 1].others;
+    for (std::size_t i = 0; i < before.size(); ++i) {
+      const MainVehicle& v = s.vehicles[i];
+      std::optional<std::pair<double, double>> gap_dv;
+      for (std::size_t j = 0; j < before.size(); ++j) {  // the nearest vehicle ahead
+        if (before[j].x_m <= before[i].x_m) continue;
+        const double gap = before[j].x_m - before[i].x_m - 0.5 * (v.size.length_m + s.vehicles[j].size.length_m);
+        if (!gap_dv || gap < gap_dv->first) gap_dv = std::pair{gap, before[i].vx_mps - before[j].vx_mps};
+      }
+      const double a = std::max(v.limits.accel_max_mps2, 0.5);
+      double expected = gap_dv && gap_dv->first <= 0.01
+                            ? -v.limits.brake_max_mps2
+                            : treiber_idm_mps2(before[i].vx_mps, v.behaviour.desired_speed_mps, a,
+                                               v.behaviour.comfort_brake_mps2, v.behaviour.min_gap_m,
+                                               v.behaviour.time_headway_s, gap_dv);
+      expected = std::clamp(expected, -v.limits.brake_max_mps2, v.limits.accel_max_mps2);
+      const VehicleState& now = trace.steps[k].others[i];
+      if (before[i].vx_mps + expected * dt < 0.0) {  // stops within the step
+        RC_ASSERT(now.vx_mps == 0.0);
+        continue;
+      }
+      RC_ASSERT(std::abs(now.accel_mps2 - expected) <= 1e-9 * (1.0 + std::abs(expected)));
+      RC_ASSERT(std::abs(now.vx_mps - (before[i].vx_mps + expected * dt)) <= 1e-9);
     }
   }
 }

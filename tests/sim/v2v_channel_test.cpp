@@ -1,6 +1,9 @@
 #include "sim/v2v_channel.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include "test_planners.h"
 
@@ -63,6 +66,23 @@ TEST(V2vChannel, PartialLossIsSeededAndRepeatable) {
   EXPECT_EQ(n, delivered());
   EXPECT_GT(n, 60u);
   EXPECT_LT(n, 140u);
+}
+
+// Losses follow the sender's declared rate: over 2000 messages the count lost is within five
+// standard deviations of the binomial mean, whatever the rate and the scenario's seeds.
+RC_GTEST_PROP(V2vChannel, LossesFollowTheDeclaredRate, ()) {
+  const double loss = *rc::gen::inRange(0, 101) / 100.0;
+  Scenario s = two_capable(0.1, loss);
+  s.vehicles[0].behaviour.seed = *rc::gen::arbitrary<std::uint64_t>();
+  V2vChannel channel(s);
+  std::vector<TraceEvent> events;
+  constexpr int kMessages = 2000;
+  for (int i = 0; i < kMessages; ++i) channel.send(from_ego_to(1), 0.01 * i, events);
+  const double lost = static_cast<double>(count(events, EventKind::kMessageLost));
+  const double mean = kMessages * loss;
+  const double sd = std::sqrt(kMessages * loss * (1.0 - loss));
+  RC_ASSERT(std::abs(lost - mean) <= 5.0 * sd + 1.0);
+  RC_ASSERT(lost + static_cast<double>(channel.deliver_due(100.0, events).size()) == kMessages);
 }
 
 TEST(V2vChannel, MessagesToOrFromVehiclesWithoutV2vAreLost) {

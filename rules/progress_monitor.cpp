@@ -421,6 +421,9 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
     // comfortable lane change is raised to it, as RCPP's planner raises it (core/merge_duration.h).
     for (const double rho : {base_rho_s, 1.5 * base_rho_s, 2.0 * base_rho_s}) {
       if (!leader_holds_speed(t, p, step, gap, ahead, rho)) continue;
+      // def1_feasible is def1_interval's feasibility exactly, at a fraction of its bisections;
+      // raising ve_lo below can only narrow the interval.
+      if (!def1_feasible(t, step, gap, rho, margin)) continue;
       Def1Interval in = def1_interval(t, step, gap, rho, margin);
       in.ve_lo_mps = std::max(in.ve_lo_mps, p.progress_min_merge_speed_mps);
       if (!in.feasible()) continue;

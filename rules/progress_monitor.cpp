@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -304,53 +305,85 @@ double witness_peak_lat_accel_mps2(double y0_m, double rho_s, double c) {
 struct WitnessLateral {
   double y_m, vy_mps;
 };
-WitnessLateral witness_lateral(double y0_m, double rho_s, double c, double tau_s) {
-  const CutLogistic logistic{c};
-  const double l0 = logistic.at(0.0), span = logistic.span();
+// The witness's Y and lateral speed at tau_s, of the cut logistic `logistic` with its value at
+// u = 0 `l0` and its rise `span` (both constant per steepness, computed once per witness).
+WitnessLateral witness_lateral(double y0_m, double rho_s, const CutLogistic& logistic, double l0, double span,
+                               double tau_s) {
   const double l = logistic.at(tau_s / rho_s);
   const double frac = (l - l0) / span;
-  return {y0_m * (1.0 - frac), -y0_m * c * l * (1.0 - l) / (rho_s * span)};
+  return {y0_m * (1.0 - frac), -y0_m * logistic.c * l * (1.0 - l) / (rho_s * span)};
 }
 
+// The lateral half of a witness merge (one duration, one steepness), which does not depend on
+// v_e*: the instants at which the ego on the witness path is laterally nearer a vehicle than
+// RCPP eq. (2) plus progress_lateral_margin_m, with the vehicle, in instant order.
+// witness_merge_clear then judges only these (instant, vehicle) pairs for each v_e*.
+struct NearPair {
+  int k;          // instant index, tau = rho k / kWitnessSamples
+  std::size_t o;  // vehicle index
+};
+std::vector<NearPair> witness_near_pairs(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho,
+                                         double c) {
+  const auto& v = t.steps[step].vehicles;
+  const ObservedState& ego = v[0];
+  const Limits& el = t.vehicles[0].limits;
+  const double T = t.params.rss.response_time_s;
+  const CutLogistic logistic{c};
+  const double l0 = logistic.at(0.0), span = logistic.span();
+  std::vector<NearPair> near;
+  for (int k = 0; k <= kWitnessSamples; ++k) {
+    const WitnessLateral lat = witness_lateral(ego.y_m, rho, logistic, l0, span, rho * k / kWitnessSamples);
+    for (std::size_t o = 1; o < v.size(); ++o) {
+      const ObservedState& ov = v[o];
+      const bool o_left = ov.y_m >= lat.y_m;
+      const double d_lat = rss_lateral_m({o_left ? 0.0 : lat.vy_mps, o_left ? lat.vy_mps : 0.0,
+                                          size_of(t, o_left ? o : 0).width_m, size_of(t, o_left ? 0 : o).width_m, T,
+                                          el.lat_accel_max_mps2, el.lat_brake_min_mps2,
+                                          t.params.rss.fluctuation_margin_m});
+      if (std::abs(ov.y_m - lat.y_m) < d_lat + p.progress_lateral_margin_m) near.push_back({k, o});
+    }
+  }
+  return near;
+}
+
+// The longitudinal half at v_e*: at every near pair, D_lon plus progress_gap_margin_m behind a
+// vehicle ahead (kept at its observed speed), and until rho / 2 ahead of a target-lane vehicle
+// behind (accelerating at its a_accel^max).
 bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, double ve,
-                         double c) {
+                         const std::vector<NearPair>& near) {
   const auto& v = t.steps[step].vehicles;
   const ObservedState& ego = v[0];
   const Limits& el = t.vehicles[0].limits;
   const double v0 = std::max(ego.vx_mps, 0.0);
   const double T = t.params.rss.response_time_s;
   const double half_lane = 0.5 * t.road.lane_width_m;
-  for (int k = 0; k <= kWitnessSamples; ++k) {
-    const double tau = rho * k / kWitnessSamples;
-    const double x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
-    const double rate = ve >= v0 ? el.accel_max_mps2 : el.brake_min_mps2;
-    const double ve_now = ve >= v0 ? std::min(ve, v0 + rate * tau) : std::max(ve, v0 - rate * tau);
-    const WitnessLateral lat = witness_lateral(ego.y_m, rho, c, tau);
-    for (std::size_t o = 1; o < v.size(); ++o) {
-      const ObservedState& ov = v[o];
-      const bool target_lane = std::abs(ov.y_m) < half_lane;
-      const bool o_left = ov.y_m >= lat.y_m;
-      const double d_lat = rss_lateral_m({o_left ? 0.0 : lat.vy_mps, o_left ? lat.vy_mps : 0.0,
-                                          size_of(t, o_left ? o : 0).width_m, size_of(t, o_left ? 0 : o).width_m, T,
-                                          el.lat_accel_max_mps2, el.lat_brake_min_mps2,
-                                          t.params.rss.fluctuation_margin_m});
-      if (std::abs(ov.y_m - lat.y_m) >= d_lat + p.progress_lateral_margin_m) continue;
-      const double vo = std::max(ov.vx_mps, 0.0);
-      const double xo = ov.x_m + vo * tau;
-      if (xo >= x) {  // ahead: the ego is the rear vehicle
-        const double d_lon = rss_longitudinal_m({ve_now, vo, size_of(t, 0).length_m, size_of(t, o).length_m, T,
-                                                 el.accel_max_mps2, el.brake_min_mps2, limits_of(t, o).brake_max_mps2});
-        if (xo - x < d_lon + p.progress_gap_margin_m) return false;
-        continue;
-      }
-      if (!target_lane || tau > 0.5 * rho + kTieS) continue;  // past P_c the follower keeps D_lon
-      const Limits& ol = limits_of(t, o);
-      const double xf = ov.x_m + vo * tau + 0.5 * ol.accel_max_mps2 * tau * tau;
-      const double vf = vo + ol.accel_max_mps2 * tau;
-      const double d_lon = rss_longitudinal_m({vf, ve_now, size_of(t, o).length_m, size_of(t, 0).length_m, T,
-                                               ol.accel_max_mps2, ol.brake_min_mps2, el.brake_max_mps2});
-      if (x - xf < d_lon + p.progress_gap_margin_m) return false;
+  int at_k = -1;
+  double tau = 0.0, x = 0.0, ve_now = 0.0;
+  for (const NearPair& n : near) {
+    if (n.k != at_k) {
+      at_k = n.k;
+      tau = rho * n.k / kWitnessSamples;
+      x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
+      const double rate = ve >= v0 ? el.accel_max_mps2 : el.brake_min_mps2;
+      ve_now = ve >= v0 ? std::min(ve, v0 + rate * tau) : std::max(ve, v0 - rate * tau);
     }
+    const ObservedState& ov = v[n.o];
+    const double vo = std::max(ov.vx_mps, 0.0);
+    const double xo = ov.x_m + vo * tau;
+    if (xo >= x) {  // ahead: the ego is the rear vehicle
+      const double d_lon = rss_longitudinal_m({ve_now, vo, size_of(t, 0).length_m, size_of(t, n.o).length_m, T,
+                                               el.accel_max_mps2, el.brake_min_mps2, limits_of(t, n.o).brake_max_mps2});
+      if (xo - x < d_lon + p.progress_gap_margin_m) return false;
+      continue;
+    }
+    const bool target_lane = std::abs(ov.y_m) < half_lane;
+    if (!target_lane || tau > 0.5 * rho + kTieS) continue;  // past P_c the follower keeps D_lon
+    const Limits& ol = limits_of(t, n.o);
+    const double xf = ov.x_m + vo * tau + 0.5 * ol.accel_max_mps2 * tau * tau;
+    const double vf = vo + ol.accel_max_mps2 * tau;
+    const double d_lon = rss_longitudinal_m({vf, ve_now, size_of(t, n.o).length_m, size_of(t, 0).length_m, T,
+                                             ol.accel_max_mps2, ol.brake_min_mps2, el.brake_max_mps2});
+    if (x - xf < d_lon + p.progress_gap_margin_m) return false;
   }
   return true;
 }
@@ -388,12 +421,16 @@ bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t ste
     comfortable[k] = witness_peak_lat_accel_mps2(t.steps[step].vehicles[0].y_m, rho, witness_steepness()[k]) <=
                      p.progress_lat_accel_max_mps2;
   if (!comfortable[0] && !comfortable[1]) return false;
+  std::array<std::optional<std::vector<NearPair>>, 2> near;  // built when first needed
   for (int j = 0; j <= kWitnessSpeeds; ++j) {
     const double ve = in.ve_lo_mps + (in.ve_hi_mps - in.ve_lo_mps) * j / kWitnessSpeeds;
     const double mid = to_mid_m(ve);
     if (mid < turn_in_m || mid > room_m) continue;
-    for (std::size_t k = 0; k < comfortable.size(); ++k)
-      if (comfortable[k] && witness_merge_clear(t, p, step, rho, ve, witness_steepness()[k])) return true;
+    for (std::size_t k = 0; k < comfortable.size(); ++k) {
+      if (!comfortable[k]) continue;
+      if (!near[k]) near[k] = witness_near_pairs(t, p, step, rho, witness_steepness()[k]);
+      if (witness_merge_clear(t, p, step, rho, ve, *near[k])) return true;
+    }
   }
   return false;
 }

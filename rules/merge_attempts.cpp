@@ -323,6 +323,7 @@ class AttemptJudge {
   bool try_def1();
   void keep_if_best(const Def1Reading& r, bool covers);
   void extend_back(std::size_t first);
+  void earliest_run(std::size_t first);
   void granted();
   void no_basis();
   void settle_decision_time();
@@ -475,6 +476,25 @@ void AttemptJudge::extend_back(std::size_t first) {
   }
 }
 
+// An earlier run of good readings of the same gap within the window, before a stretch in which
+// its readings were not good, moves T_dec back to that run's start: Definition 1 decides at
+// T_dec, and a vehicle that then uses what it is allowed (a follower accelerating within its
+// a_accel^max) makes later readings of the gap fail while the decision stands. Judged from the
+// latest good run alone, an ego that decided when it first saw the gap was without the right of
+// way in between and failed Def. 1.3 near a short side lane's end (a campaign finding). Strides
+// back every kScanStride steps to the window's first step, which is always read.
+void AttemptJudge::earliest_run(std::size_t first) {
+  const std::size_t credit_first = step_at_or_after(in_.t, credit_from_s_);
+  for (std::size_t i = a_.def1.step; i > first;) {
+    i = i >= first + kScanStride ? i - kScanStride : first;
+    const Def1Reading r = read_def1(in_.t, in_.p, a_, a_.def1.gap, i);
+    if (!r.interval.feasible() || !covers_rest(r)) continue;
+    a_.def1 = r;
+    extend_back(credit_first);
+    i = a_.def1.step;
+  }
+}
+
 // The reading kept when none is good: feasible before not, then the largest smaller margin
 // (toward the vehicles of the gap entered the reading would have to cover, too).
 void AttemptJudge::keep_if_best(const Def1Reading& r, bool covers) {
@@ -527,6 +547,7 @@ bool AttemptJudge::try_def1() {
       if (r.interval.feasible() && covers) {
         a_.basis = RowBasis::kDef1;
         extend_back(step_at_or_after(t, credit_from_s_));
+        earliest_run(first);
         cover_by_reading(a_.def1);
         return true;
       }

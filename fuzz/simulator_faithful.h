@@ -6,6 +6,7 @@
 // sender's declared latency, or lost one it could not lose.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/scenario.h"

@@ -190,27 +190,36 @@ double MainLaneDriver::cooperating_accel(double speed_mps, double target_mps, Co
   return std::clamp(std::min(track, idm), -lim.brake_max_mps2, lim.accel_max_mps2);
 }
 
-// The cooperating law run ahead on the leader held at its current speed, at the simulation step:
-// a 2.2 responder must not be held back by the vehicle ahead of it below v_o* -
-// kPromiseToleranceMps, nor a 2.1 responder stay above v_o* + kPromiseToleranceMps, in
-// [t_r + rho_c + T, t_r + rho_c + rho_m] (T the RSS response time: Def. 2's responder rules
-// judge the speed from then on).
+// The cooperating law run ahead on the leader held at its current speed, at the simulation step,
+// against the promise as Def. 2's responder rules read it: from the acceptance on, no farther
+// behind (2.2; ahead for 2.1) than kPromiseToleranceMps x the time since of the profile that
+// changes speed linearly to v_o* by t_r + rho_c + T and then holds it (def2_positions), and from
+// t_r + rho_c + T on no slower (2.2; faster for 2.1) than v_o* by kPromiseToleranceMps
+// (def2_1b_responder, def2_2b_responder); until t_r + rho_c + rho_m. T is the RSS response time.
 bool MainLaneDriver::keeps_promise(const V2vMessage& request, double time_s, double speed_mps,
                                    const std::optional<Leader>& leader) const {
   const double dt = params_.sim.step_s;
   const double due_s = request.sent_time_s + params_.planner.comm_threshold_s + params_.rss.response_time_s;
   const double end_s = request.sent_time_s + params_.planner.comm_threshold_s + params_.planner.merge_duration_s;
   const double target = request.target_speed_mps;
-  const bool speed_up = request.coop_case == CoopCase::kEgoBehind;
+  const double side = request.coop_case == CoopCase::kEgoBehind ? 1.0 : -1.0;  // +1: no slower, -1: no faster
+  const double ramp_s = std::max(due_s - time_s, 0.0);
   std::optional<Leader> ahead = leader;
-  double v = speed_mps;
+  double v = speed_mps, x = 0.0, profile_x = 0.0, profile_v = speed_mps;
   for (double t = time_s; t <= end_s + 1e-9; t += dt) {
-    if (t >= due_s - 1e-9 && (speed_up ? v < target - kPromiseToleranceMps : v > target + kPromiseToleranceMps))
-      return false;
+    const double tol_m = kPromiseToleranceMps * (t - time_s);
+    if (side * (x - profile_x) < -tol_m) return false;
+    if (t >= due_s - 1e-9 && side * (v - target) < -kPromiseToleranceMps) return false;
     const double a = cooperating_accel(v, target, request.coop_case, ahead);
     const double v_next = std::max(0.0, v + a * dt);
+    const double profile_next = t + dt >= due_s || ramp_s <= 0.0
+                                    ? target
+                                    : speed_mps + (target - speed_mps) * (t + dt - time_s) / ramp_s;
+    x += 0.5 * (v + v_next) * dt;
+    profile_x += 0.5 * (profile_v + profile_next) * dt;
     if (ahead) ahead->distance_m += (ahead->speed_mps - 0.5 * (v + v_next)) * dt;
     v = v_next;
+    profile_v = profile_next;
   }
   return true;
 }

@@ -39,12 +39,7 @@ CheckResult judged(const Scenario& s, const std::vector<double>& accels) {
 }
 
 V2vMessage message(MessageType type, int from, int to, double sent_s) {
-  V2vMessage m;
-  m.type = type;
-  m.from_id = from;
-  m.to_id = to;
-  m.sent_time_s = sent_s;
-  return m;
+  return V2vMessage{.type = type, .from_id = from, .to_id = to, .sent_time_s = sent_s};
 }
 
 bool has(const std::vector<SimulatorFinding>& f, const std::string& rule) {

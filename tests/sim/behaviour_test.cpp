@@ -137,12 +137,7 @@ TEST(Behaviour, CooperativeResponderReachesRequestedSpeedWithinItsLimits) {
 TEST(Behaviour, CooperativeResponderRefusesASpeedUpTheVehicleAheadWillNotLetItReach) {
   const MainVehicle v = test::vehicle(1, 0.0, 20.5, BehaviourType::kCooperative);
   const Params p;
-  Leader stopped;
-  stopped.id = 2;
-  stopped.distance_m = 173.0;
-  stopped.speed_mps = 0.0;
-  stopped.length_m = 4.8;
-  stopped.brake_max_mps2 = 8.0;
+  const Leader stopped{.id = 2, .distance_m = 173.0, .speed_mps = 0.0, .length_m = 4.8, .brake_max_mps2 = 8.0};
   MainLaneDriver held(v, Road{}, p);
   const auto refused = held.answer(request(CoopCase::kEgoBehind, 22.35), 0.0, 20.5, stopped);
   ASSERT_TRUE(refused);
@@ -151,6 +146,29 @@ TEST(Behaviour, CooperativeResponderRefusesASpeedUpTheVehicleAheadWillNotLetItRe
   const auto accepted = free.answer(request(CoopCase::kEgoBehind, 22.35), 0.0, 20.5);
   ASSERT_TRUE(accepted);
   EXPECT_EQ(accepted->type, MessageType::kAccept) << "the same request with nobody ahead";
+}
+
+// Def. 2's responder rules read the promise as a position profile from the acceptance on, not
+// only as a speed from t_r + rho_c + T: a responder whose gap keeping (a long time headway, 10 m
+// behind a faster vehicle) brakes it at once falls behind that profile, though it is back at
+// v_o* in time, so it refuses.
+TEST(Behaviour, CooperativeResponderRefusesWhatItsGapKeepingWouldBreakAtOnce) {
+  MainVehicle v = test::vehicle(1, 0.0, 22.0, BehaviourType::kCooperative);
+  v.behaviour.time_headway_s = 2.3;
+  v.behaviour.comfort_brake_mps2 = 4.0;
+  Params p;
+  p.planner.comm_threshold_s = 2.0;
+  const Leader pulling_away{.id = 2, .distance_m = 14.8, .speed_mps = 30.0, .length_m = 4.8, .brake_max_mps2 = 4.0};
+  MainLaneDriver driver(v, Road{}, p);
+  const auto reply = driver.answer(request(CoopCase::kEgoBehind, 22.0), 0.1, 22.0, pulling_away);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->type, MessageType::kRefuse);
+  MainLaneDriver far_behind(v, Road{}, p);
+  Leader far = pulling_away;
+  far.distance_m = 200.0;
+  const auto accepted = far_behind.answer(request(CoopCase::kEgoBehind, 22.0), 0.1, 22.0, far);
+  ASSERT_TRUE(accepted);
+  EXPECT_EQ(accepted->type, MessageType::kAccept) << "the same request with the vehicle ahead far away";
 }
 
 // A responder already on the side of v_o* the ego counts on holds its speed: speeding back up to

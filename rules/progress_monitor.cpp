@@ -340,7 +340,8 @@ std::vector<NearPair> witness_near_pairs(const ObservedTrace& t, const RuleParam
                                           size_of(t, o_left ? o : 0).width_m, size_of(t, o_left ? 0 : o).width_m, T,
                                           el.lat_accel_max_mps2, el.lat_brake_min_mps2,
                                           t.params.rss.fluctuation_margin_m});
-      if (std::abs(ov.y_m - lat.y_m) < d_lat + p.progress_lateral_margin_m) near.push_back({k, o});
+      // Written as "not clear" so that a NaN lateral distance counts as near: judged, not skipped.
+      if (!(std::abs(ov.y_m - lat.y_m) >= d_lat + p.progress_lateral_margin_m)) near.push_back({k, o});
     }
   }
   return near;

@@ -7,40 +7,9 @@
 // Waiting for a better gap within the grace is allowed; so is any wait while nothing is offered.
 #pragma once
 
-#include <cstddef>
-#include <vector>
-
 #include "rules/monitor.h"
 
 namespace mg {
-
-// A gap of the rightmost main lane that admits a Definition 1 merge from the ego's observed state
-// at `step`, judged with the rules' own code (rules/definition1_gap.h): for rho = rho_m (or 1.5 or
-// 2 rho_m: a merge that observably takes longer is read over its own duration), some v_e* in
-// [progress_min_merge_speed_mps, speed limit] satisfies ineq. (1.1) and (1.2) by
-// progress_gap_margin_m under both position models (the bounded-rate one starts from the ego's
-// observed speed and changes it at its declared a_accel^max / a_brake^min, so a v_e* it cannot
-// reach in time does not count), and at such a v_e* the ego's centre reaches the lane line
-// (rho / 2 on) no sooner than the paper's sigmoid within the sideslip bound can turn in (shortest_turn_in_m)
-// and with its front still progress_gap_margin_m short of the side lane's end. A gap whose leader
-// brakes harder than progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader
-// holds its speed). The merge must also be clear along its whole duration, not only at rho / 2 and
-// rho: on a sigmoid in time through the lane line at rho / 2, wherever the ego is laterally nearer
-// a vehicle (of the target lane or the lane beyond) than D_lat plus progress_lateral_margin_m, it
-// is D_lon plus progress_gap_margin_m behind it if ahead, and ahead of it until rho / 2 if it is a
-// target-lane vehicle behind. Path shape and comfort beyond that are the planner's business.
-struct FeasibleMerge {
-  int follower_id = -1;  // -1: open gap
-  int leader_id = -1;
-  double merge_duration_s = 0.0;
-  double ve_star_mps = 0.0;  // the slowest feasible v_e*
-  double ve_max_mps = 0.0;   // the fastest
-};
-// The shortest X in which the paper's sigmoid path within the sideslip bound (sideslip_max_rad;
-// kinematic sideslip, the centre of gravity at most half the length ahead of the rear axle) takes
-// the ego's centre from Y = y_m, heading along the road, to the lane line (0 at or past it).
-double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m);
-std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step);
 
 MonitorOutput monitor_progress(const MonitorContext& ctx);
 

@@ -1,6 +1,6 @@
 // The merge path's admissibility and the lane-occupancy check along it (RCPP §II-C, spec §6):
-// pure functions shared by the RCPP planner and the progress rule (rules/progress_monitor), so
-// the two agree on what a drivable, comfortable, RSS-clear merge is (docs/planner.md).
+// pure functions of the RCPP planner (docs/planner.md). The progress rule judges what merge it
+// offers with its own code (rules/feasible_gaps.h): rules/ never includes the planner.
 #pragma once
 
 #include <array>

@@ -21,6 +21,7 @@
 #include "rules/merge_attempts.h"
 #include "rules/merge_phases.h"
 #include "rules/monitor.h"
+#include "rules/feasible_gaps.h"
 #include "rules/progress_monitor.h"
 #include "rules/situation.h"
 #include "check/checked_run.h"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -108,6 +109,15 @@ V2vMessage request(CoopCase c, double vo_star_mps) {
   return m;
 }
 
+// What a fresh driver of `v` answers to `r` delivered at time_s while at speed_mps behind
+// `leader` (nothing when it does not answer).
+std::optional<MessageType> answer_type(const MainVehicle& v, const Params& p, const V2vMessage& r, double time_s,
+                                       double speed_mps, const std::optional<Leader>& leader) {
+  MainLaneDriver driver(v, Road{}, p);
+  const std::optional<V2vMessage> reply = driver.answer(r, time_s, speed_mps, leader);
+  return reply ? std::optional<MessageType>(reply->type) : std::nullopt;
+}
+
 TEST(Behaviour, CooperativeResponderReachesRequestedSpeedWithinItsLimits) {
   const MainVehicle v = test::vehicle(1, 0.0, 20.0, BehaviourType::kCooperative);
   const Params p;  // rho_c = 1 s, b_min = 4, a_acc = 2
@@ -138,14 +148,10 @@ TEST(Behaviour, CooperativeResponderRefusesASpeedUpTheVehicleAheadWillNotLetItRe
   const MainVehicle v = test::vehicle(1, 0.0, 20.5, BehaviourType::kCooperative);
   const Params p;
   const Leader stopped{.id = 2, .distance_m = 173.0, .speed_mps = 0.0, .length_m = 4.8, .brake_max_mps2 = 8.0};
-  MainLaneDriver held(v, Road{}, p);
-  const auto refused = held.answer(request(CoopCase::kEgoBehind, 22.35), 0.0, 20.5, stopped);
-  ASSERT_TRUE(refused);
-  EXPECT_EQ(refused->type, MessageType::kRefuse);
-  MainLaneDriver free(v, Road{}, p);
-  const auto accepted = free.answer(request(CoopCase::kEgoBehind, 22.35), 0.0, 20.5);
-  ASSERT_TRUE(accepted);
-  EXPECT_EQ(accepted->type, MessageType::kAccept) << "the same request with nobody ahead";
+  const V2vMessage speed_up = request(CoopCase::kEgoBehind, 22.35);
+  EXPECT_EQ(answer_type(v, p, speed_up, 0.0, 20.5, stopped), MessageType::kRefuse);
+  EXPECT_EQ(answer_type(v, p, speed_up, 0.0, 20.5, std::nullopt), MessageType::kAccept)
+      << "the same request with nobody ahead";
 }
 
 // Def. 2's responder rules read the promise as a position profile from the acceptance on, not
@@ -159,16 +165,12 @@ TEST(Behaviour, CooperativeResponderRefusesWhatItsGapKeepingWouldBreakAtOnce) {
   Params p;
   p.planner.comm_threshold_s = 2.0;
   const Leader pulling_away{.id = 2, .distance_m = 14.8, .speed_mps = 30.0, .length_m = 4.8, .brake_max_mps2 = 4.0};
-  MainLaneDriver driver(v, Road{}, p);
-  const auto reply = driver.answer(request(CoopCase::kEgoBehind, 22.0), 0.1, 22.0, pulling_away);
-  ASSERT_TRUE(reply);
-  EXPECT_EQ(reply->type, MessageType::kRefuse);
-  MainLaneDriver far_behind(v, Road{}, p);
+  const V2vMessage hold = request(CoopCase::kEgoBehind, 22.0);
+  EXPECT_EQ(answer_type(v, p, hold, 0.1, 22.0, pulling_away), MessageType::kRefuse);
   Leader far = pulling_away;
   far.distance_m = 200.0;
-  const auto accepted = far_behind.answer(request(CoopCase::kEgoBehind, 22.0), 0.1, 22.0, far);
-  ASSERT_TRUE(accepted);
-  EXPECT_EQ(accepted->type, MessageType::kAccept) << "the same request with the vehicle ahead far away";
+  EXPECT_EQ(answer_type(v, p, hold, 0.1, 22.0, far), MessageType::kAccept)
+      << "the same request with the vehicle ahead far away";
 }
 
 // A responder already on the side of v_o* the ego counts on holds its speed: speeding back up to

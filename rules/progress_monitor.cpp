@@ -6,7 +6,9 @@
 #include <utility>
 #include <vector>
 
+#include "core/merge_duration.h"
 #include "rules/coop_exchange.h"
+#include "rules/definition2_inequalities.h"
 #include "rules/definition1_gap.h"
 #include "rules/feasible_gaps.h"
 
@@ -51,7 +53,10 @@ std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, co
 // A Definition 2 acceptance in force: delivered to the ego within [t_r, t_r + rho_c] (a later one
 // grants nothing, Def. 2.3), from [delivery, t_r + rho_c + rho_m] (the cooperation's span,
 // def2_1b_responder's window), and only when the gap's other vehicle leaves room for it
-// (other_gap_vehicle_clear, as for the right of way).
+// (other_gap_vehicle_clear, as for the right of way). An acceptance its sender does not keep
+// (beyond def2_positions' bound at some step of that span: responder_broke_acceptance) offers
+// nothing: the merge it promised never existed, and an ego that drops it, or never takes it up,
+// is waiting for a reason (the responder rules hold the sender liable).
 struct Acceptance {
   int partner_id = 0;
   bool ego_ahead = true;  // Def. 2.1 (the ego merges ahead of the partner) or 2.2
@@ -67,8 +72,10 @@ std::vector<Acceptance> acceptances(const ObservedTrace& t, const RuleParams& p,
     // grants nothing, as for the right of way (merge_attempts.cpp try_def2).
     if (!x.complete() || x.order_margin_m < 0.0) continue;
     if (!other_gap_vehicle_clear(t, p, x)) continue;
-    out.push_back({x.request->to_id, x.request->coop_case == CoopCase::kEgoAhead, d,
-                   x.request_time_s + p.comm_threshold_s + p.merge_duration_s});
+    const double to_s = x.request_time_s + p.comm_threshold_s + p.merge_duration_s;
+    const int k = t.index_of(x.request->to_id);
+    if (k >= 1 && responder_broke_acceptance(t, p, x, static_cast<std::size_t>(k), to_s)) continue;
+    out.push_back({x.request->to_id, x.request->coop_case == CoopCase::kEgoAhead, d, to_s});
   }
   return out;
 }
@@ -80,17 +87,26 @@ struct Offer {
   bool any() const { return !gaps.empty() || partner_id >= 0; }
 };
 
-// An acceptance of Def. 2.1 offers the merge it was asked for only while the vehicle ahead of the
-// partner, the gap's other vehicle, holds its speed as for a Definition 1 gap (leader_holds_speed's
-// first condition): one seen braking harder than progress_leader_braking_mps2 shrinks the gap the
-// request counted on, and an ego that drops the merge then is waiting for a reason. (In 2.2 the
-// other vehicle is behind the partner; Def. 1.1 already lets it accelerate.)
-bool other_vehicle_holds_speed(const ObservedTrace& t, const RuleParams& p, const Acceptance& a, std::size_t i) {
-  if (!a.ego_ahead) return true;
+// An acceptance offers the merge it was asked for only while the gap's other vehicle (2.1: the
+// one ahead of the partner; 2.2: the one behind it) still leaves room for it: Definition 1 for
+// that pair (ineq. (1.2), resp. (1.1)) holds for a merge of rho begun now at the ego's observed
+// speed (Def. 2.1 and 2.2 keep the ego's speed once the request is answered), and, in 2.1, that
+// vehicle brakes no harder than progress_leader_braking_mps2 (leader_holds_speed's first
+// condition). The check at the request (other_gap_vehicle_clear) says the merge was possible
+// then; a vehicle ahead that braked since has shrunk the gap the request counted on, and an ego
+// that drops the merge is waiting for a reason.
+bool other_vehicle_leaves_room(const ObservedTrace& t, const RuleParams& p, const Acceptance& a, std::size_t i,
+                               double rho_s) {
   const int partner = t.index_of(a.partner_id);
+  const double v_e = std::max(0.0, ego_of(t.steps[i]).vx_mps);
   for (const GapIndices& g : lane_gaps(t, i)) {
-    if (g.follower != partner || g.leader < 1) continue;
-    return !(t.steps[i].vehicles[static_cast<std::size_t>(g.leader)].accel_mps2 < -p.progress_leader_braking_mps2);
+    if (a.ego_ahead && g.follower == partner) {
+      if (g.leader < 1) return true;
+      if (t.steps[i].vehicles[static_cast<std::size_t>(g.leader)].accel_mps2 < -p.progress_leader_braking_mps2)
+        return false;
+      return def1_2_margin_m(t, i, g.leader, v_e, rho_s) >= 0.0;
+    }
+    if (!a.ego_ahead && g.leader == partner) return def1_1_margin_m(t, i, g.follower, v_e, rho_s) >= 0.0;
   }
   return true;
 }
@@ -99,8 +115,11 @@ Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepte
   Offer o;
   o.gaps = def1_gaps_feasible(ctx.trace, ctx.params, i);
   const double now = ctx.trace.steps[i].time_s;
+  // The shortest comfortable lane change, as for a Definition 1 gap (feasible_gaps.cpp).
+  const double rho_s = merge_duration_base_s(ctx.params.merge_duration_s, ctx.trace.road.lane_width_m,
+                                             ctx.params.progress_lat_accel_max_mps2);
   for (const Acceptance& a : accepted)
-    if (now >= a.from_s - kTieS && now <= a.to_s + kTieS && other_vehicle_holds_speed(ctx.trace, ctx.params, a, i))
+    if (now >= a.from_s - kTieS && now <= a.to_s + kTieS && other_vehicle_leaves_room(ctx.trace, ctx.params, a, i, rho_s))
       o.partner_id = a.partner_id;
   return o;
 }

@@ -1,5 +1,8 @@
 #include "rules/progress_monitor.h"
+#include "rules/definition2_inequalities.h"
 
+#include <algorithm>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -118,6 +121,86 @@ TEST(ProgressMonitor, AnEgoTooCloseToTheEndToTurnInIsNotJudged) {
   s.ego.x_m = s.road.side_lane_end_x_m - 10.0 - 2.4;
   s.ego.speed_mps = 0.0;
   const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 5.0));
+  EXPECT_TRUE(out.result.holds) << out.result.detail;
+}
+
+
+// A cooperative merge on offer: the ego at 15 m/s in the side lane beside a platoon at 20 m/s
+// with vehicles every 45.5 m (no Definition 1 gap: HaltingBesideADensePlatoonIsNotNeedless),
+// 22.5 m ahead of vehicle 4 and 23 m behind vehicle 3. At t = 0 it asks vehicle 4 to drop to
+// 12 m/s (Def. 2.1, the ego ahead); the acceptance arrives at 0.1 s and is in force until
+// t_r + rho_c + rho_m = 5 s. Vehicle 3, ahead of the partner, leaves room: the ego falls back
+// from it. The ego never moves toward the main lane.
+Scenario coop_offer_scenario() {
+  Scenario s = base_scenario();
+  s.ego.x_m = 86.0;
+  s.ego.speed_mps = 15.0;
+  for (int i = 0; i < 8; ++i) s.vehicles.push_back(vehicle(i + 1, 200.0 - 45.5 * i, 20.0));
+  return s;
+}
+
+// The trace of coop_offer_scenario over 6 s, with vehicle `id` (index id) driven by `speed_at`
+// (its speed at time t) instead of at constant speed.
+Trace coop_offer_trace(const Scenario& s, int id, const std::function<double(double)>& speed_at) {
+  Trace t = constant_accel_trace(s, 6.0);
+  const std::size_t k = static_cast<std::size_t>(id - 1);
+  for (std::size_t i = 1; i < t.steps.size(); ++i) {
+    const double dt = t.steps[i].time_s - t.steps[i - 1].time_s;
+    VehicleState& v = t.steps[i].others[k];
+    const VehicleState& before = t.steps[i - 1].others[k];
+    v.vx_mps = speed_at(t.steps[i].time_s);
+    v.x_m = before.x_m + 0.5 * (before.vx_mps + v.vx_mps) * dt;
+    v.accel_mps2 = (v.vx_mps - before.vx_mps) / dt;
+  }
+  t.events.push_back(test::message_event(0.0, MessageType::kRequest, 0, 4, CoopCase::kEgoAhead, 150.0, 30.0, 12.0));
+  const TraceEvent accept = test::message_event(0.05, MessageType::kAccept, 4, 0, CoopCase::kEgoAhead, 150.0, 30.0, 12.0);
+  t.events.push_back(accept);
+  t.events.push_back(test::delivered_event(accept, 0.1));
+  return t;
+}
+
+// Braking from 20 m/s at `rate_mps2` from `from_s` down to `to_mps`, then holding it.
+std::function<double(double)> slows(double from_s, double to_mps, double rate_mps2) {
+  return [=](double t) { return std::max(to_mps, 20.0 - rate_mps2 * std::max(0.0, t - from_s)); };
+}
+
+TEST(ProgressMonitor, AKeptAcceptanceLeftUnusedIsLettingTheRightOfWayPass) {
+  // Vehicle 4 yields to 12 m/s as it accepted (at its b_max, within 1 s); the ego ignores it: the acceptance was in force
+  // from 0.1 s, the grace runs out at 3.1 s.
+  const Scenario s = coop_offer_scenario();
+  const MonitorOutput out = test::run(monitor_progress, s, coop_offer_trace(s, 4, slows(0.1, 12.0, 8.0)));
+  ASSERT_FALSE(out.result.holds) << out.result.detail;
+  EXPECT_EQ(out.result.liable_id, Party::ego());
+  EXPECT_NE(out.result.detail.find("vehicle 4's acceptance in force"), std::string::npos) << out.result.detail;
+  const auto gaps = std::find_if(out.result.measures.begin(), out.result.measures.end(),
+                                 [](const auto& m) { return m.first == "feasible_gaps_let_pass"; });
+  ASSERT_NE(gaps, out.result.measures.end());
+  EXPECT_EQ(gaps->second, 0.0) << out.result.detail;  // no Definition 1 gap: the acceptance alone
+  EXPECT_NEAR(*out.result.first_violation_time_s, 3.12, 0.021);
+}
+
+TEST(ProgressMonitor, AnAcceptanceItsSenderDoesNotKeepOffersNothing) {
+  // Vehicle 4 accepts and drives on at 20 m/s: past its accepted profile (def2_positions), the
+  // merge it promised never existed, and the ego that waits is not letting anything pass.
+  const Scenario s = coop_offer_scenario();
+  const Trace t = coop_offer_trace(s, 4, [](double) { return 20.0; });
+  const MonitorOutput broken = test::run(monitor_def2_positions, s, t);
+  ASSERT_FALSE(broken.result.holds);
+  EXPECT_EQ(broken.result.liable_id, Party::from_vehicle_id(4));
+  const MonitorOutput out = test::run(monitor_progress, s, t);
+  EXPECT_TRUE(out.result.holds) << out.result.detail;
+}
+
+TEST(ProgressMonitor, AnAcceptanceWhoseOtherVehicleLeftNoRoomOffersNothing) {
+  // Vehicle 4 yields as promised, but vehicle 3, ahead of it, brakes at 8 m/s2 from 20 to 11 m/s
+  // by 1.23 s and then holds that speed: it brakes no more, yet a merge begun now at 15 m/s ends
+  // within D_lon of it (ineq. (1.2) toward it fails), so the acceptance no longer offers a merge.
+  // (Judged by its braking alone, the offer resumed at 1.23 s and ran out at 4.25 s.)
+  const Scenario s = coop_offer_scenario();
+  Trace t = coop_offer_trace(s, 4, slows(0.1, 12.0, 8.0));
+  const Trace braking = coop_offer_trace(s, 3, slows(0.1, 11.0, 8.0));
+  for (std::size_t i = 0; i < t.steps.size(); ++i) t.steps[i].others[2] = braking.steps[i].others[2];
+  const MonitorOutput out = test::run(monitor_progress, s, t);
   EXPECT_TRUE(out.result.holds) << out.result.detail;
 }
 

@@ -168,6 +168,42 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
   return true;
 }
 
+// Past the side lane's end the road's right edge is the lane line (on_road): on the witness, a
+// corner of the ego's body that comes within progress_gap_margin_m of the end (or past it) must
+// be across the line, Y >= -W/2, with the body on the path's heading. A merge whose midpoint
+// alone is short of the end could leave the rear of the body in the side lane past it: the ego
+// would have had to leave the road to take it.
+bool witness_leaves_side_lane(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, double c,
+                              double ve) {
+  const ObservedState& ego = t.steps[step].vehicles[0];
+  const Limits& el = t.vehicles[0].limits;
+  const VehicleSize& size = t.vehicles[0].size;
+  const double v0 = std::max(ego.vx_mps, 0.0);
+  const double hl = 0.5 * size.length_m, hw = 0.5 * size.width_m;
+  const double limit_x = t.road.side_lane_end_x_m - p.progress_gap_margin_m;
+  const double line_y = -0.5 * t.road.lane_width_m;
+  if (ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, rho) + hl < limit_x)
+    return true;  // the front is still short of it when the merge ends
+  const CutLogistic logistic{c};
+  const double l0 = logistic.at(0.0), span = logistic.span();
+  for (int k = 0; k <= kWitnessSamples; ++k) {
+    const double tau = rho * k / kWitnessSamples;
+    const double x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
+    if (x + hl < limit_x) continue;
+    const WitnessLateral lat = witness_lateral(ego.y_m, rho, logistic, l0, span, tau);
+    const double vx = ve >= v0 ? std::min(ve, v0 + el.accel_max_mps2 * tau) : std::max(ve, v0 - el.brake_min_mps2 * tau);
+    const double psi = std::atan2(lat.vy_mps, std::max(vx, 1e-6));
+    const double cs = std::cos(psi), sn = std::sin(psi);
+    for (const double sl : {-1.0, 1.0}) {  // the rear and front right corners (the left ones are higher)
+      const double corner_x = x + sl * hl * cs + hw * sn;
+      const double corner_y = lat.y_m + sl * hl * sn - hw * cs;
+      // Written as "not across" so that a NaN counts against the witness.
+      if (corner_x >= limit_x && !(corner_y >= line_y)) return false;
+    }
+  }
+  return hw <= -line_y;  // after rho: on the lane centre, heading along the road
+}
+
 }  // namespace
 
 // RCPP §IV: the merge path is a sigmoid (a logistic across the lanes) driven within the sideslip
@@ -212,6 +248,7 @@ bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t ste
     if (mid < turn_in_m || mid > room_m) continue;
     for (std::size_t k = 0; k < comfortable.size(); ++k) {
       if (!comfortable[k]) continue;
+      if (!witness_leaves_side_lane(t, p, step, rho, witness_steepness()[k], ve)) continue;
       if (!near[k]) near[k] = witness_near_pairs(t, p, step, rho, witness_steepness()[k]);
       if (witness_merge_clear(t, p, step, rho, ve, *near[k])) return true;
     }

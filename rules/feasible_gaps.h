@@ -20,7 +20,9 @@ namespace mg {
 // observed speed and changes it at its declared a_accel^max / a_brake^min, so a v_e* it cannot
 // reach in time does not count), and at such a v_e* the ego's centre reaches the lane line
 // (rho / 2 on) no sooner than the paper's sigmoid within the sideslip bound can turn in (shortest_turn_in_m)
-// and with its front still progress_gap_margin_m short of the side lane's end. A gap whose leader
+// and with its front still progress_gap_margin_m short of the side lane's end, and the whole body
+// across the lane line before any corner comes within progress_gap_margin_m of that end (past it
+// the road's edge is the lane line: on_road). A gap whose leader
 // brakes harder than progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader
 // holds its speed). The merge must also be clear along its whole duration, not only at rho / 2 and
 // rho: on a sigmoid in time through the lane line at rho / 2, wherever the ego is laterally nearer

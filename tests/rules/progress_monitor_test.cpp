@@ -125,6 +125,21 @@ TEST(ProgressMonitor, AnEgoTooCloseToTheEndToTurnInIsNotJudged) {
 }
 
 
+TEST(ProgressMonitor, AMergeThatWouldLeaveTheRoadPastTheSideLaneEndIsNotOffered) {
+  // At rest, its front 24 m before the side lane's end, on an empty road: a merge reaches its
+  // midpoint 5 m short of the end (2 rho_m, at a_accel^max), but the rear of the body is still
+  // in the side lane when it passes the end, where the road's edge is the lane line (on_road).
+  // No merge gets the whole body across in time, so none is offered; 6 m farther back one is.
+  Scenario s = base_scenario();
+  s.ego.x_m = s.road.side_lane_end_x_m - 24.0 - 2.4;
+  s.ego.speed_mps = 0.0;
+  EXPECT_TRUE(test::run(monitor_progress, s, constant_accel_trace(s, 5.0)).result.holds);
+  s.ego.x_m -= 6.0;
+  const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 5.0));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
+}
+
 // A cooperative merge on offer: the ego at 15 m/s in the side lane beside a platoon at 20 m/s
 // with vehicles every 45.5 m (no Definition 1 gap: HaltingBesideADensePlatoonIsNotNeedless),
 // 22.5 m ahead of vehicle 4 and 23 m behind vehicle 3. At t = 0 it asks vehicle 4 to drop to

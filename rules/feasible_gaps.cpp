@@ -216,15 +216,36 @@ bool witness_leaves_side_lane(const ObservedTrace& t, const RuleParams& p, std::
 // kSigmoidStartFraction point) to the lane line: (logit(f_line) - logit(start)) / kappa, f_line =
 // (-W/2 - Y) / A. One arc of the same curvature would reach the line sooner, but it arrives
 // turned across the lane and is no merge the paper's planner draws.
-double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m) {
-  const double line_y = -0.5 * t.road.lane_width_m;
+namespace {
+
+// The steepest logistic of amplitude |y_m| whose peak curvature stays within the sideslip bound
+// (above), and where the lane line lies on it (f_line, the fraction of the lane change).
+struct SteepestSigmoid {
+  double kappa_per_m = 0.0;
+  double f_line = 0.0;
+};
+SteepestSigmoid steepest_sigmoid(const ObservedTrace& t, const RuleParams& p, double y_m) {
   const double amplitude_m = std::abs(y_m);
-  if (y_m >= line_y || amplitude_m <= 0.0) return 0.0;
   const double c = std::tan(p.sideslip_max_rad) / (0.5 * t.vehicles[0].size.length_m);
-  const double kappa = std::sqrt(6.0 * std::sqrt(3.0) * c / amplitude_m);
-  const double f_line = (line_y - y_m) / amplitude_m;
-  if (f_line <= kSigmoidStartFraction) return 0.0;
-  return (logit(f_line) - logit(kSigmoidStartFraction)) / kappa;
+  return {std::sqrt(6.0 * std::sqrt(3.0) * c / amplitude_m), (-0.5 * t.road.lane_width_m - y_m) / amplitude_m};
+}
+
+}  // namespace
+
+double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m) {
+  if (y_m >= -0.5 * t.road.lane_width_m || y_m == 0.0) return 0.0;
+  const SteepestSigmoid s = steepest_sigmoid(t, p, y_m);
+  if (s.f_line <= kSigmoidStartFraction) return 0.0;
+  return (logit(s.f_line) - logit(kSigmoidStartFraction)) / s.kappa_per_m;
+}
+
+// The witness completes its merge by rho: a second half shorter than this turns back along the
+// lane more sharply than the sideslip bound allows.
+double shortest_turn_out_m(const ObservedTrace& t, const RuleParams& p, double y_m) {
+  if (y_m >= -0.5 * t.road.lane_width_m || y_m == 0.0) return 0.0;
+  const SteepestSigmoid s = steepest_sigmoid(t, p, y_m);
+  const double f_line = std::clamp(s.f_line, kSigmoidStartFraction, 1.0 - kSigmoidStartFraction);
+  return (logit(1.0 - kSigmoidStartFraction) - logit(f_line)) / s.kappa_per_m;
 }
 
 namespace {
@@ -233,8 +254,14 @@ namespace {
 // (witness_merge_clear, either steepness within progress_lat_accel_max_mps2) is clear along its
 // whole duration.
 constexpr int kWitnessSpeeds = 8;
-template <class ToMid>
-bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, const Def1Interval& in, const ToMid& to_mid_m, double turn_in_m, double room_m) {
+// The turn-in and the room bound the distance to the midpoint, the turn-out the distance from the
+// midpoint to the merge's end.
+struct WitnessRoom {
+  double turn_in_m, room_m, turn_out_m;
+};
+template <class ToMid, class ToEnd>
+bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, const Def1Interval& in,
+                    const ToMid& to_mid_m, const ToEnd& to_end_m, const WitnessRoom& r) {
   // The steepnesses within the bound depend on the duration and the ego's Y only, not on v_e*.
   std::array<bool, 2> comfortable{};
   for (std::size_t k = 0; k < comfortable.size(); ++k)
@@ -245,7 +272,7 @@ bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t ste
   for (int j = 0; j <= kWitnessSpeeds; ++j) {
     const double ve = in.ve_lo_mps + (in.ve_hi_mps - in.ve_lo_mps) * j / kWitnessSpeeds;
     const double mid = to_mid_m(ve);
-    if (mid < turn_in_m || mid > room_m) continue;
+    if (mid < r.turn_in_m || mid > r.room_m || to_end_m(ve) - mid < r.turn_out_m) continue;
     for (std::size_t k = 0; k < comfortable.size(); ++k) {
       if (!comfortable[k]) continue;
       if (!witness_leaves_side_lane(t, p, step, rho, witness_steepness()[k], ve)) continue;
@@ -265,11 +292,13 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   const double v0 = std::max(v[0].vx_mps, 0.0);
   // The midpoint (the centre on the lane line) at least the turn-in ahead, and the front still
   // `margin` short of the side lane's end there (side_lane_end).
-  const double turn_in_m = shortest_turn_in_m(t, p, v[0].y_m);
-  const double room_m = t.road.side_lane_end_x_m - margin - (v[0].x_m + 0.5 * t.vehicles[0].size.length_m);
+  // The second half at least the turn-out long.
+  const WitnessRoom r{shortest_turn_in_m(t, p, v[0].y_m),
+                      t.road.side_lane_end_x_m - margin - (v[0].x_m + 0.5 * t.vehicles[0].size.length_m),
+                      shortest_turn_out_m(t, p, v[0].y_m)};
   const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
   std::vector<FeasibleMerge> out;
-  if (room_m < turn_in_m) return out;
+  if (r.room_m < r.turn_in_m) return out;
   const std::vector<GapIndices> gaps = lane_gaps(t, step);
   const double base_rho_s = merge_duration_base_s(p.merge_duration_s, t.road.lane_width_m, p.progress_lat_accel_max_mps2);
   for (std::size_t g = 0; g < gaps.size(); ++g) {
@@ -292,8 +321,14 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
       const auto to_mid_m = [&](double ve) {
         return speed_change_distance_m(v0, ve, ego.accel_max_mps2, ego.brake_min_mps2, 0.5 * rho);
       };
-      if (to_mid_m(in.ve_hi_mps) < turn_in_m || to_mid_m(in.ve_lo_mps) > room_m) continue;
-      if (!witness_exists(t, p, step, rho, in, to_mid_m, turn_in_m, room_m)) continue;
+      const auto to_end_m = [&](double ve) {
+        return speed_change_distance_m(v0, ve, ego.accel_max_mps2, ego.brake_min_mps2, rho);
+      };
+      // Both halves grow with v_e* (its speed profile is higher at every instant).
+      if (to_mid_m(in.ve_hi_mps) < r.turn_in_m || to_mid_m(in.ve_lo_mps) > r.room_m ||
+          to_end_m(in.ve_hi_mps) - to_mid_m(in.ve_hi_mps) < r.turn_out_m)
+        continue;
+      if (!witness_exists(t, p, step, rho, in, to_mid_m, to_end_m, r)) continue;
       out.push_back({id(gap.follower), id(gap.leader), rho, in.ve_lo_mps, in.ve_hi_mps});
       break;
     }

@@ -19,7 +19,8 @@ namespace mg {
 // progress_gap_margin_m under both position models (the bounded-rate one starts from the ego's
 // observed speed and changes it at its declared a_accel^max / a_brake^min, so a v_e* it cannot
 // reach in time does not count), and at such a v_e* the ego's centre reaches the lane line
-// (rho / 2 on) no sooner than the paper's sigmoid within the sideslip bound can turn in (shortest_turn_in_m)
+// (rho / 2 on) no sooner than the paper's sigmoid within the sideslip bound can turn in (shortest_turn_in_m),
+// and from there covers at least its turn-out by rho (shortest_turn_out_m),
 // and with its front still progress_gap_margin_m short of the side lane's end, and the whole body
 // across the lane line before any corner comes within progress_gap_margin_m of that end (past it
 // the road's edge is the lane line: on_road). A gap whose leader
@@ -40,6 +41,9 @@ struct FeasibleMerge {
 // kinematic sideslip, the centre of gravity at most half the length ahead of the rear axle) takes
 // the ego's centre from Y = y_m, heading along the road, to the lane line (0 at or past it).
 double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m);
+// The shortest X in which the same sigmoid takes the centre from the lane line to its end, heading
+// along the road again (0 when the centre is at or past the line): a witness's second half.
+double shortest_turn_out_m(const ObservedTrace& t, const RuleParams& p, double y_m);
 std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step);
 
 

@@ -53,7 +53,7 @@ TEST(FeasibleGaps, ADeclaredMergeDurationBelowTheShortestComfortableOneIsRaisedT
   EXPECT_NEAR(offered(), 5.0, 1e-12);
 }
 
-TEST(FeasibleGaps, TheTurnInIsTheSteepestSigmoidWithinTheSideslipBound) {
+TEST(FeasibleGaps, TheTurnInAndOutAreTheSteepestSigmoidWithinTheSideslipBound) {
   // c = tan(0.05) / 2.4 (half the 4.8 m length); from the side-lane centre (Y = -3.5, A = 3.5) the
   // steepest logistic has kappa = sqrt(6 sqrt 3 c / 3.5) = 0.2489/m and reaches the line (its
   // middle) ln 49 / kappa = 15.64 m after its 2 % point; from Y = -2.5 (A = 2.5, the line at
@@ -66,20 +66,12 @@ TEST(FeasibleGaps, TheTurnInIsTheSteepestSigmoidWithinTheSideslipBound) {
   EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -3.5), 15.64, 0.01);
   EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -2.5), (std::log(0.3 / 0.7) + std::log(49.0)) / k25, 1e-9);
   EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -1.75), 0.0, 1e-12);
-}
-
-TEST(FeasibleGaps, TheTurnOutIsTheSameSigmoidFromTheLineToItsEnd) {
-  // From the side-lane centre the sigmoid is symmetric about the line: ln 49 / kappa again. From
-  // Y = -2.5 the line is at f = 0.3, and the rest of the way to 98 % is logit(0.98) - logit(0.3).
-  const Scenario s = base_scenario();
-  const auto j = test::judge(s, constant_accel_trace(s, 0.1));
-  const double c = std::tan(0.05) / 2.4;
-  const double k35 = std::sqrt(6.0 * std::sqrt(3.0) * c / 3.5), k25 = std::sqrt(6.0 * std::sqrt(3.0) * c / 2.5);
+  // The turn-out, from the line to the 98 % point: symmetric from the lane centre; from Y = -2.5
+  // the rest of the way from f = 0.3.
   EXPECT_NEAR(shortest_turn_out_m(j->trace, j->params, -3.5), std::log(49.0) / k35, 1e-9);
   EXPECT_NEAR(shortest_turn_out_m(j->trace, j->params, -2.5), (std::log(49.0) - std::log(0.3 / 0.7)) / k25, 1e-9);
   EXPECT_NEAR(shortest_turn_out_m(j->trace, j->params, -1.75), 0.0, 1e-12);
 }
-
 
 }  // namespace
 }  // namespace mg

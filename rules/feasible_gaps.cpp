@@ -43,9 +43,12 @@ bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t
 // kWitnessSamples + 1 instants at which the ego is laterally nearer a vehicle than RCPP eq. (2)
 // (the judge's lateral RSS distance, with the ego's lateral speed on the path) plus
 // progress_lateral_margin_m, it must be RCPP eq. (1)'s D_lon plus progress_gap_margin_m clear of
-// it: behind every vehicle ahead of it, in the target lane or the lane beyond, each kept at its
-// observed speed (as Def. 1.2 takes the leader), and, until rho / 2 (P_c), ahead of every
-// target-lane vehicle behind it, which may accelerate at its a_accel^max (Def. 1.1). A gap that
+// it: behind every vehicle ahead of it, of the target lane at its observed speed (as Def. 1.2
+// takes the leader), of the lane beyond where braking at its b_max from now puts it (no part of
+// the gap, it may brake legally while the ego is near it, and the ego's RSS response would then
+// take it off its merge in mid-lane change, which sigmoid_pc_bounds holds against the ego), and,
+// until rho / 2 (P_c), ahead of every target-lane vehicle behind it, which may accelerate at its
+// a_accel^max (Def. 1.1). A gap that
 // ineq. (1)/(2) admit at rho / 2 and rho alone can still have the merge enter the RSS danger the
 // distance rules fail on (a leader passing the ego, a vehicle of the lane beyond): the rule
 // demands no merge the other rules would then fail. The lateral margin is the tracking slack a
@@ -150,13 +153,21 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
     const ObservedState& ov = v[n.o];
     const double vo = std::max(ov.vx_mps, 0.0);
     const double xo = ov.x_m + vo * tau;
+    const bool target_lane = std::abs(ov.y_m) < half_lane;
     if (xo >= x) {  // ahead: the ego is the rear vehicle
-      const double d_lon = rss_longitudinal_m({ve_now, vo, size_of(t, 0).length_m, size_of(t, n.o).length_m, T,
+      // A vehicle of the lane beyond may brake at its b_max at any time while the ego is near it
+      // (witness_merge_clear's comment): kept behind where that braking from now puts it.
+      double xa = xo, va = vo;
+      if (!target_lane) {
+        const double b = std::max(limits_of(t, n.o).brake_max_mps2, -ov.accel_mps2);
+        xa = ov.x_m + speed_change_distance_m(vo, 0.0, 0.0, b, tau);
+        va = std::max(0.0, vo - b * tau);
+      }
+      const double d_lon = rss_longitudinal_m({ve_now, va, size_of(t, 0).length_m, size_of(t, n.o).length_m, T,
                                                el.accel_max_mps2, el.brake_min_mps2, limits_of(t, n.o).brake_max_mps2});
-      if (xo - x < d_lon + p.progress_gap_margin_m) return false;
+      if (!(xa - x >= d_lon + p.progress_gap_margin_m)) return false;
       continue;
     }
-    const bool target_lane = std::abs(ov.y_m) < half_lane;
     if (!target_lane || tau > 0.5 * rho + kTieS) continue;  // past P_c the follower keeps D_lon
     const Limits& ol = limits_of(t, n.o);
     const double xf = ov.x_m + vo * tau + 0.5 * ol.accel_max_mps2 * tau * tau;

@@ -140,6 +140,28 @@ TEST(ProgressMonitor, AMergeThatWouldLeaveTheRoadPastTheSideLaneEndIsNotOffered)
   EXPECT_EQ(out.result.liable_id, Party::ego());
 }
 
+TEST(ProgressMonitor, AVehicleOfTheLaneBeyondIsKeptBehindWhereItsLegalBrakingWouldPutIt) {
+  // Two main lanes; the ego at 20 m/s with a weak lateral brake (0.4 m/s2: D_lat reaches across a
+  // lane while it merges), a target-lane vehicle 70 m behind it at 20 m/s (the ego must merge at
+  // about its own speed, ahead of it), and a vehicle of the lane beyond 90 m ahead at 20 m/s. At
+  // its observed speed that vehicle stays 90 m ahead, clear of D_lon (40.4 m) plus the margin; but
+  // braking at its b_max (8 m/s2) from now it stops 25 m on, and the ego, near it laterally in
+  // mid-merge, would be inside its D_lon and owe an RSS response: no merge is offered. 400 m
+  // ahead it leaves the merge clear, and waiting fails the rule.
+  Scenario s = base_scenario();
+  s.road.main_lanes = 2;
+  s.ego.x_m = 100.0;
+  s.ego.limits.lat_brake_min_mps2 = 0.4;
+  MainVehicle beyond = vehicle(2, 190.0, 20.0);
+  beyond.lane = 1;
+  s.vehicles = {vehicle(1, 30.0, 20.0), beyond};
+  EXPECT_TRUE(test::run(monitor_progress, s, constant_accel_trace(s, 5.0)).result.holds);
+  s.vehicles[1].x_m = 500.0;
+  const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 5.0));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_NE(out.result.detail.find("follower 1, leader open"), std::string::npos) << out.result.detail;
+}
+
 // A cooperative merge on offer: the ego at 15 m/s in the side lane beside a platoon at 20 m/s
 // with vehicles every 45.5 m (no Definition 1 gap: HaltingBesideADensePlatoonIsNotNeedless),
 // 22.5 m ahead of vehicle 4 and 23 m behind vehicle 3. At t = 0 it asks vehicle 4 to drop to

@@ -141,6 +141,24 @@ void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, 
                         fixed_text(h.halt_x_m, 1) + " m and re-evaluating";
 }
 
+// Def. 2.2A binds the ego to braking at most b_min for rho_c after a Def. 2.2 request (ineq. (4)
+// counts on it), also after it gave up waiting for the answer (a Def. 1 merge decided meanwhile,
+// then aborted): the responder may still accept and speed up. A hold or halt in that window
+// brakes at b_min unless b_min could no longer stop the ego before the side lane's end (with a
+// planner cycle of travel in hand): a halt at b_max just before the deadline, with the end still
+// far away, broke Def. 2.2A (a campaign finding).
+void keep_request_braking(const WorldSnapshot& w, double until_s, RcppCycle& out) {
+  const PlannerSetup& s = *w.setup;
+  const double v_e = ego_speed_mps(w);
+  if (w.time_s > until_s + kDeadlineTieS || out.target_speed_mps >= v_e ||
+      out.accel_limit_mps2 <= s.ego.limits.brake_min_mps2)
+    return;
+  const double room_m =
+      s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - w.ego.x_m - v_e * s.params.sim.planner_cycle_s;
+  if (room_m > 0.0 && v_e * v_e / (2.0 * s.ego.limits.brake_min_mps2) < room_m)
+    out.accel_limit_mps2 = s.ego.limits.brake_min_mps2;
+}
+
 }  // namespace
 
 PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
@@ -154,6 +172,8 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
       out = follow_merge(std::get<Merging>(phase_).merge, w);
     } else {
       out = std::move(step.out);
+      // While the request is awaited, wait_for_reply keeps Def. 2.2A itself.
+      if (!side->pending) keep_request_braking(w, ego_behind_request_until_s_, out);
     }
   } else if (auto* merging = std::get_if<Merging>(&phase_)) {
     take_sooner_merge(*merging, w);
@@ -226,7 +246,10 @@ std::optional<CommittedMerge> RcppPlanner::read_reply(InSideLane& side, const Wo
       side.pending.reset();
       return commit(side, w, plan.sigmoid, plan.ego_speed_after_mps, std::move(d));
     }
-    if (m.type == MessageType::kRefuse) note = "Def. 2.3: vehicle " + std::to_string(partner) + " refused; ";
+    if (m.type == MessageType::kRefuse) {
+      note = "Def. 2.3: vehicle " + std::to_string(partner) + " refused; ";
+      ego_behind_request_until_s_ = -1.0;  // a refusal ends Def. 2.2A's window
+    }
   }
   if (note.empty() && w.time_s > pending.deadline_s)
     note = "Def. 2.3: no acceptance from vehicle " + std::to_string(partner) + " within rho_c; ";
@@ -254,6 +277,7 @@ void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, RcppCyc
   plan->decision.reason = note + plan->decision.reason;
   note.clear();
   side.pending = PendingRequest{std::move(*plan), w.time_s + w.setup->params.planner.comm_threshold_s};
+  if (side.pending->plan.vo.coop_case == CoopCase::kEgoBehind) ego_behind_request_until_s_ = side.pending->deadline_s;
 }
 
 // The paper's order: an answer to an open request, Definition 1 at rho_m, a Definition 2

@@ -67,8 +67,8 @@ class RcppPlanner : public Planner {
   bool cooperative_;
   RcppPhase phase_;
   std::map<int, double> retry_after_s_;  // partner id -> earliest time of a new request, kept across merges
-  // Until when a Def. 2.2 request binds the ego to braking at most b_min (Def. 2.2A: rho_c after
-  // it, whether or not the ego still waits for its answer), and until when a refusal ended it.
+  // Until when the latest Def. 2.2 request binds the ego to braking at most b_min (Def. 2.2A:
+  // rho_c after it, whether or not the ego still waits for its answer); -1 once refused.
   double ego_behind_request_until_s_ = -1.0;
   BrakingMemory braking_;
 };

@@ -84,6 +84,11 @@ double witness_peak_lat_accel_mps2(double y0_m, double rho_s, double c) {
 }
 
 
+// The witness's speed tau_s in: from v0 toward ve at the ego's declared a_accel^max / a_brake^min.
+double witness_speed_mps(const Limits& el, double v0, double ve, double tau_s) {
+  return ve >= v0 ? std::min(ve, v0 + el.accel_max_mps2 * tau_s) : std::max(ve, v0 - el.brake_min_mps2 * tau_s);
+}
+
 struct WitnessLateral {
   double y_m, vy_mps;
 };
@@ -130,8 +135,9 @@ std::vector<NearPair> witness_near_pairs(const ObservedTrace& t, const RuleParam
 }
 
 // The longitudinal half at v_e*: at every near pair, D_lon plus progress_gap_margin_m behind a
-// vehicle ahead (kept at its observed speed), and until rho / 2 ahead of a target-lane vehicle
-// behind (accelerating at its a_accel^max).
+// vehicle ahead (of the target lane at its observed speed, of the lane beyond braking at its b_max
+// from now), and until rho / 2 ahead of a target-lane vehicle behind (accelerating at its
+// a_accel^max).
 bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, double ve,
                          const std::vector<NearPair>& near) {
   const auto& v = t.steps[step].vehicles;
@@ -147,8 +153,7 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
       at_k = n.k;
       tau = rho * n.k / kWitnessSamples;
       x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
-      const double rate = ve >= v0 ? el.accel_max_mps2 : el.brake_min_mps2;
-      ve_now = ve >= v0 ? std::min(ve, v0 + rate * tau) : std::max(ve, v0 - rate * tau);
+      ve_now = witness_speed_mps(el, v0, ve, tau);
     }
     const ObservedState& ov = v[n.o];
     const double vo = std::max(ov.vx_mps, 0.0);
@@ -202,8 +207,7 @@ bool witness_leaves_side_lane(const ObservedTrace& t, const RuleParams& p, std::
     const double x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
     if (x + hl < limit_x) continue;
     const WitnessLateral lat = witness_lateral(ego.y_m, rho, logistic, l0, span, tau);
-    const double vx = ve >= v0 ? std::min(ve, v0 + el.accel_max_mps2 * tau) : std::max(ve, v0 - el.brake_min_mps2 * tau);
-    const double psi = std::atan2(lat.vy_mps, std::max(vx, 1e-6));
+    const double psi = std::atan2(lat.vy_mps, std::max(witness_speed_mps(el, v0, ve, tau), 1e-6));
     const double cs = std::cos(psi), sn = std::sin(psi);
     for (const double sl : {-1.0, 1.0}) {  // the rear and front right corners (the left ones are higher)
       const double corner_x = x + sl * hl * cs + hw * sn;

@@ -16,18 +16,6 @@ namespace {
 
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
 
-// An abort returns to the side lane, which is only sound while the ego can still stop (braking at
-// b_min) before the side lane's end (Def. 1.3); otherwise the merge completes under the RSS override.
-// One planner cycle of travel is kept in hand for the speed controller, whose proportional tail
-// stops the ego a little later than constant braking would (by centimetres with weak brakes at
-// speed: an abort decided with less to spare halts past the end).
-bool can_still_halt(const WorldSnapshot& w) {
-  const PlannerSetup& s = *w.setup;
-  const double v = ego_speed_mps(w);
-  const double room_m =
-      s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - w.ego.x_m - v * s.params.sim.planner_cycle_s;
-  return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
-}
 
 std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSnapshot& w,
                                          const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& o,
@@ -208,6 +196,8 @@ std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_
 }
 
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
+  // An abort returns to the side lane, sound only while the ego can still stop before its end
+  // (Def. 1.3); otherwise the merge completes under the RSS override.
   if (m.committed(w.ego.y_m) || !can_still_halt(w)) return false;
   return m.decision.mode == DecisionMode::kDef1Merge
              ? committed_bounds_crossed(m, w) || !committed_occupancy_clear(m, w)

@@ -144,19 +144,15 @@ void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, 
 // Def. 2.2A binds the ego to braking at most b_min for rho_c after a Def. 2.2 request (ineq. (4)
 // counts on it), also after it gave up waiting for the answer (a Def. 1 merge decided meanwhile,
 // then aborted): the responder may still accept and speed up. A hold or halt in that window
-// brakes at b_min unless b_min could no longer stop the ego before the side lane's end (with a
-// planner cycle of travel in hand): a halt at b_max just before the deadline, with the end still
-// far away, broke Def. 2.2A (a campaign finding).
+// brakes at b_min unless b_min could no longer stop the ego before the side lane's end
+// (can_still_halt): a halt at b_max just before the deadline, with the end still far away, broke
+// Def. 2.2A (a campaign finding).
 void keep_request_braking(const WorldSnapshot& w, double until_s, RcppCycle& out) {
-  const PlannerSetup& s = *w.setup;
-  const double v_e = ego_speed_mps(w);
-  if (w.time_s > until_s + kDeadlineTieS || out.target_speed_mps >= v_e ||
-      out.accel_limit_mps2 <= s.ego.limits.brake_min_mps2)
+  const double b_min = w.setup->ego.limits.brake_min_mps2;
+  if (w.time_s > until_s + kDeadlineTieS || out.target_speed_mps >= ego_speed_mps(w) ||
+      out.accel_limit_mps2 <= b_min)
     return;
-  const double room_m =
-      s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - w.ego.x_m - v_e * s.params.sim.planner_cycle_s;
-  if (room_m > 0.0 && v_e * v_e / (2.0 * s.ego.limits.brake_min_mps2) < room_m)
-    out.accel_limit_mps2 = s.ego.limits.brake_min_mps2;
+  if (can_still_halt(w)) out.accel_limit_mps2 = b_min;
 }
 
 }  // namespace

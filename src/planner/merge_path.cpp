@@ -110,13 +110,22 @@ double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahea
   if (gap_m <= 0.0) return 1e3;
   const double ahead_braking_mps2 = ahead_accel_mps2 < -kLeaderBrakingMps2 ? -ahead_accel_mps2 : 0.0;
   const double closing_mps = l.speed_mps - ahead.speed_mps;
-  // While both move: the gap is smallest when the speeds match (relative uniform braking).
-  double need_mps2 = closing_mps > 0.0 ? ahead_braking_mps2 + closing_mps * closing_mps / (2.0 * gap_m) : 0.0;
-  if (ahead_braking_mps2 > 0.0) {  // and to a stop behind where `ahead` stops
-    const double room_m = gap_m + ahead.speed_mps * ahead.speed_mps / (2.0 * ahead_braking_mps2);
-    need_mps2 = std::max(need_mps2, l.speed_mps * l.speed_mps / (2.0 * room_m));
-  }
-  return std::min(1e3, need_mps2);
+  // Uniform braking b behind `ahead` (at constant speed, or braking uniformly to a stop): while
+  // both move the gap is smallest where the speeds match, at gap - closing^2 / (2 (b - b_a)), so
+  // b >= b_a + closing^2 / (2 gap) whenever that match comes before `ahead` stops.
+  const auto match_bound_mps2 = [&] { return ahead_braking_mps2 + closing_mps * closing_mps / (2.0 * gap_m); };
+  if (ahead_braking_mps2 == 0.0) return closing_mps > 0.0 ? std::min(1e3, match_bound_mps2()) : 0.0;
+  // Both come to rest: b stops `l` behind where `ahead` stops. If at that b the speeds still
+  // match while `ahead` moves, the match bound is the larger one; otherwise the gap only shrinks
+  // until `l` stops, and that stop is the binding one. (Taking the match bound regardless asked a
+  // vehicle behind one crawling to a stop, seen braking hard for an instant, to brake as hard.)
+  const double room_m = gap_m + ahead.speed_mps * ahead.speed_mps / (2.0 * ahead_braking_mps2);
+  const double stop_mps2 = l.speed_mps * l.speed_mps / (2.0 * room_m);
+  if (closing_mps > 0.0 && stop_mps2 > ahead_braking_mps2 &&
+      closing_mps * ahead_braking_mps2 < ahead.speed_mps * (stop_mps2 - ahead_braking_mps2) &&
+      2.0 * gap_m * (stop_mps2 - ahead_braking_mps2) < closing_mps * closing_mps)
+    return std::min(1e3, match_bound_mps2());
+  return std::min(1e3, stop_mps2);
 }
 
 double chained_accel_mps2(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v,

@@ -113,8 +113,11 @@ inline constexpr double kLeaderBrakingMps2 = 0.5;
 inline constexpr double kLeaderStandoffM = 2.0;
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const MainLaneVehicle* ahead = nullptr,
                    double ahead_accel_mps2 = 0.0);
-// The uniform braking leader_track predicts for `l` behind `ahead`; 0 when `l` is not faster
-// than a non-braking `ahead`. Capped at 1e3 m/s2 (no room left).
+// The uniform braking leader_track predicts for `l` behind `ahead`: the least that keeps
+// kLeaderStandoffM behind `ahead` (at constant speed, or braking to a stop at the rate seen), so
+// no harder than stopping behind where a braking `ahead` stops unless the speeds match while it
+// still moves; 0 when `l` is not faster than a non-braking `ahead`. Capped at 1e3 m/s2 (no room
+// left).
 double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2 = 0.0);
 // The vehicle next ahead of `v` in `lane` (any order), or nullptr.
 const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v);

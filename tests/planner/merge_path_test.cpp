@@ -1,6 +1,7 @@
 #include "planner/merge_path.h"
 
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -185,6 +186,43 @@ TEST(LeaderTrack, ALeaderBehindAStoppedVehicleIsPredictedToStopBehindIt) {
   // Alone, or seen braking harder than that, it is predicted as before.
   EXPECT_DOUBLE_EQ(leader_track(leader, 0.0).x_at(10.0), 250.0);
   EXPECT_NEAR(leader_track(leader, -5.0, &stopped).x_at(60.0), 62.5, 1e-6);
+}
+
+// A vehicle crawling to a stop, seen braking hard for an instant (a stopped driver's controller
+// jitters at a few cm/s), asks of the vehicle behind it only the braking that stops it behind
+// where the crawler stops, not the crawler's own rate: leader at X = 0, 16 m/s; the crawler at
+// X = 150, 0.05 m/s, seen braking at 3.5 m/s2 (stops within 0.4 mm). Room to its stop:
+// 150 - 4.8 - 2 + 0.05^2 / 7 m, so 16^2 / (2 * that) = 0.894 m/s2, not 3.5 + 15.95^2 / (2 * 143.2).
+TEST(LeaderTrack, BehindAVehicleCrawlingToAStopTheBrakingIsWhatStoppingBehindItNeeds) {
+  const MainLaneVehicle leader = lane_vehicle(1, 0.0, 16.0), crawler = lane_vehicle(2, 150.0, 0.05);
+  const double room_m = 150.0 - 4.8 - kLeaderStandoffM + 0.05 * 0.05 / 7.0;
+  EXPECT_NEAR(braking_behind_mps2(leader, crawler, -3.5), 256.0 / (2.0 * room_m), 1e-9);
+  const Track t = leader_track(leader, 0.0, &crawler, -3.5);
+  EXPECT_NEAR(t.x_at(60.0), room_m, 1e-6);
+}
+
+// The braking predicted behind a vehicle (at constant speed, or braking to a stop at the rate
+// seen) is the least uniform braking that keeps the standoff: 2 % less and the track comes closer
+// to that vehicle than the standoff at some instant.
+RC_GTEST_PROP(LeaderTrack, TheBrakingBehindIsTheLeastThatKeepsTheStandoff, ()) {
+  const MainLaneVehicle leader = lane_vehicle(1, 0.0, *rc::gen::inRange(0, 400) / 10.0);
+  const MainLaneVehicle ahead = lane_vehicle(2, *rc::gen::inRange(100, 3000) / 10.0, *rc::gen::inRange(0, 400) / 10.0);
+  const double ahead_accel_mps2 = -*rc::gen::inRange(0, 100) / 10.0;
+  const double need_mps2 = braking_behind_mps2(leader, ahead, ahead_accel_mps2);
+  RC_PRE(need_mps2 > 0.05 && need_mps2 < 1e3);
+  const double to_mps = ahead_accel_mps2 < -kLeaderBrakingMps2 ? 0.0 : ahead.speed_mps;
+  const Track a = leader_track(ahead, ahead_accel_mps2);
+  const auto least_room_m = [&](double brake_mps2) {
+    const SpeedRamp motion{leader.speed_mps, to_mps, 1.0, brake_mps2};
+    double least = std::numeric_limits<double>::infinity();
+    // Until both have stopped, or the one ahead has reached its speed.
+    const double until_s = leader.speed_mps / brake_mps2 + 1.0;
+    for (double time_s = 0.0; time_s <= until_s; time_s += 0.01)
+      least = std::min(least, a.x_at(time_s) - motion.distance_at_m(time_s) - ahead.length_m);
+    return least;
+  };
+  RC_ASSERT(least_room_m(need_mps2) >= kLeaderStandoffM - 1e-6);
+  RC_ASSERT(least_room_m(0.98 * need_mps2) < kLeaderStandoffM);
 }
 
 // Whatever the two vehicles' places, speeds and braking (the one ahead at least two car lengths

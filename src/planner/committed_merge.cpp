@@ -187,7 +187,9 @@ bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) 
 
 bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w) {
   const double progress = (w.ego.y_m - m.sigmoid.offset_m) / m.sigmoid.width_m;
-  return w.ego.x_m >= m.sigmoid.x_at_fraction_m(1.0 - kSigmoidEndFraction) || progress >= 1.0 - kSigmoidEndFraction;
+  const bool settled = progress >= kSettledFraction && std::abs(w.ego.yaw_rad) <= kSettledYawRad;
+  return (w.ego.x_m >= m.sigmoid.x_at_fraction_m(1.0 - kSigmoidEndFraction) && settled) ||
+         progress >= 1.0 - kSigmoidEndFraction;
 }
 
 std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m) {

@@ -49,6 +49,31 @@ TEST(CommittedMerge, AMergeBegunOnTheWayBackToTheCentreFollowsTheSigmoid) {
   EXPECT_LT(path.front().y_m, -3.4);
 }
 
+// A crawl merge's sharp sigmoid (kappa 0.468/m, its end at X = 58.3 m) is tracked up to 0.9 m
+// behind. Past its end the merge completes (and lane keeping takes the ego to the speed limit)
+// only once the ego is within a tenth of the lane change of the lane and turned along the road:
+// an ego accelerating from there still turned toward the lane overshot the lane centre.
+//
+//   Y = 0      ____________________  main lane centre
+//   Y = -0.3       ..-'' settled once |yaw| <= 0.05 rad
+//   Y = -0.9     .'      not settled: 0.74 of the lane change
+TEST(CommittedMerge, PastTheSigmoidsEndAMergeCompletesOnlyOnceTheEgoHasSettled) {
+  const CommittedMerge m = merge_from(-3.5, false, 0.468);
+  ASSERT_LT(m.sigmoid.x_at_fraction_m(1.0 - kSigmoidEndFraction), 58.5);
+  WorldSnapshot w;
+  const auto complete_at = [&](double x_m, double y_m, double yaw_rad) {
+    w.ego.x_m = x_m;
+    w.ego.y_m = y_m;
+    w.ego.yaw_rad = yaw_rad;
+    return merge_complete(m, w);
+  };
+  EXPECT_FALSE(complete_at(62.0, -0.9, 0.2));
+  EXPECT_FALSE(complete_at(62.0, -0.3, 0.17));
+  EXPECT_TRUE(complete_at(62.0, -0.3, 0.02));
+  EXPECT_FALSE(complete_at(55.0, -0.3, 0.02));  // before the end: by lateral progress only
+  EXPECT_TRUE(complete_at(55.0, -0.05, 0.1));
+}
+
 RC_GTEST_PROP(CommittedMerge, APathFromAHoldOnlyEverMovesTowardTheMainLane, ()) {
   const double start_y_m = -3.5 + *rc::gen::inRange(0, 175) / 100.0;  // up to the lane line
   const double kappa_per_m = *rc::gen::inRange(2, 50) / 100.0;

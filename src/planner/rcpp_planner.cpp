@@ -20,6 +20,9 @@ constexpr double kDeadlineTieS = 1e-9;
 // After an abort the ego holds the side lane this long before it plans a new merge: re-planning
 // at once, every cycle, against a leader that keeps braking would weave (docs/planner.md).
 constexpr double kMergeRetryAfterAbortS = 1.0;
+// Half the judge's default merge start offset (rules.merge_start_offset_m): an ego that moved less
+// toward the lane has begun no attempt the judge sees.
+constexpr double kUnmovedAbortM = 0.05;
 constexpr double kLongerMergeEveryS = 0.5;
 // A committed merge whose lateral move has not begun is replaced by one whose sigmoid starts at
 // least kSoonerStartM nearer (the search runs every kSoonerMergeEveryS while the ego waits).
@@ -220,7 +223,14 @@ std::string RcppPlanner::advance_phase(const WorldSnapshot& w) {
   if (!merge_should_abort(merging->merge, w)) return "";
   InSideLane side;
   side.lateral = lateral_after_abort(w);
-  side.no_merge_before_s = w.time_s + kMergeRetryAfterAbortS;
+  // A Definition 1 merge aborted before the ego moved toward the lane leaves nothing to weave: it
+  // may plan again at once. (Most such aborts come on the second cycle, when the other vehicles'
+  // accelerations are first seen; a hold then let the gap the rule offers go, `progress`.) After
+  // a cooperative merge the hold stays: asking a partner that has just broken its acceptance again
+  // at once put the ego in its lane without the right of way.
+  const CommittedMerge& aborted = merging->merge;
+  const bool unmoved = aborted.decision.mode == DecisionMode::kDef1Merge && w.ego.y_m - aborted.start_y_m <= kUnmovedAbortM;
+  side.no_merge_before_s = unmoved ? w.time_s : w.time_s + kMergeRetryAfterAbortS;
   phase_ = std::move(side);
   return "merge aborted (P_c bounds crossed or lane occupied at the predicted positions); ";
 }

@@ -5,6 +5,7 @@
 // own bounds. Also: planner determinism, and planner-level properties on random scenarios.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -288,12 +289,18 @@ TEST(PlannerHarness, RcppsPhasesRunFromTheSideLaneThroughTheMergeIntoTheMainLane
 }
 
 // An abort: the ego decides to merge behind vehicle 1; a cycle later vehicle 1 brakes at its
-// b_max, its P_c bound crosses while the ego has barely moved sideways and can still stop, so
-// the ego is back in the side lane, holding it for a second before it plans again.
+// b_max and its P_c bound crosses while the ego can still stop, so the ego is back in the side
+// lane. Having moved toward the lane, it holds the side lane for a second before it plans again
+// (re-planning at once against a leader that keeps braking would weave); not having moved, it
+// plans again at once: there is nothing to weave, and a hold would let the gap go.
 //
 //   main lane          [1] 25 m/s --> brakes at 8 m/s2
 //   side lane  [ego] 25 m/s                                  (end 300 m)
-TEST(PlannerHarness, AnAbortReturnsRcppToTheSideLaneAndHoldsItBeforeANewMerge) {
+struct AbortAfterOneCycle {
+  PlanOutput next;
+  std::optional<InSideLane> side;
+};
+AbortAfterOneCycle abort_after_one_cycle(double moved_toward_lane_m) {
   Scenario s;
   s.road.side_lane_end_x_m = 300.0;
   s.ego.x_m = 100.0;
@@ -306,20 +313,34 @@ TEST(PlannerHarness, AnAbortReturnsRcppToTheSideLaneAndHoldsItBeforeANewMerge) {
   RcppPlanner planner(false);
   WorldSnapshot w = initial_snapshot(s);
   const PlanOutput first = planner.plan(w);
-  ASSERT_EQ(first.mode, "def1_merge") << first.reason;
-  ASSERT_TRUE(std::holds_alternative<Merging>(planner.phase()));
+  EXPECT_EQ(first.mode, "def1_merge") << first.reason;
+  EXPECT_TRUE(std::holds_alternative<Merging>(planner.phase()));
   const double dt = s.params.sim.planner_cycle_s;
   w.time_s = dt;
   w.ego.x_m += w.ego.vx_mps * dt;
+  w.ego.y_m += moved_toward_lane_m;
   w.others[0].state.x_m += w.others[0].state.vx_mps * dt;
   w.others[0].state.accel_mps2 = -leader.limits.brake_max_mps2;
-  const PlanOutput next = planner.plan(w);
-  const auto* side = std::get_if<InSideLane>(&planner.phase());
-  ASSERT_NE(side, nullptr) << next.reason;
-  EXPECT_EQ(next.mode, "def1_halt");
-  EXPECT_EQ(next.reason.rfind("merge aborted", 0), 0u) << next.reason;
-  EXPECT_DOUBLE_EQ(side->no_merge_before_s, dt + 1.0);
-  EXPECT_FALSE(side->pending);
+  AbortAfterOneCycle out{planner.plan(w), std::nullopt};
+  if (const auto* side = std::get_if<InSideLane>(&planner.phase())) out.side = *side;
+  return out;
+}
+
+TEST(PlannerHarness, AnAbortAfterMovingTowardTheLaneHoldsTheSideLaneBeforeANewMerge) {
+  const AbortAfterOneCycle r = abort_after_one_cycle(0.1);
+  ASSERT_TRUE(r.side) << r.next.reason;
+  EXPECT_EQ(r.next.mode, "def1_halt");
+  EXPECT_EQ(r.next.reason.rfind("merge aborted", 0), 0u) << r.next.reason;
+  EXPECT_DOUBLE_EQ(r.side->no_merge_before_s, 0.1 + 1.0);
+  EXPECT_FALSE(r.side->pending);
+}
+
+TEST(PlannerHarness, AnAbortBeforeMovingTowardTheLanePlansAgainAtOnce) {
+  const AbortAfterOneCycle r = abort_after_one_cycle(0.0);
+  ASSERT_TRUE(r.side) << r.next.reason;
+  EXPECT_EQ(r.next.reason.rfind("merge aborted", 0), 0u) << r.next.reason;
+  EXPECT_DOUBLE_EQ(r.side->no_merge_before_s, 0.1);
+  EXPECT_EQ(r.next.reason.find("holding the side lane after an aborted merge"), std::string::npos) << r.next.reason;
 }
 
 // The ego overtakes vehicles 2 (braking) and 3 (stopped) in the side lane and merges ahead of

@@ -36,7 +36,7 @@ struct CommittedMerge {
 
 // The ego has reached the sigmoid's end: by lateral progress, or by X once within
 // 1 - kSettledFraction of the lane change of its end. Lane keeping then takes the ego to the speed
-// limit; a crawl merge's sharp sigmoid is tracked up to 0.8 m behind at its end, and an ego
+// limit; a crawl merge's sharp sigmoid is tracked up to 0.9 m behind at its end, and an ego
 // accelerating from there, still turned toward the lane, overshot the lane centre and failed
 // smoothness_oscillation (a campaign finding), so until it has settled it keeps the merge's speed.
 inline constexpr double kSettledFraction = 0.9;

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/input_error.h"
+#include "recording/reference_line.h"
 
 namespace mg {
 namespace {
@@ -62,6 +63,8 @@ std::vector<Point2> read_bound(const Node& bound) {
   int i = 0;
   for (const XmlElement* p : bound.e.all("point")) pts.push_back(read_point({*p, bound.path + "/point " + std::to_string(i++), bound.source}));
   if (pts.size() < 2) bound.fail("a bound needs at least 2 points, got " + std::to_string(pts.size()));
+  // The road is rebuilt by resampling every bound at a spacing in proportion to its length.
+  if (!(polyline_length_m(pts) > 0.0)) bound.fail("a bound of zero length (all its points coincide)");
   return pts;
 }
 

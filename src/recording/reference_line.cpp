@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/demand.h"
+
 namespace mg {
 namespace {
 
@@ -41,6 +43,9 @@ double polyline_length_m(const std::vector<Point2>& pts) {
 
 std::vector<Point2> resample_polyline(const std::vector<Point2>& pts, double spacing_m) {
   const double total = polyline_length_m(pts);
+  // The reader bounds coordinates and refuses bounds of zero length; a spacing of 0 or a count
+  // beyond int would make the cast below undefined.
+  MG_DEMAND(spacing_m > 0.0 && total / spacing_m < 1e9);
   // The small allowance keeps an exact multiple from rounding up to one sample more.
   const int n = std::max(2, static_cast<int>(std::ceil(total / spacing_m - 1e-9)) + 1);
   std::vector<Point2> out;

@@ -150,7 +150,15 @@ TEST(AuditCommand, RefusesEveryHostileRecordingInOneLineWritingNothing) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << name << ": " << r.err;
     EXPECT_FALSE(fs::exists(out)) << name << ": something was written";
   }
-  EXPECT_EQ(hostile, 12);  // with not_utf8.xml: a benchmark id that is not UTF-8
+  EXPECT_EQ(hostile, 13);  // with point_bound.xml: a lanelet bound whose points coincide
+}
+
+// A bound of zero length left the road's resampling to divide by zero (the XML fuzz target's
+// finding: undefined behaviour converting NaN to int); it is refused at load, naming the bound.
+TEST(AuditCommand, ALaneletBoundWhosePointsCoincideIsRefusedNamingIt) {
+  const CliResult r = run_cli({"audit", (kHostile / "point_bound.xml").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("lanelet 3/rightBound: a bound of zero length"), std::string::npos) << r.err;
 }
 
 TEST(AuditCommand, ARoadWithNoLaneJoinHasNothingToAudit) {

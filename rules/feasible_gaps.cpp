@@ -83,7 +83,6 @@ double witness_peak_lat_accel_mps2(double y0_m, double rho_s, double c) {
   return std::abs(y0_m) * c * c / (6.0 * std::sqrt(3.0) * CutLogistic{c}.span() * rho_s * rho_s);
 }
 
-
 // The witness's speed tau_s in: from v0 toward ve at the ego's declared a_accel^max / a_brake^min.
 double witness_speed_mps(const Limits& el, double v0, double ve, double tau_s) {
   return ve >= v0 ? std::min(ve, v0 + el.accel_max_mps2 * tau_s) : std::max(ve, v0 - el.brake_min_mps2 * tau_s);

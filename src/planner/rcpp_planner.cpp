@@ -65,12 +65,19 @@ RcppCycle keep_main_lane(const WorldSnapshot& w) {
 }
 
 // Definition 1.3's halt: where the ego stops, the speed cap that stops it there, and the braking
-// it may use (beyond b_min, up to b_max, once b_min no longer stops its front before the end).
+// it may use: beyond b_min, up to b_max, once b_min no longer stops its front before the end
+// (brake_limit_mps2); the halt itself also once b_min no longer stops it at the halt point, with
+// kHaltBrakeSlack for the speed controller's lag (halt_brake_mps2). The halt point leaves the
+// room a merge from standstill needs; an ego braking at b_min from speed came to rest metres
+// past it, too near the end to merge from there, and waited while the gap behind it stayed open
+// (`progress`; a campaign finding). An ego waiting for a reply keeps to its request's profile.
+constexpr double kHaltBrakeSlack = 1.1;
 struct HaltProfile {
   double halt_x_m = 0.0;
   double halt_cap_mps = 0.0;
   double needed_mps2 = 0.0;
   double brake_limit_mps2 = 0.0;
+  double halt_brake_mps2 = 0.0;
 };
 
 HaltProfile halt_profile(const WorldSnapshot& w) {
@@ -83,6 +90,9 @@ HaltProfile halt_profile(const WorldSnapshot& w) {
   h.needed_mps2 = room_m > 0.0 ? v_e * v_e / (2.0 * room_m) : s.ego.limits.brake_max_mps2;
   h.brake_limit_mps2 =
       h.needed_mps2 > 0.8 * s.ego.limits.brake_min_mps2 ? s.ego.limits.brake_max_mps2 : s.ego.limits.brake_min_mps2;
+  const double to_halt_m = h.halt_x_m - w.ego.x_m;
+  const double to_halt_mps2 = to_halt_m > 0.0 ? kHaltBrakeSlack * v_e * v_e / (2.0 * to_halt_m) : 0.0;
+  h.halt_brake_mps2 = std::max(h.brake_limit_mps2, std::min(s.ego.limits.brake_max_mps2, to_halt_mps2));
   return h;
 }
 
@@ -137,7 +147,7 @@ void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, 
           RcppCycle& out) {
   const double v_e = ego_speed_mps(w);
   out.target_speed_mps = std::min(std::max(v_e, kStandstillMergeSpeedMps), h.halt_cap_mps);
-  out.accel_limit_mps2 = std::max(h.brake_limit_mps2, accel_limit_toward(*w.setup, v_e, out.target_speed_mps));
+  out.accel_limit_mps2 = std::max(h.halt_brake_mps2, accel_limit_toward(*w.setup, v_e, out.target_speed_mps));
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kDef1Halt;
   out.decision.reason = note + "Def. 1.3: no feasible gap (" + why + "); braking to halt by x = " +

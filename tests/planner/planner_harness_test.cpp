@@ -20,6 +20,7 @@
 #include "planner/merge_path.h"
 #include "planner/planner.h"
 #include "planner/rcpp_planner.h"
+#include "planner/rcpp_world.h"
 
 #include "rcpp_decision_of.h"
 
@@ -212,6 +213,26 @@ TEST(PlannerHarness, Definition13HaltsThenMergesFromStandstill) {
   for (std::size_t k = 0; k < r.egos.size(); ++k)
     halted = halted || (decision_of(r.outputs[k]).mode == DecisionMode::kDef1Halt && r.egos[k].vx_mps < 0.05);
   EXPECT_TRUE(halted);
+  EXPECT_TRUE(r.merged);
+  EXPECT_FALSE(r.left_road);
+}
+
+// The same platoon with the ego 15 m/s fast, 0.8 of b_min's stopping distance before its halt
+// point: braking at b_min it would come to rest 7 m past it, short of the room a merge from
+// standstill needs. It brakes harder (within b_max), rests at the halt point and merges from there.
+TEST(PlannerHarness, AnEgoTooFastToHaltAtTheHaltPointWithBMinBrakesHarderToHaltThere) {
+  Scenario s = load("no_feasible_gap_halt");
+  const double halt_x_m =
+      halt_point_x_m(s.road, s.params.planner.halt_margin_m, s.ego.size.length_m, standstill_merge_length_m(s));
+  const double v0_mps = s.ego.speed_mps;
+  s.ego.x_m = halt_x_m - 0.8 * v0_mps * v0_mps / (2.0 * s.ego.limits.brake_min_mps2);
+  const Rollout r = roll_out(s, "rcpp", s.params.sim.horizon_s);
+  std::optional<double> rest_x_m;
+  for (const VehicleState& ego : r.egos)
+    if (!rest_x_m && ego.vx_mps < 0.05) rest_x_m = ego.x_m;
+  ASSERT_TRUE(rest_x_m.has_value());
+  EXPECT_LE(*rest_x_m, halt_x_m + 0.1);
+  EXPECT_GT(*rest_x_m, halt_x_m - 2.0);
   EXPECT_TRUE(r.merged);
   EXPECT_FALSE(r.left_road);
 }

@@ -132,7 +132,7 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
     const bool near_bound = pc < b.pc_min_m + pc_margin || pc > b.pc_max_m - pc_margin;
     const double def1_cost = p.cost_time_weight * f.half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                              p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
-                             (near_bound ? kNearPcBoundPenalty : 0.0);
+                             (near_bound ? kNearPcBoundPenalty : 0.0) + sharp_sigmoid_penalty(s, ramp, kappa);
     // Not below the best so far even with the field at its floor: not chosen (a tie keeps the
     // first), so neither its occupancy nor its field is evaluated.
     if (def1_cost + field_floor >= best_seen) return std::numeric_limits<double>::infinity();

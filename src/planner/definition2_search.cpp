@@ -164,7 +164,8 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
                          OccupancyInstants::over(c.comm_threshold_s + c.merge_duration_s), tracks, 0.0))
       return std::numeric_limits<double>::infinity();
     if (!field) field = field_timeline(w, 2.0 * x.t_c_s, partner_x);
-    return base + field_cost(p, *field, sig, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); });
+    return base + sharp_sigmoid_penalty(s, ramp, kappa) +
+           field_cost(p, *field, sig, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); });
   };
   const auto choice = choose_sigmoid({pc}, kappa_range, p.kappa_candidates, cost);
   if (!choice) return std::nullopt;

@@ -28,6 +28,12 @@ double path_curvature_cap_per_m(const PlannerSetup& s) {
 
 double crawl_speed_mps(const PlannerSetup& s) { return kCrawlSpeedFraction * s.params.rules.sideslip_min_speed_mps; }
 
+double merge_curvature_cap_per_m(const PlannerSetup& s) {
+  const EgoDynamics& dyn = s.ego.dynamics;
+  return std::max(path_curvature_cap_per_m(s), std::min(std::tan(dyn.steer_max_rad) / (2.0 * dyn.wheelbase_m()),
+                                                        std::tan(kPathTrackerSideslipRad) / dyn.cg_to_rear_m));
+}
+
 double path_curvature_cap_per_m(const PlannerSetup& s, double top_speed_mps) {
   if (top_speed_mps > crawl_speed_mps(s)) return path_curvature_cap_per_m(s);
   const EgoDynamics& dyn = s.ego.dynamics;
@@ -48,6 +54,16 @@ double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps) {
                   std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s, top_speed_mps) / s.road.lane_width_m));
 }
 
+double kappa_sharpest_per_m(const PlannerSetup& s, double top_speed_mps) {
+  const double tracker_kappa = std::min(rcpp_params(s).kappa_max_per_m,
+                                        std::sqrt(6.0 * std::sqrt(3.0) * merge_curvature_cap_per_m(s) / s.road.lane_width_m));
+  return std::max(kappa_cap_per_m(s, top_speed_mps), tracker_kappa);
+}
+
+double sharp_sigmoid_penalty(const PlannerSetup& s, const SpeedRamp& ramp, double kappa_per_m) {
+  return kappa_per_m > kappa_cap_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2())) ? kSharpSigmoidPenalty : 0.0;
+}
+
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m) {
   const RcppParams p = rcpp_params(s);
@@ -58,7 +74,9 @@ KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m,
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
                               half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
-  const double kappa_cap = kappa_cap_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2()));
+  const double top_speed_mps = std::sqrt(ramp.top_speed_squared_m2ps2());
+  double kappa_cap = kappa_cap_per_m(s, top_speed_mps);
+  if (lo > kappa_cap) kappa_cap = kappa_sharpest_per_m(s, top_speed_mps);
   if (lo > kappa_cap) return std::nullopt;
   // The search needs the margin's sign only: a flat sigmoid is comfortable by the bound alone (a
   // lower bound of the margin, then >= 0), without the speed profile.

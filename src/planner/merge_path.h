@@ -38,6 +38,11 @@ double side_exit_limit_x_m(const PlannerSetup& s, double speed_mps = 0.0);
 // peak curvature is W kappa^2/(6 sqrt 3), that caps kappa.
 inline constexpr double kPathSideslipMaxRad = 0.025;
 double path_curvature_cap_per_m(const PlannerSetup& s);
+// The sharpest curvature a merge may have: the envelope the simulator's path tracker steers in (a
+// kinematic sideslip of kPathTrackerSideslipRad with the ego's l_r; sim/path_tracker.h), within
+// half the steering ability (kappa_sharpest_per_m).
+inline constexpr double kPathTrackerSideslipRad = 0.035;
+double merge_curvature_cap_per_m(const PlannerSetup& s);
 // A crawl: a merge driven no faster than kCrawlSpeedFraction of the speed from which the judge
 // bounds the sideslip (rules.sideslip_min_speed_mps, public like the speed limit; docs/rules.md
 // `sideslip`). Below it the sideslip bound constrains no path, so a crawl's curvature is capped by
@@ -55,12 +60,26 @@ double path_curvature_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps);
 double kappa_cap_per_m(const PlannerSetup& s);
 double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps);
+// The sharpest kappa of a merge driven at most at top_speed_mps, used only where no sigmoid within
+// kappa_cap_per_m fits (kappa_range_for): the tracker's envelope (merge_curvature_cap_per_m), or
+// the crawl's cap if larger. The `progress` rule's witness merge turns in at the whole sideslip
+// bound (rules/feasible_gaps.h); within half of it RCPP let pass merges from low speed whose
+// turn-in or second half was a metre or two too short. Where the half bound fits it is kept, and
+// a sharper candidate pays sharp_sigmoid_penalty: tracked further behind, sharper sigmoids taken
+// for their lower cost put merges the re-check then aborted. The room the halt point leaves for a
+// merge from standstill keeps the half bound too.
+double kappa_sharpest_per_m(const PlannerSetup& s, double top_speed_mps);
+// What a candidate sigmoid sharper than kappa_cap_per_m of its ramp's top speed adds to its cost
+// (kSharpSigmoidPenalty, far above any candidate's cost; else 0), so that a search takes it only
+// when nothing within the cap is admissible.
+inline constexpr double kSharpSigmoidPenalty = 1e4;
+double sharp_sigmoid_penalty(const PlannerSetup& s, const SpeedRamp& ramp, double kappa_per_m);
 
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
 // start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak
 // lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
 // bound, and lies in the configured [kappa_min, kappa_max] and under the curvature cap of the
-// ramp's top speed (kappa_cap_per_m).
+// ramp's top speed (kappa_cap_per_m; where the other bounds lie above it, kappa_sharpest_per_m).
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m);
 

@@ -6,6 +6,7 @@
 
 #include "core/scenario.h"
 #include "core/vehicle_state.h"
+#include "planner/merge_path.h"
 #include "planner/planner.h"
 
 namespace mg {
@@ -20,7 +21,8 @@ struct PathTrackerGains {
   // sideslip atan(l_r tan(delta) / L) equals this, below the rules' sideslip bound (0.05 rad).
   // Without it, Stanley's cross-track term at low speed (atan(k e / (k_soft + v))) steers up to
   // ~0.1 rad for a 0.3 m offset, i.e. a kinematic sideslip of ~0.06 rad right after a start.
-  double sideslip_max_rad = 0.035;
+  // RCPP draws its merges within this envelope, so it is declared with them.
+  double sideslip_max_rad = kPathTrackerSideslipRad;
 };
 
 // Signed lateral error of a point against a polyline (positive: point left of the path) and the

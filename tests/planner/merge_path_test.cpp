@@ -318,6 +318,36 @@ TEST(KappaCap, ACrawlIsCappedByHalfTheSteeringAbilityAlone) {
   EXPECT_NEAR(kappa_cap_per_m(s, 10.0), 0.215, 1e-3);
 }
 
+// The sharpest merge curves as far as the path tracker steers (a kinematic sideslip of 0.035 rad
+// with the ego's l_r: tan(0.035)/1.6 = 0.0219/m, kappa 0.255/m), never beyond half the steering
+// ability, and never less than the cap; at a crawl the crawl's cap.
+TEST(KappaCap, TheSharpestMergeCurvesWithinThePathTrackersEnvelope) {
+  Scenario s = road_only();
+  EXPECT_NEAR(merge_curvature_cap_per_m(s), std::tan(kPathTrackerSideslipRad) / s.ego.dynamics.cg_to_rear_m, 1e-12);
+  EXPECT_NEAR(kappa_sharpest_per_m(s, 10.0), 0.255, 1e-3);
+  EXPECT_DOUBLE_EQ(kappa_sharpest_per_m(s, crawl_speed_mps(s)), kappa_cap_per_m(s, crawl_speed_mps(s)));
+  s.ego.dynamics.steer_max_rad = 0.05;  // half the steering binds
+  EXPECT_NEAR(merge_curvature_cap_per_m(s), std::tan(0.05) / (2.0 * s.ego.dynamics.wheelbase_m()), 1e-12);
+  EXPECT_DOUBLE_EQ(kappa_sharpest_per_m(s, 10.0), kappa_cap_per_m(s, 10.0));
+}
+
+// An ego at rest with 16 m to P_c (the defaults' ramp reaches it in 4 s) needs kappa >= ln(49)/16
+// = 0.243/m: above the cap (0.215/m), within the tracker's envelope (0.255/m). The range then
+// reaches up to the envelope; where the cap fits, the range ends at it.
+TEST(KappaCap, OnlyAMergeThatDoesNotFitUnderTheCapMayCurveUpToTheTrackersEnvelope) {
+  Scenario s = road_only();
+  s.road.side_lane_end_x_m = 200.0;
+  const SpeedRamp from_rest{0.0, 8.0, 2.0, 4.0};
+  const KappaRange tight = kappa_range_for(s, 16.0, 0.0, 40.0, from_rest, 0.0);
+  ASSERT_TRUE(tight.has_value());
+  EXPECT_NEAR(tight->first, std::log(49.0) / 16.0, 1e-9);
+  EXPECT_GT(tight->first, kappa_cap_per_m(s, 8.0));
+  EXPECT_LE(tight->second, kappa_sharpest_per_m(s, 8.0));
+  const KappaRange roomy = kappa_range_for(s, 30.0, 0.0, 70.0, SpeedRamp{8.0, 8.0, 2.0, 4.0}, 0.0);
+  ASSERT_TRUE(roomy.has_value());
+  EXPECT_LE(roomy->second, kappa_cap_per_m(s, 8.0));
+}
+
 // An ego at rest 22 m before the side lane's end (its front 19.6 m): a sigmoid with P_c 8 m ahead,
 // complete 17 m ahead, needs kappa >= ln(49)/8 = 0.486/m. Driven at a crawl it is admissible; at
 // 5 m/s the sideslip cap (0.215/m) rules it out.

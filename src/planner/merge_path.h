@@ -70,9 +70,10 @@ double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 // merge from standstill keeps the half bound too.
 double kappa_sharpest_per_m(const PlannerSetup& s, double top_speed_mps);
 // What a candidate sigmoid sharper than kappa_cap_per_m of its ramp's top speed adds to its cost
-// (kSharpSigmoidPenalty, far above any candidate's cost; else 0), so that a search takes it only
-// when nothing within the cap is admissible.
-inline constexpr double kSharpSigmoidPenalty = 1e4;
+// (kSharpSigmoidPenalty, far above any candidate's cost, and above the Definition 1 search's
+// penalty for a P_c near its bound; else 0), so that a search takes it only when nothing within
+// the cap is admissible, not even near a P_c bound.
+inline constexpr double kSharpSigmoidPenalty = 1e5;
 double sharp_sigmoid_penalty(const PlannerSetup& s, const SpeedRamp& ramp, double kappa_per_m);
 
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at

@@ -218,7 +218,7 @@ TEST(PlannerHarness, Definition13HaltsThenMergesFromStandstill) {
 }
 
 // The same platoon with the ego 15 m/s fast, 0.8 of b_min's stopping distance before its halt
-// point: braking at b_min it would come to rest 7 m past it, short of the room a merge from
+// point: braking at b_min it comes to rest about 5 m past it, short of the room a merge from
 // standstill needs. It brakes harder (within b_max), rests at the halt point and merges from there.
 TEST(PlannerHarness, AnEgoTooFastToHaltAtTheHaltPointWithBMinBrakesHarderToHaltThere) {
   Scenario s = load("no_feasible_gap_halt");

@@ -120,19 +120,21 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
   const double pc_margin = std::min(kPcMarginM, 0.25 * (b.pc_max_m - b.pc_min_m));
   OccupancyMemo memo;  // shared by the kappa candidates of one v_e* (choose_sigmoid's inner loop)
   double memo_v = std::numeric_limits<double>::quiet_NaN();
+  double kappa_cap = 0.0;  // kappa_cap_per_m of memo_v's ramp
   double best_seen = std::numeric_limits<double>::infinity();  // the lowest cost choose_sigmoid holds
   const double field_floor = field_cost_floor(p);
   const auto cost = [&](double v, double kappa) {
+    const SpeedRamp ramp = ctx.ramp_to(v);
     if (v != memo_v) {
       memo.forget_ramp();
       memo_v = v;
+      kappa_cap = kappa_cap_per_m(s, ramp);
     }
-    const SpeedRamp ramp = ctx.ramp_to(v);
     const double pc = b.pc_at(f, v);
     const bool near_bound = pc < b.pc_min_m + pc_margin || pc > b.pc_max_m - pc_margin;
     const double def1_cost = p.cost_time_weight * f.half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                              p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
-                             (near_bound ? kNearPcBoundPenalty : 0.0) + sharp_sigmoid_penalty(s, ramp, kappa);
+                             (near_bound ? kNearPcBoundPenalty : 0.0) + sharp_sigmoid_penalty(kappa, kappa_cap);
     // Not below the best so far even with the field at its floor: not chosen (a tie keeps the
     // first), so neither its occupancy nor its field is evaluated.
     if (def1_cost + field_floor >= best_seen) return std::numeric_limits<double>::infinity();

@@ -157,6 +157,7 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
     return v.id == o.id ? o.x_m + responder_ramp.distance_at_m(t) : constant_speed_x(v, t);
   };
   std::optional<FieldTimeline> field;  // built when the first candidate needs it
+  const double kappa_cap = kappa_cap_per_m(s, ramp);
   const auto cost = [&](double pc_m, double kappa) {
     const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
     // No planning buffer: the responder's cooperative profile is built to leave exactly D*_lon.
@@ -164,7 +165,7 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
                          OccupancyInstants::over(c.comm_threshold_s + c.merge_duration_s), tracks, 0.0))
       return std::numeric_limits<double>::infinity();
     if (!field) field = field_timeline(w, 2.0 * x.t_c_s, partner_x);
-    return base + sharp_sigmoid_penalty(s, ramp, kappa) +
+    return base + sharp_sigmoid_penalty(kappa, kappa_cap) +
            field_cost(p, *field, sig, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); });
   };
   const auto choice = choose_sigmoid({pc}, kappa_range, p.kappa_candidates, cost);

@@ -44,24 +44,28 @@ double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps) {
   return d.cg_to_rear_m - d.mass_kg * d.cg_to_front_m * speed_mps * speed_mps / (d.cornering_rear_npr * d.wheelbase_m());
 }
 
-double kappa_cap_per_m(const PlannerSetup& s) {
-  return std::min(rcpp_params(s).kappa_max_per_m,
-                  std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s) / s.road.lane_width_m));
+namespace {
+
+// The steepest sigmoid whose peak curvature, W kappa^2 / (6 sqrt 3), stays within curvature_per_m,
+// and within the configured kappa_max.
+double kappa_within_curvature_per_m(const PlannerSetup& s, double curvature_per_m) {
+  return std::min(rcpp_params(s).kappa_max_per_m, std::sqrt(6.0 * std::sqrt(3.0) * curvature_per_m / s.road.lane_width_m));
 }
 
+}  // namespace
+
+double kappa_cap_per_m(const PlannerSetup& s) { return kappa_within_curvature_per_m(s, path_curvature_cap_per_m(s)); }
+
 double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps) {
-  return std::min(rcpp_params(s).kappa_max_per_m,
-                  std::sqrt(6.0 * std::sqrt(3.0) * path_curvature_cap_per_m(s, top_speed_mps) / s.road.lane_width_m));
+  return kappa_within_curvature_per_m(s, path_curvature_cap_per_m(s, top_speed_mps));
+}
+
+double kappa_cap_per_m(const PlannerSetup& s, const SpeedRamp& ramp) {
+  return kappa_cap_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2()));
 }
 
 double kappa_sharpest_per_m(const PlannerSetup& s, double top_speed_mps) {
-  const double tracker_kappa = std::min(rcpp_params(s).kappa_max_per_m,
-                                        std::sqrt(6.0 * std::sqrt(3.0) * merge_curvature_cap_per_m(s) / s.road.lane_width_m));
-  return std::max(kappa_cap_per_m(s, top_speed_mps), tracker_kappa);
-}
-
-double sharp_sigmoid_penalty(const PlannerSetup& s, const SpeedRamp& ramp, double kappa_per_m) {
-  return kappa_per_m > kappa_cap_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2())) ? kSharpSigmoidPenalty : 0.0;
+  return std::max(kappa_cap_per_m(s, top_speed_mps), kappa_within_curvature_per_m(s, merge_curvature_cap_per_m(s)));
 }
 
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
@@ -74,9 +78,8 @@ KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m,
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double lo = std::max({p.kappa_min_per_m, half_span_times_kappa() / before_m,
                               half_span_times_kappa() / after_m, ln_ratio(exit_fraction) / exit_room_m});
-  const double top_speed_mps = std::sqrt(ramp.top_speed_squared_m2ps2());
-  double kappa_cap = kappa_cap_per_m(s, top_speed_mps);
-  if (lo > kappa_cap) kappa_cap = kappa_sharpest_per_m(s, top_speed_mps);
+  double kappa_cap = kappa_cap_per_m(s, ramp);
+  if (lo > kappa_cap) kappa_cap = kappa_sharpest_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2()));
   if (lo > kappa_cap) return std::nullopt;
   // The search needs the margin's sign only: a flat sigmoid is comfortable by the bound alone (a
   // lower bound of the margin, then >= 0), without the speed profile.

@@ -60,6 +60,7 @@ double path_curvature_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 double steady_sideslip_per_curvature_m(const EgoDynamics& d, double speed_mps);
 double kappa_cap_per_m(const PlannerSetup& s);
 double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps);
+double kappa_cap_per_m(const PlannerSetup& s, const SpeedRamp& ramp);  // at the ramp's top speed
 // The sharpest kappa of a merge driven at most at top_speed_mps, used only where no sigmoid within
 // kappa_cap_per_m fits (kappa_range_for): the tracker's envelope (merge_curvature_cap_per_m), or
 // the crawl's cap if larger. The `progress` rule's witness merge turns in at the whole sideslip
@@ -69,12 +70,14 @@ double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 // for their lower cost put merges the re-check then aborted. The room the halt point leaves for a
 // merge from standstill keeps the half bound too.
 double kappa_sharpest_per_m(const PlannerSetup& s, double top_speed_mps);
-// What a candidate sigmoid sharper than kappa_cap_per_m of its ramp's top speed adds to its cost
+// What a candidate sigmoid sharper than kappa_cap_per_m of its ramp adds to its cost
 // (kSharpSigmoidPenalty, far above any candidate's cost, and above the Definition 1 search's
 // penalty for a P_c near its bound; else 0), so that a search takes it only when nothing within
-// the cap is admissible, not even near a P_c bound.
+// the cap is admissible, not even near a P_c bound. The cap is computed once per ramp.
 inline constexpr double kSharpSigmoidPenalty = 1e5;
-double sharp_sigmoid_penalty(const PlannerSetup& s, const SpeedRamp& ramp, double kappa_per_m);
+inline double sharp_sigmoid_penalty(double kappa_per_m, double kappa_cap_per_m) {
+  return kappa_per_m > kappa_cap_per_m ? kSharpSigmoidPenalty : 0.0;
+}
 
 // Admissible kappa for a sigmoid with midpoint pc_m: starts at the ego (within the end fraction at
 // start_x_m), completes by complete_by_x_m, leaves the side lane before its end, keeps the peak

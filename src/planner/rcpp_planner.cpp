@@ -24,6 +24,9 @@ constexpr double kMergeRetryAfterAbortS = 1.0;
 // toward the lane has begun no attempt the judge sees.
 constexpr double kUnmovedAbortM = 0.05;
 constexpr double kLongerMergeEveryS = 0.5;
+// Below this speed a merge is not deferred for the way back to the side lane's centre
+// (back_to_centre): the ego hardly moves sideways any more.
+constexpr double kBackToCentreMinSpeedMps = 1.0;
 // A committed merge whose lateral move has not begun is replaced by one whose sigmoid starts at
 // least kSoonerStartM nearer (the search runs every kSoonerMergeEveryS while the ego waits).
 constexpr double kSoonerMergeEveryS = 0.5;
@@ -154,6 +157,20 @@ void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, 
                         fixed_text(h.halt_x_m, 1) + " m and re-evaluating";
 }
 
+// A merge the smoothness rule could no longer afford to abort (planner/reversal_ledger.h) waits
+// while the ego goes back to its side-lane centre, as after an abort, with the halt's speed
+// profile; a lateral hold off the centre is given up for the way back.
+RcppCycle back_to_centre(InSideLane& side, const WorldSnapshot& w, const HaltProfile& h, const ReversalLedger& ledger,
+                         const std::string& note) {
+  side.lateral.hold_y_m.reset();
+  side.lateral.hold_pending = false;
+  RcppCycle out;
+  out.path = side_lane_path(side.lateral, w);
+  halt(w, h, "", note, out);
+  out.decision.reason = note + reversal_deferral_reason(ledger);
+  return out;
+}
+
 // Def. 2.2A binds the ego to braking at most b_min for rho_c after a Def. 2.2 request (ineq. (4)
 // counts on it), also after it gave up waiting for the answer (a Def. 1 merge decided meanwhile,
 // then aborted): the responder may still accept and speed up. A hold or halt in that window
@@ -172,6 +189,7 @@ void keep_request_braking(const WorldSnapshot& w, double until_s, RcppCycle& out
 
 PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
   const WorldSnapshot w = braking_.apply(observed);
+  reversals_.observe(w);
   const std::string note = advance_phase(w);
   RcppCycle out;
   if (auto* side = std::get_if<InSideLane>(&phase_)) {
@@ -304,6 +322,11 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
   if (auto accepted = read_reply(side, w, note)) return {{}, std::move(accepted)};
   if (w.time_s < side.no_merge_before_s)  // just aborted: back toward the side lane centre first
     return {hold_after_abort(side, w, h, side_lane_path(side.lateral, w), note), std::nullopt};
+  // An open request keeps its own profile (wait_for_reply); its acceptance is the merge it asked
+  // for. An ego too slow to steer back to its centre is not held: it would wait there for ever
+  // while the gap stayed open (progress).
+  if (!side.pending && ego_speed_mps(w) >= kBackToCentreMinSpeedMps && !reversals_.can_afford_merge())
+    return {back_to_centre(side, w, h, reversals_, note), std::nullopt};
   std::string why;
   if (auto plan = plan_definition1(w, MergeDurations::kRhoM, &why)) {
     side.pending.reset();

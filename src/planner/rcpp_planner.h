@@ -17,6 +17,7 @@
 #include "planner/committed_merge.h"
 #include "planner/definition2_search.h"
 #include "planner/planner.h"
+#include "planner/reversal_ledger.h"
 #include "planner/side_lane_path.h"
 
 namespace mg {
@@ -71,6 +72,7 @@ class RcppPlanner : public Planner {
   // rho_c after it, whether or not the ego still waits for its answer); -1 once refused.
   double ego_behind_request_until_s_ = -1.0;
   BrakingMemory braking_;
+  ReversalLedger reversals_;  // starts a merge only while an abort of it stays within the smoothness rule
 };
 
 }  // namespace mg

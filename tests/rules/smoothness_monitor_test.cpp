@@ -4,7 +4,9 @@
 #include <numbers>
 
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
+#include "planner/reversal_ledger.h"
 #include "trace_builder.h"
 
 namespace mg {
@@ -92,6 +94,43 @@ TEST(SmoothnessMonitor, TurningBackByMoreThanTheReversalHysteresisIsAnAbort) {
   const auto j = test::judge(s, t);
   EXPECT_EQ(j->phases.count(MergePhaseKind::kAbort), 1);
   EXPECT_EQ(j->phases.count(MergePhaseKind::kStart), 2);
+}
+
+// RCPP keeps its weaving within this rule by counting its own approaches and reversals
+// (planner/reversal_ledger.h) from what it observes every cycle. On any lateral motion observed at
+// the planner's cycle, the ledger's count is the rule's: allowance minus changes is the margin.
+RC_GTEST_PROP(SmoothnessMonitor, ThePlannersReversalLedgerCountsAsTheRuleDoes, ()) {
+  // (vy / 0.05 m/s, steps of 0.1 s): a departure (a start) first, then anything.
+  auto segments = *rc::gen::container<std::vector<std::pair<int, int>>>(
+      *rc::gen::inRange<std::size_t>(0, 12), rc::gen::pair(rc::gen::inRange(-12, 13), rc::gen::inRange(1, 20)));
+  segments.insert(segments.begin(), *rc::gen::pair(rc::gen::inRange(4, 13), rc::gen::inRange(6, 20)));
+  const Scenario s = base_scenario();
+  Trace t;
+  t.planner = "hand_built";
+  ReversalLedger ledger;
+  WorldSnapshot w;
+  w.setup = &s;
+  w.ego.y_m = s.ego.y_m;
+  w.ego.vx_mps = s.ego.speed_mps;
+  for (const auto& [vy_steps, n] : segments) {
+    for (int k = 0; k < n; ++k) {
+      w.ego.vy_mps = 0.05 * vy_steps;
+      ledger.observe(w);
+      t.steps.push_back(TraceStep{});
+      t.steps.back().time_s = w.time_s;
+      t.steps.back().ego = w.ego;
+      w.ego.x_m += w.ego.vx_mps * 0.1;
+      w.ego.y_m += w.ego.vy_mps * 0.1;
+      w.time_s += 0.1;
+    }
+  }
+  RC_PRE(t.steps.size() >= 2u);
+  // With no start the rule counts the weave from the first step, the ledger nothing (no merge).
+  RC_CLASSIFY(ledger.approaches() > 0, "with a start");
+  if (ledger.approaches() == 0) return;
+  const MonitorOutput out = test::run(monitor_smoothness_oscillation, s, t);
+  const int allowed = s.params.rules.max_lat_speed_sign_changes_per_merge * ledger.approaches();
+  RC_ASSERT(out.result.min_margin == static_cast<double>(allowed - ledger.changes()));
 }
 
 TEST(SmoothnessMonitor, SideslipMarginIsBoundMinusAbsoluteSideslip) {

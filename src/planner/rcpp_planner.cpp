@@ -113,19 +113,27 @@ RcppCycle hold_after_abort(const InSideLane& side, const WorldSnapshot& w, const
   return out;
 }
 
-// Waiting for the answer to an open request: the speed profile its P_c assumes.
+// A request's P_c assumes Def. 2's speed profile over rho_c (2.1: v_e held; 2.2: b_min down to
+// v_e - b_min rho_c). Whether the ego can keep it until deadline_s and still stop before the side
+// lane's end at b_min from where it then is (holding v_e, which 2.2's braking only shortens), with
+// rho_c of travel in hand.
+bool request_profile_can_halt(const WorldSnapshot& w, double deadline_s) {
+  const PlannerSetup& s = *w.setup;
+  const double v_e = ego_speed_mps(w);
+  const double at_deadline_x = w.ego.x_m + v_e * std::max(0.0, deadline_s - w.time_s);
+  const double room_after_m = s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - at_deadline_x -
+                              v_e * s.params.planner.comm_threshold_s;
+  return room_after_m > 0.0 && v_e * v_e / (2.0 * s.ego.limits.brake_min_mps2) < room_after_m;
+}
+
+// Waiting for the answer to an open request: the speed profile its P_c assumes. The comfortable
+// halt profile left a braking ego behind its own P_c, inside the partner's safe distance at the
+// midpoint, so it applies only once the profile could no longer be kept (request_profile_can_halt;
+// send_request sends no 2.1 request whose profile cannot be kept from the start).
 void wait_for_reply(const PendingRequest& pending, const WorldSnapshot& w, const HaltProfile& h, RcppCycle& out) {
   const PlannerSetup& s = *w.setup;
   const double v_e = ego_speed_mps(w);
-  // The request's P_c assumes Def. 2's speed profile over rho_c (2.1: v_e held; 2.2: b_min
-  // down to v_e - b_min rho_c). The comfortable halt profile left a braking ego behind its own
-  // P_c, inside the partner's safe distance at the midpoint, so it applies only once b_min could
-  // no longer stop the ego before the side lane's end from where the request's profile has it at
-  // the deadline.
-  const double at_deadline_x = w.ego.x_m + v_e * std::max(0.0, pending.deadline_s - w.time_s);
-  const double room_after_m = s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - at_deadline_x -
-                              v_e * s.params.planner.comm_threshold_s;
-  const bool profile_can_halt = room_after_m > 0.0 && v_e * v_e / (2.0 * s.ego.limits.brake_min_mps2) < room_after_m;
+  const bool profile_can_halt = request_profile_can_halt(w, pending.deadline_s);
   out.target_speed_mps = profile_can_halt ? pending.plan.ego_speed_after_mps
                                           : std::min(pending.plan.ego_speed_after_mps, h.halt_cap_mps);
   // Def. 2.2A: while its request is open the ego brakes at most b_min (ineq. (4) counts on
@@ -298,6 +306,12 @@ void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, RcppCyc
   if (side.pending || !cooperative_ || !w.setup->ego.v2v.capable) return;
   auto plan = plan_definition2(w, retry_after_s_);
   if (!plan) return;
+  // A 2.1 request (ego ahead, v_e held) whose profile the ego could not keep and still halt would
+  // have it brake while it waits, behind the P_c it asked for: such a merge ended inside the
+  // partner's safe distance at the midpoint (sigmoid_pc_bounds; a campaign finding). The ego halts
+  // instead. (A 2.2 request's profile brakes at b_min from the start.)
+  const double deadline_s = w.time_s + w.setup->params.planner.comm_threshold_s;
+  if (plan->vo.coop_case == CoopCase::kEgoAhead && !request_profile_can_halt(w, deadline_s)) return;
   V2vMessage req;
   req.type = MessageType::kRequest;
   req.from_id = 0;
@@ -310,7 +324,7 @@ void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, RcppCyc
   out.outbox.push_back(req);
   plan->decision.reason = note + plan->decision.reason;
   note.clear();
-  side.pending = PendingRequest{std::move(*plan), w.time_s + w.setup->params.planner.comm_threshold_s};
+  side.pending = PendingRequest{std::move(*plan), deadline_s};
   if (side.pending->plan.vo.coop_case == CoopCase::kEgoBehind) ego_behind_request_until_s_ = side.pending->deadline_s;
 }
 

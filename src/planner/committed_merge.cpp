@@ -191,9 +191,12 @@ bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w) {
          progress >= 1.0 - kSigmoidEndFraction;
 }
 
+double merge_path_y_m(const CommittedMerge& m, double x_m) {
+  return std::max(m.sigmoid.y_at_m(x_m), m.from_hold ? m.start_y_m : m.sigmoid.offset_m);
+}
+
 std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m) {
-  const double floor_y_m = m.from_hold ? m.start_y_m : m.sigmoid.offset_m;
-  return sample_path(x_from_m, x_to_m, step_m, [&](double x) { return std::max(m.sigmoid.y_at_m(x), floor_y_m); });
+  return sample_path(x_from_m, x_to_m, step_m, [&](double x) { return merge_path_y_m(m, x); });
 }
 
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {

@@ -56,6 +56,7 @@ bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
 // is); so for an ego that started off its centre toward the main lane. A merge begun on the way
 // back to the centre after an abort follows the sigmoid: that return also takes the ego away
 // from the main lane's vehicles.
+double merge_path_y_m(const CommittedMerge& m, double x_m);
 std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m);
 
 // This cycle's command along the merge.

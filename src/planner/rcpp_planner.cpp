@@ -43,6 +43,25 @@ CommittedMerge commit(const InSideLane& side, const WorldSnapshot& w, const Sigm
   return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m), keep_offset};
 }
 
+// Whether following m first takes the ego away from the main lane: its path at the ego's X lies
+// more than kTurnAwayM below it (a merge begun on the way back from an abort follows its sigmoid).
+constexpr double kTurnAwayM = 0.05;
+bool turns_away_first(const CommittedMerge& m, const WorldSnapshot& w) {
+  return merge_path_y_m(m, w.ego.x_m) < w.ego.y_m - kTurnAwayM;
+}
+
+// The merge a Definition 1 plan starts. An ego whose lateral speed last pointed toward the main
+// lane and whose new path lies below it keeps its offset instead (as after a hold): turning away
+// and back toward the lane would reverse its lateral speed twice (smoothness_oscillation; a
+// campaign finding), and the occupancy check already took the ego as no farther from the main
+// lane than it is.
+CommittedMerge start_def1_merge(const InSideLane& side, const WorldSnapshot& w, const Def1Plan& plan,
+                                const ReversalLedger& ledger) {
+  CommittedMerge m = commit(side, w, plan.sigmoid, plan.ve_star_mps, plan.decision);
+  if (ledger.last_moved_out() && turns_away_first(m, w)) m.from_hold = true;
+  return m;
+}
+
 RcppCycle keep_main_lane(const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
   const double lane_w = s.road.lane_width_m;
@@ -169,13 +188,13 @@ void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, 
 // while the ego goes back to its side-lane centre, as after an abort, with the halt's speed
 // profile; a lateral hold off the centre is given up for the way back.
 RcppCycle back_to_centre(InSideLane& side, const WorldSnapshot& w, const HaltProfile& h, const ReversalLedger& ledger,
-                         const std::string& note) {
+                         bool turns_away, const std::string& note) {
   side.lateral.hold_y_m.reset();
   side.lateral.hold_pending = false;
   RcppCycle out;
   out.path = side_lane_path(side.lateral, w);
   halt(w, h, "", note, out);
-  out.decision.reason = note + reversal_deferral_reason(ledger);
+  out.decision.reason = note + reversal_deferral_reason(ledger, turns_away);
   return out;
 }
 
@@ -328,6 +347,14 @@ void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, RcppCyc
   if (side.pending->plan.vo.coop_case == CoopCase::kEgoBehind) ego_behind_request_until_s_ = side.pending->deadline_s;
 }
 
+// The weaving budget (planner/reversal_ledger.h) defers a merge, its path first turning away from
+// the main lane or not. An open request keeps its own profile (wait_for_reply); its acceptance is
+// the merge it asked for. An ego too slow to steer back to its centre is not held: it would wait
+// there for ever while the gap stayed open (progress).
+bool RcppPlanner::defers_merge(const InSideLane& side, const WorldSnapshot& w, bool turns_away) const {
+  return !side.pending && ego_speed_mps(w) >= kBackToCentreMinSpeedMps && !reversals_.can_afford_merge(turns_away);
+}
+
 // The paper's order: an answer to an open request, Definition 1 at rho_m, a Definition 2
 // request, Definition 1 at the longer durations, and Definition 1.3's halt.
 RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, const WorldSnapshot& w) {
@@ -336,16 +363,15 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
   if (auto accepted = read_reply(side, w, note)) return {{}, std::move(accepted)};
   if (w.time_s < side.no_merge_before_s)  // just aborted: back toward the side lane centre first
     return {hold_after_abort(side, w, h, side_lane_path(side.lateral, w), note), std::nullopt};
-  // An open request keeps its own profile (wait_for_reply); its acceptance is the merge it asked
-  // for. An ego too slow to steer back to its centre is not held: it would wait there for ever
-  // while the gap stayed open (progress).
-  if (!side.pending && ego_speed_mps(w) >= kBackToCentreMinSpeedMps && !reversals_.can_afford_merge())
-    return {back_to_centre(side, w, h, reversals_, note), std::nullopt};
+  if (defers_merge(side, w, false)) return {back_to_centre(side, w, h, reversals_, false, note), std::nullopt};
   std::string why;
   if (auto plan = plan_definition1(w, MergeDurations::kRhoM, &why)) {
+    CommittedMerge merge = start_def1_merge(side, w, *plan, reversals_);
+    if (const bool away = turns_away_first(merge, w); defers_merge(side, w, away))
+      return {back_to_centre(side, w, h, reversals_, away, note), std::nullopt};
     side.pending.reset();
-    plan->decision.reason = note + plan->decision.reason;
-    return {{}, commit(side, w, plan->sigmoid, plan->ve_star_mps, plan->decision)};
+    merge.decision.reason = note + merge.decision.reason;
+    return {{}, std::move(merge)};
   }
   SideLaneStep step;
   step.out.path = side_lane_path(side.lateral, w);
@@ -355,8 +381,11 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
   if (!side.pending && w.time_s + 1e-9 >= side.next_longer_merge_s) {
     side.next_longer_merge_s = w.time_s + kLongerMergeEveryS;
     if (auto plan = plan_definition1(w, MergeDurations::kLonger, &why)) {
-      plan->decision.reason = note + plan->decision.reason;
-      return {{}, commit(side, w, plan->sigmoid, plan->ve_star_mps, plan->decision)};
+      CommittedMerge merge = start_def1_merge(side, w, *plan, reversals_);
+      if (const bool away = turns_away_first(merge, w); defers_merge(side, w, away))
+        return {back_to_centre(side, w, h, reversals_, away, note), std::nullopt};
+      merge.decision.reason = note + merge.decision.reason;
+      return {{}, std::move(merge)};
     }
   }
   if (side.pending)

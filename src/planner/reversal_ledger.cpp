@@ -39,16 +39,19 @@ int ReversalLedger::allowed_with_merge() const {
   return per_approach_ * std::max(approaches_then, 1);
 }
 
-bool ReversalLedger::can_afford_merge() const {
+bool ReversalLedger::can_afford_merge(bool turns_away_first) const {
   if (!detector_) return true;  // nothing observed yet
-  const int cost = (sign_ < 0 ? 1 : 0) + 1;
-  return changes_ + cost <= allowed_with_merge();
+  const int away = turns_away_first && sign_ > 0 ? 1 : 0;           // moving toward the lane, it turns away
+  const int toward = sign_ < 0 || turns_away_first ? 1 : 0;         // then toward the lane
+  return changes_ + away + toward + 1 <= allowed_with_merge();      // and back, should it abort
 }
 
-std::string reversal_deferral_reason(const ReversalLedger& ledger) {
+std::string reversal_deferral_reason(const ReversalLedger& ledger, bool turns_away_first) {
   return "merge deferred until the ego is back at its side-lane centre: " + std::to_string(ledger.changes()) +
-         " lateral-speed reversal(s) so far, and a merge started now and aborted would exceed the " +
-         std::to_string(ledger.allowed_with_merge()) + " allowed (smoothness_oscillation)";
+         " lateral-speed reversal(s) so far, and a merge started now" +
+         (turns_away_first ? " (its path first turning away from the main lane)" : "") +
+         " and aborted would exceed the " + std::to_string(ledger.allowed_with_merge()) +
+         " allowed (smoothness_oscillation)";
 }
 
 }  // namespace mg

@@ -24,12 +24,18 @@ class ReversalLedger {
   void observe(const WorldSnapshot& w);
 
   // Whether a merge started now may still be aborted within the allowance: the lateral speed turns
-  // toward the main lane (a change if it last pointed away) and, should the merge abort, back.
-  bool can_afford_merge() const;
+  // toward the main lane (a change if it last pointed away) and, should the merge abort, back. A
+  // merge whose path lies below the ego (turns_away_first: one begun on the way back from an
+  // abort follows its sigmoid) first takes it away from the main lane: one change more for an
+  // ego moving toward the lane.
+  bool can_afford_merge(bool turns_away_first = false) const;
 
   // The sign changes so far, the merge approaches the rule credits so far, and the allowance a
   // merge started now would have.
   int changes() const { return changes_; }
+  // The lateral speed last pointed toward the main lane (beyond the hysteresis, since the first
+  // start): moving away from it now would be a sign change.
+  bool last_moved_out() const { return sign_ > 0; }
   int approaches() const { return from_centre_ + (after_reversal_ > 0 ? 1 : 0); }
   int allowed_with_merge() const;
 
@@ -47,7 +53,7 @@ class ReversalLedger {
   int changes_ = 0;           // its sign changes since the first start
 };
 
-// "merge deferred: ..." — why a merge waits for the ego to be back at its centre.
-std::string reversal_deferral_reason(const ReversalLedger& ledger);
+// Why a merge waits for the ego to be back at its centre (the decision's reason).
+std::string reversal_deferral_reason(const ReversalLedger& ledger, bool turns_away_first);
 
 }  // namespace mg

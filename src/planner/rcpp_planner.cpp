@@ -356,7 +356,8 @@ bool RcppPlanner::defers_merge(const InSideLane& side, const WorldSnapshot& w, b
 }
 
 // The paper's order: an answer to an open request, Definition 1 at rho_m, a Definition 2
-// request, Definition 1 at the longer durations, and Definition 1.3's halt.
+// request, Definition 1 at the longer durations, and Definition 1.3's halt; before and after each
+// Definition 1 search, the weaving budget may send the ego back to its centre first.
 RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, const WorldSnapshot& w) {
   const HaltProfile h = halt_profile(w);
   std::string note;

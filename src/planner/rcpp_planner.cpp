@@ -365,15 +365,18 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
   if (w.time_s < side.no_merge_before_s)  // just aborted: back toward the side lane centre first
     return {hold_after_abort(side, w, h, side_lane_path(side.lateral, w), note), std::nullopt};
   if (defers_merge(side, w, false)) return {back_to_centre(side, w, h, reversals_, false, note), std::nullopt};
-  std::string why;
-  if (auto plan = plan_definition1(w, MergeDurations::kRhoM, &why)) {
-    CommittedMerge merge = start_def1_merge(side, w, *plan, reversals_);
+  // A Definition 1 plan's merge (it supersedes an open request), or the way back to the centre
+  // when the weaving budget defers it.
+  const auto take_def1_plan = [&](const Def1Plan& plan) -> SideLaneStep {
+    CommittedMerge merge = start_def1_merge(side, w, plan, reversals_);
     if (const bool away = turns_away_first(merge, w); defers_merge(side, w, away))
       return {back_to_centre(side, w, h, reversals_, away, note), std::nullopt};
     side.pending.reset();
     merge.decision.reason = note + merge.decision.reason;
     return {{}, std::move(merge)};
-  }
+  };
+  std::string why;
+  if (auto plan = plan_definition1(w, MergeDurations::kRhoM, &why)) return take_def1_plan(*plan);
   SideLaneStep step;
   step.out.path = side_lane_path(side.lateral, w);
   send_request(side, w, step.out, note);
@@ -381,13 +384,7 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
   // tried every kLongerMergeEveryS (docs/performance.md), Def. 1 at rho_m every cycle.
   if (!side.pending && w.time_s + 1e-9 >= side.next_longer_merge_s) {
     side.next_longer_merge_s = w.time_s + kLongerMergeEveryS;
-    if (auto plan = plan_definition1(w, MergeDurations::kLonger, &why)) {
-      CommittedMerge merge = start_def1_merge(side, w, *plan, reversals_);
-      if (const bool away = turns_away_first(merge, w); defers_merge(side, w, away))
-        return {back_to_centre(side, w, h, reversals_, away, note), std::nullopt};
-      merge.decision.reason = note + merge.decision.reason;
-      return {{}, std::move(merge)};
-    }
+    if (auto plan = plan_definition1(w, MergeDurations::kLonger, &why)) return take_def1_plan(*plan);
   }
   if (side.pending)
     wait_for_reply(*side.pending, w, h, step.out);

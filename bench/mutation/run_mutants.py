@@ -44,6 +44,12 @@ VOLATILE_KEYS = {
 CTEST_ENV = {"RC_PARAMS": "max_success=100 seed=20261123"}
 TARGET_FRACTION = 0.9  # caught on at least 9 of 10 seeds
 TARGET_SPEEDUP = 2.0   # guided reaches the first failure at least twice as fast as random (median)
+# A mutant is rare when a random campaign fails on fewer than RARE_RATE of its scenarios (its
+# `random_rate` in mutants.json, measured with `mergeguard fuzz --runs N`); on every rare mutant
+# guided search should reach the first failure at least RARE_TARGET_SPEEDUP times sooner (median
+# over the seeds, a campaign that misses counting as never).
+RARE_RATE = 1e-4
+RARE_TARGET_SPEEDUP = 3.0
 
 _children_lock = threading.Lock()
 _children: set[subprocess.Popen] = set()
@@ -125,7 +131,16 @@ def load_mutants(path: Path, repo: Path) -> list[dict]:
             raise SystemExit(f"{where}: find and replace are the same")
         if not (repo / m["file"]).is_file():
             raise SystemExit(f"{where}: no file {m['file']}")
+        rate = m.get("random_rate")
+        if rate is not None and not (isinstance(rate, dict) and all(isinstance(rate.get(k), int) for k in
+                                                                   ("failing", "runs", "seed")) and rate["runs"] > 0):
+            raise SystemExit(f"{where}: 'random_rate' must be {{\"failing\": int, \"runs\": int > 0, \"seed\": int}}")
     return mutants
+
+
+def is_rare(m: dict) -> bool:
+    rate = m.get("random_rate")
+    return rate is not None and rate["failing"] < RARE_RATE * rate["runs"]
 
 
 def occurrences(text: str, find: str) -> int:
@@ -250,6 +265,28 @@ def fixed_summary(exe: Path, planner: str, runs: int, logs: Path, tag: str) -> d
     return r
 
 
+def rate_campaign(exe: Path, planner: str, runs: int, seed: int, logs: Path, tag: str) -> dict:
+    """How often random search fails: a `fuzz --runs N --seed S --jobs 2` of the build, with the
+    scenarios of each signature ({"runs", "seed", "signatures": {signature: scenarios}})."""
+    cmd = [str(exe), "fuzz", "--runs", str(runs), "--seed", str(seed), "--planner", planner, "--corpus", "",
+           "--jobs", "2", "--json"]
+    r, doc = fuzz_summary(cmd, logs / f"rate-{tag}-{planner}.log", max(600.0, runs * 0.5))
+    r.update({"runs": runs, "seed": seed})
+    if doc is not None:
+        r["signatures"] = {s.get("signature", "?"): s.get("scenarios", 0) for s in signature_records(doc)}
+    return r
+
+
+def measured_rate(base: dict, mutant: dict) -> dict:
+    """The mutant's random rate against the unmutated build's same campaign: its signatures the
+    unmutated build does not have, and `failing`, the most scenarios of one of them (a lower bound
+    of the failing scenarios: one scenario fails several properties)."""
+    if "error" in mutant or "error" in base:
+        return {"runs": mutant["runs"], "seed": mutant["seed"], "error": mutant.get("error") or base.get("error")}
+    new = {k: v for k, v in mutant.get("signatures", {}).items() if k not in base.get("signatures", {})}
+    return {"runs": mutant["runs"], "seed": mutant["seed"], "new_signatures": new, "failing": max(new.values(), default=0)}
+
+
 def fuzz_summary(cmd: list[str], log_path: Path, timeout: float) -> tuple[dict, dict | None]:
     """Runs a `mergeguard fuzz ... --json`: ({"exit": code} or with an "error"), and its summary
     (None when it crashed, timed out or printed no JSON)."""
@@ -357,7 +394,12 @@ def mode_stats(campaigns: list[dict], mode: str) -> dict:
     caught = [r for r in rs if credited(r)]
     times = [r["first_failure_s"] for r in caught if isinstance(r.get("first_failure_s"), (int, float))]
     runs = [r["first_failure_run"] for r in caught if isinstance(r.get("first_failure_run"), int)]
+    # Over every seed that ran without error, a miss counting as never (infinity): the median a rare
+    # mutant is judged by. None (JSON null) when more than half the seeds missed.
+    all_times = times + [math.inf] * sum(1 for r in rs if not credited(r) and "error" not in r)
+    censored = statistics.median(all_times) if all_times else math.inf
     return {
+        "median_first_failure_all_seeds_s": None if math.isinf(censored) else censored,
         "seeds": len(rs),
         "caught": len(caught),  # credited to the mutant
         "also_unmutated": sum(1 for r in rs if r.get("also_unmutated")),
@@ -422,6 +464,32 @@ def needed(seeds: int) -> int:
     return math.ceil(TARGET_FRACTION * seeds - 1e-9)
 
 
+def rare_speedups(results: list[dict], seeds: int) -> list[dict]:
+    """Per rare mutant: random's and guided's median time to the first failure over all seeds (a
+    miss counting as never) and their ratio; `met` whether guided is RARE_TARGET_SPEEDUP times
+    faster. A median that is never (more than half the seeds missed) is None; random never and
+    guided timed meets the target, guided never does not."""
+    out = []
+    for r in results:
+        if r.get("baseline") or mutant_status(r, seeds) or not r.get("rare"):
+            continue
+        st = r.get("modes", {})
+        if "random" not in st or "guided" not in st:
+            continue
+        rnd = st["random"].get("median_first_failure_all_seeds_s")
+        gd = st["guided"].get("median_first_failure_all_seeds_s")
+        if gd is None:
+            ratio, met = None, False
+        elif rnd is None:
+            ratio, met = None, True
+        else:
+            ratio = rnd / gd if gd > 0 else math.inf
+            met = ratio >= RARE_TARGET_SPEEDUP
+        out.append({"id": r["id"], "random_s": rnd, "guided_s": gd, "speedup": None if ratio is None or math.isinf(ratio)
+                    else ratio, "met": met})
+    return out
+
+
 def aggregate(results: list[dict], seeds: int, modes: list[str]) -> dict:
     ratios, run_ratios, excluded = [], [], []
     gaps, short = [], []
@@ -446,7 +514,7 @@ def aggregate(results: list[dict], seeds: int, modes: list[str]) -> dict:
                 if m in st and st[m]["caught"] < needed(seeds):
                     short.append((r["id"], m))
     out = {"speedups": ratios, "run_speedups": run_ratios, "speedup_excluded": excluded, "gaps": gaps,
-           "below_target": short}
+           "below_target": short, "rare": rare_speedups(results, seeds)}
     out["median_speedup"] = statistics.median(v for _, v in ratios) if ratios else None
     out["median_run_speedup"] = statistics.median(v for _, v in run_ratios) if run_ratios else None
     return out
@@ -522,6 +590,27 @@ def markdown(results: list[dict], args, agg: dict, header: dict) -> str:
                          + ", ".join(f"{i} {v:.2f}" for i, v in agg["run_speedups"]) + ".")
     else:
         lines.append("- No speed-up figure: random search caught no mutant with both modes timed.")
+    rated = [r for r in results if r.get("measured_rate") and "error" not in r["measured_rate"]]
+    if rated:
+        lines.append("- Random rates measured by this run (`--rate-runs`; failing scenarios with a signature the "
+                     "unmutated build's same campaign lacks): "
+                     + "; ".join(f"{r['id']} {r['measured_rate']['failing']} in {r['measured_rate']['runs']:,} "
+                                 f"(seed {r['measured_rate']['seed']}, {'rare' if r.get('rare') else 'not rare'})"
+                                 for r in rated) + ".")
+    if agg.get("rare"):
+        def cell(t):
+            return f"{t:.1f} s" if t is not None else f"never (> {args.time:g} s on most seeds)"
+
+        def ratio(x):
+            if x["speedup"] is not None:
+                return f"{x['speedup']:.2f}"
+            return "guided only" if x["met"] else "-"
+        every = all(x["met"] for x in agg["rare"])
+        lines.append(f"- **Rare mutants** (a random campaign fails on fewer than 1 in {1 / RARE_RATE:,.0f} scenarios; "
+                     f"median over all seeds, a miss counting as never): guided at least {RARE_TARGET_SPEEDUP:g} times "
+                     f"faster on every one: **{'met' if every else 'not met'}**; "
+                     + "; ".join(f"{x['id']} random {cell(x['random_s'])}, guided {cell(x['guided_s'])}, "
+                                 f"speed-up {ratio(x)}" for x in agg["rare"]) + ".")
     if agg["speedup_excluded"]:
         lines.append("- Left out of the speed-up (random caught it, guided never did or gave no time): "
                      + ", ".join(agg["speedup_excluded"]) + ".")
@@ -626,6 +715,9 @@ def main() -> int:
     ap.add_argument("--seeds", type=int, default=10, help="campaign seeds 1..S per search mode (0: no campaigns)")
     ap.add_argument("--time", type=float, default=60.0, help="seconds per campaign (--time of mergeguard fuzz)")
     ap.add_argument("--fixed-runs", type=int, default=2000, help="runs of the fixed-seed summary (seed 1)")
+    ap.add_argument("--rate-runs", type=int, default=0,
+                    help="measure each mutant's random rate over this many runs (0: no; see 'Rare mutants')")
+    ap.add_argument("--rate-seed", type=int, default=4242, help="seed of the rate campaigns")
     ap.add_argument("--only", default="", help="comma-separated mutant ids (default: all)")
     ap.add_argument("--modes", default=",".join(MODES), help="search modes to run (default: random,guided)")
     ap.add_argument("--no-ctest", action="store_true", help="skip the CTest suite")
@@ -731,6 +823,8 @@ def main() -> int:
                 raise SystemExit(f"fixed-seed summary of the unmutated build ({p}): {base_fixed[p]['error']}")
             log(f"unmutated {p}: fixed-seed summary {base_fixed[p]['violations']} failing scenario(s) in "
                 f"{args.fixed_runs} runs ({base_fixed[p]['wall_s']} s)")
+        base_rate = {p: rate_campaign(exe, p, args.rate_runs, args.rate_seed, logs, "base")
+                     for p in planners} if args.rate_runs > 0 else {}
         base_ctest = None
         if not args.no_ctest:
             base_ctest = run_ctest(build_dir, args.build_jobs, logs / "ctest-base.log", args.ctest_exclude)
@@ -754,6 +848,9 @@ def main() -> int:
 
         for m in mutants:
             r = {k: m[k] for k in ("id", "kind", "planner", "file", "what")}
+            r["rare"] = is_rare(m)
+            if m.get("random_rate") is not None:
+                r["random_rate"] = m["random_rate"]
             results.append(r)
             t0 = time.monotonic()
             log(f"-- {m['id']} ({m['file']})")
@@ -771,6 +868,11 @@ def main() -> int:
                         r["differs"] = r["fixed"]["summary"] != base_fixed[m["planner"]]["summary"]
                         r["difference"] = summary_difference(base_fixed[m["planner"]], r["fixed"])
                     r["fixed"].pop("summary", None)
+                    if args.rate_runs > 0:
+                        r["measured_rate"] = measured_rate(base_rate[m["planner"]], rate_campaign(
+                            exe, m["planner"], args.rate_runs, args.rate_seed, logs / m["id"], "mutant"))
+                        if "error" not in r["measured_rate"]:
+                            r["rare"] = r["measured_rate"]["failing"] < RARE_RATE * args.rate_runs
                     if args.seeds > 0:
                         r["campaigns"] = run_campaigns(exe, m["planner"], args.seeds, args.modes, args.time,
                                                        args.parallel, work, logs / m["id"], m["id"])

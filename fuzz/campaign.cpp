@@ -53,6 +53,7 @@ class Campaign {
   bool externally_stopped() const { return opt_.stop != nullptr && opt_.stop->load(); }
   bool should_stop() const {
     return abort_.load() || externally_stopped() || (opt_.stop_on_failure && failing_.load() > 0) ||
+           (opt_.stop_on_new_failure && new_failing_.load() > 0) ||
            (deadline_ && Clock::now() >= *deadline_);
   }
 
@@ -123,7 +124,10 @@ class Campaign {
     if (history_) history_->complete(j, offers_of(outcome, i, drawn->spec));
     std::map<Signature, PropertyFailure> distinct;  // first failure per signature in this scenario
     for (const PropertyFailure& f : outcome.failures) distinct.try_emplace(signature_of(outcome.planner, f), f);
-    if (!distinct.empty()) note_failing_run(i, drawn->guided);
+    if (!distinct.empty()) {
+      const bool is_new = std::any_of(distinct.begin(), distinct.end(), [&](const auto& d) { return !known_.count(d.first); });
+      note_failing_run(i, drawn->guided, is_new);
+    }
     for (const auto& [signature, failure] : distinct) {
       if (claim_for_shrinking(signature, failure, i, drawn->guided))
         shrink_into_corpus(check, signature, failure, i, drawn->scenario);
@@ -132,14 +136,19 @@ class Campaign {
     ++scenarios_;
   }
 
-  void note_failing_run(std::uint64_t i, bool guided) {
+  // `is_new`: the run fails with a signature the corpus did not hold at the start.
+  void note_failing_run(std::uint64_t i, bool guided, bool is_new) {
     {
       std::lock_guard lock(mutex_);
+      const double now_s = std::chrono::duration<double>(Clock::now() - start_).count();
       if (!first_failure_run_ || i < *first_failure_run_) first_failure_run_ = i;
-      if (!first_failure_s_) first_failure_s_ = std::chrono::duration<double>(Clock::now() - start_).count();
+      if (!first_failure_s_) first_failure_s_ = now_s;
+      if (is_new && (!first_new_failure_run_ || i < *first_new_failure_run_)) first_new_failure_run_ = i;
+      if (is_new && !first_new_failure_s_) first_new_failure_s_ = now_s;
     }
     if (guided) ++guided_failing_;
     ++failing_;
+    if (is_new) ++new_failing_;
   }
 
   // Counts the failure; true when run i is now the signature's lowest failing run and its case
@@ -271,6 +280,8 @@ class Campaign {
       r.signatures = signatures_;
       r.first_failure_run = first_failure_run_;
       r.first_failure_s = first_failure_s_;
+      r.first_new_failure_run = first_new_failure_run_;
+      r.first_new_failure_s = first_new_failure_s_;
     }
     for (const auto& [signature, rec] : r.signatures) {
       r.property_failures += rec.count;
@@ -297,13 +308,15 @@ class Campaign {
   std::optional<Clock::time_point> deadline_;
   std::optional<std::uint64_t> shard_runs_;
   std::set<Signature> known_;
-  std::atomic<std::uint64_t> next_{0}, scenarios_{0}, failing_{0}, guided_runs_{0}, guided_failing_{0};
+  std::atomic<std::uint64_t> next_{0}, scenarios_{0}, failing_{0}, guided_runs_{0}, guided_failing_{0}, new_failing_{0};
   std::unique_ptr<PoolHistory> history_;  // guided search only
   std::atomic<bool> abort_{false};
   std::mutex mutex_;  // guards signatures_, first_failure_* and corpus writes
   std::map<Signature, SignatureRecord> signatures_;
   std::optional<std::uint64_t> first_failure_run_;
   std::optional<double> first_failure_s_;
+  std::optional<std::uint64_t> first_new_failure_run_;
+  std::optional<double> first_new_failure_s_;
   std::vector<CampaignProgress> timeline_;  // the progress thread's only
 };
 

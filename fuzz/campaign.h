@@ -99,6 +99,10 @@ struct CampaignResult {
   std::uint64_t guided_failing_scenarios = 0;  // ... of which failed a property
   std::optional<std::uint64_t> first_failure_run;  // lowest failing run index
   std::optional<double> first_failure_s;           // seconds from the start to the first failing run (timing)
+  // The same for the failing runs with a signature the corpus did not hold when the campaign
+  // started (every failing run when there is no corpus).
+  std::optional<std::uint64_t> first_new_failure_run;
+  std::optional<double> first_new_failure_s;
   std::vector<std::string> new_cases;          // paths, sorted
   // Progress samples over the campaign (for the report's findings-over-time plot; timing, like
   // `seconds`): at most kMaxTimelineSamples, thinned by halving as the campaign goes on.
@@ -119,6 +123,9 @@ struct CampaignOptions {
   SearchMode search = SearchMode::kRandom;
   GuidedParams guided;
   bool stop_on_failure = false;        // stop starting runs after the first failing scenario
+  // ... after the first failing scenario with a signature the corpus did not hold at the start:
+  // a campaign against a corpus of known open findings stops at the first finding it lacks.
+  bool stop_on_new_failure = false;
   int determinism_every = 8;           // run i is checked twice when i % determinism_every == 0
   ShrinkBudget shrink;                 // `stop` is replaced by the campaign's own
   const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT) to stop after the runs in flight

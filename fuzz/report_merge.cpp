@@ -149,6 +149,13 @@ Shard read_shard(const std::string& path) {
     if (!t.is_number()) throw InputError(path, "/first_failure_s", "expected a number");
     r.first_failure_s = t.get<double>();
   }
+  // Summaries written before the field existed have no first_new_failure_run.
+  if (j.contains("first_new_failure_run") && !j.at("first_new_failure_run").is_null()) {
+    r.first_new_failure_run = count(j, "first_new_failure_run", path, "");
+    const json& t = field(j, "first_new_failure_s", path, "");
+    if (!t.is_number()) throw InputError(path, "/first_new_failure_s", "expected a number");
+    r.first_new_failure_s = t.get<double>();
+  }
   const json& list = field(j, "signature_list", path, "");
   if (!list.is_array()) throw InputError(path, "/signature_list", "expected an array");
   for (std::size_t i = 0; i < list.size(); ++i) {
@@ -203,6 +210,10 @@ void add_into(CampaignResult& into, const CampaignResult& r) {
     into.first_failure_run = r.first_failure_run;
   if (r.first_failure_s && (!into.first_failure_s || *r.first_failure_s < *into.first_failure_s))  // shards run side by side
     into.first_failure_s = r.first_failure_s;
+  if (r.first_new_failure_run && (!into.first_new_failure_run || *r.first_new_failure_run < *into.first_new_failure_run))
+    into.first_new_failure_run = r.first_new_failure_run;
+  if (r.first_new_failure_s && (!into.first_new_failure_s || *r.first_new_failure_s < *into.first_new_failure_s))
+    into.first_new_failure_s = r.first_new_failure_s;
   for (const auto& [k, n] : r.by_property) into.by_property[k] += n;
   for (const auto& [k, n] : r.by_rule) into.by_rule[k] += n;
   for (const auto& [k, n] : r.by_party) into.by_party[k] += n;

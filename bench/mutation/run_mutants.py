@@ -38,7 +38,7 @@ KINDS = ("planner", "simulator", "rule")
 # Keys of the campaign summary that depend on the clock or on how the campaign was run, not on
 # what it found: dropped (at any depth) before two fixed-seed summaries are compared.
 VOLATILE_KEYS = {
-    "seconds", "scenarios_per_second", "date", "time_budget_s", "first_failure_s", "elapsed_s",
+    "seconds", "scenarios_per_second", "date", "time_budget_s", "first_failure_s", "first_new_failure_s", "elapsed_s",
     "remaining_s", "timeline", "jobs", "corpus", "shrink_seconds",
 }
 CTEST_ENV = {"RC_PARAMS": "max_success=100 seed=20261123"}
@@ -324,23 +324,49 @@ def summary_difference(base: dict, mutant: dict) -> list[str]:
     return out
 
 
-def campaign(exe: Path, planner: str, seed: int, mode: str, time_s: float, corpus: Path, log_path: Path) -> dict:
+def known_corpus(exe: Path, planner: str, runs: int, seed: int, dest: Path, logs: Path) -> dict:
+    """The unmutated build's known failures: a `fuzz --runs N --seed S --jobs 2` whose cases (one per
+    signature) go into `dest`. The campaigns start from a copy of it and stop at the first failure
+    with another signature (`--stop-on-new-failure`): the planner's open findings, which a campaign
+    meets every few tens of seconds, no longer end a campaign before a rare mutant shows."""
+    if dest.exists():
+        shutil.rmtree(dest)
+    dest.mkdir(parents=True)
+    cmd = [str(exe), "fuzz", "--runs", str(runs), "--seed", str(seed), "--planner", planner, "--jobs", "2",
+           "--corpus", str(dest), "--json"]
+    r, doc = fuzz_summary(cmd, logs / f"known-{planner}.log", max(900.0, runs * 0.5))
+    if doc is not None:
+        r["signatures"] = sorted(s.get("signature", "?") for s in signature_records(doc))
+    return r
+
+
+def campaign(exe: Path, planner: str, seed: int, mode: str, time_s: float, corpus: Path, log_path: Path,
+             known: Path | None = None) -> dict:
     if corpus.exists():
         shutil.rmtree(corpus)
-    corpus.mkdir(parents=True)
+    if known is not None:
+        shutil.copytree(known, corpus)
+    else:
+        corpus.mkdir(parents=True)
     cmd = [str(exe), "fuzz", "--time", str(time_s), "--seed", str(seed), "--planner", planner, "--jobs", "1",
-           "--search", mode, "--stop-on-failure", "--corpus", str(corpus), "--json"]
+           "--search", mode, "--stop-on-new-failure" if known is not None else "--stop-on-failure",
+           "--corpus", str(corpus), "--json"]
     # A failure found just before the deadline is still shrunk (up to 60 s + its grace period).
     outcome, doc = fuzz_summary(cmd, log_path, time_s + 300.0)
     r: dict = {"seed": seed, "mode": mode, **outcome}
     if doc is None:
         return r
-    r["caught"] = r["exit"] == 1
     r["scenarios"] = doc.get("scenarios")
     r["seconds"] = doc.get("seconds")
-    r["first_failure_s"] = doc.get("first_failure_s")
-    r["first_failure_run"] = doc.get("first_failure_run")
-    sigs = signature_records(doc)
+    if known is not None:  # caught: a failure the known corpus has no signature of
+        r["caught"] = doc.get("first_new_failure_run") is not None
+        r["first_failure_s"] = doc.get("first_new_failure_s")
+        r["first_failure_run"] = doc.get("first_new_failure_run")
+    else:
+        r["caught"] = r["exit"] == 1
+        r["first_failure_s"] = doc.get("first_failure_s")
+        r["first_failure_run"] = doc.get("first_failure_run")
+    sigs = [s for s in signature_records(doc) if not (known is not None and s.get("known_before"))]
     r["signatures"] = sorted(s.get("signature", "?") for s in sigs)
     vehicles = [s["case_vehicles"] for s in sigs if s.get("case") and isinstance(s.get("case_vehicles"), int)]
     r["case_vehicles"] = min(vehicles) if vehicles else None
@@ -349,13 +375,13 @@ def campaign(exe: Path, planner: str, seed: int, mode: str, time_s: float, corpu
 
 
 def run_campaigns(exe: Path, planner: str, seeds: int, modes: list[str], time_s: float, parallel: int, work: Path,
-                  logs: Path, tag: str) -> list[dict]:
+                  logs: Path, tag: str, known: Path | None = None) -> list[dict]:
     jobs = [(seed, mode) for seed in range(1, seeds + 1) for mode in modes]
     results: list[dict] = []
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=max(1, parallel))
     try:
         futures = [pool.submit(campaign, exe, planner, seed, mode, time_s, work / "corpora" / tag / f"{mode}-{seed}",
-                               logs / f"campaign-{mode}-{seed}.log") for seed, mode in jobs]
+                               logs / f"campaign-{mode}-{seed}.log", known) for seed, mode in jobs]
         for f in concurrent.futures.as_completed(futures):
             results.append(f.result())
     except BaseException:
@@ -526,7 +552,10 @@ def markdown(results: list[dict], args, agg: dict, header: dict) -> str:
         "# Mutation benchmark of the fuzzer",
         "",
         f"{header['date']}, source {header['source']}; {seeds} seed(s) x {len(modes)} search mode(s) x {args.time:g} s "
-        f"per campaign (`--jobs 1 --stop-on-failure`, {args.parallel} at a time); fixed-seed summaries "
+        f"per campaign (`--jobs 1 "
+        + (f"--stop-on-new-failure` against the unmutated build's failures in {getattr(args, 'known_runs', 0):,} runs "
+           f"of seed {getattr(args, 'known_seed', 0)}" if getattr(args, "known_runs", 0) > 0 else "--stop-on-failure`")
+        + f", {args.parallel} at a time); fixed-seed summaries "
         f"`--runs {args.fixed_runs} --seed 1 --jobs 2`; CTest with RC_PARAMS=\"{CTEST_ENV['RC_PARAMS']}\""
         + (" (not run)" if args.no_ctest else "") + (f", without the tests matching `{args.ctest_exclude}`"
                                                      if args.ctest_exclude and not args.no_ctest else "")
@@ -718,6 +747,10 @@ def main() -> int:
     ap.add_argument("--rate-runs", type=int, default=0,
                     help="measure each mutant's random rate over this many runs (0: no; see 'Rare mutants')")
     ap.add_argument("--rate-seed", type=int, default=4242, help="seed of the rate campaigns")
+    ap.add_argument("--known-runs", type=int, default=30000,
+                    help="campaigns stop at the first failure the unmutated build does not show in this many runs "
+                         "(0: at the first failure)")
+    ap.add_argument("--known-seed", type=int, default=4242, help="seed of the known-failure run")
     ap.add_argument("--only", default="", help="comma-separated mutant ids (default: all)")
     ap.add_argument("--modes", default=",".join(MODES), help="search modes to run (default: random,guided)")
     ap.add_argument("--no-ctest", action="store_true", help="skip the CTest suite")
@@ -825,6 +858,15 @@ def main() -> int:
                 f"{args.fixed_runs} runs ({base_fixed[p]['wall_s']} s)")
         base_rate = {p: rate_campaign(exe, p, args.rate_runs, args.rate_seed, logs, "base")
                      for p in planners} if args.rate_runs > 0 else {}
+        known: dict[str, Path] = {}
+        if args.known_runs > 0 and args.seeds > 0:
+            for p in planners:
+                k = known_corpus(exe, p, args.known_runs, args.known_seed, work / "known" / p, logs)
+                if "error" in k:
+                    raise SystemExit(f"known-failure corpus of the unmutated build ({p}): {k['error']}")
+                known[p] = work / "known" / p
+                log(f"unmutated {p}: known failures in {args.known_runs} runs (seed {args.known_seed}): "
+                    + (", ".join(k.get("signatures", [])) or "none"))
         base_ctest = None
         if not args.no_ctest:
             base_ctest = run_ctest(build_dir, args.build_jobs, logs / "ctest-base.log", args.ctest_exclude)
@@ -839,7 +881,7 @@ def main() -> int:
                 r["ctest"] = base_ctest
             if args.seeds > 0 and not args.no_baseline_campaigns and p in args.baseline_planners.split(","):
                 r["campaigns"] = run_campaigns(exe, p, args.seeds, args.modes, args.time, args.parallel, work,
-                                               logs / f"base-{p}", f"base-{p}")
+                                               logs / f"base-{p}", f"base-{p}", known.get(p))
                 base_campaigns[p] = r["campaigns"]
                 r["modes"] = {m: mode_stats(r["campaigns"], m) for m in args.modes}
             results.append(r)
@@ -875,7 +917,8 @@ def main() -> int:
                             r["rare"] = r["measured_rate"]["failing"] < RARE_RATE * args.rate_runs
                     if args.seeds > 0:
                         r["campaigns"] = run_campaigns(exe, m["planner"], args.seeds, args.modes, args.time,
-                                                       args.parallel, work, logs / m["id"], m["id"])
+                                                       args.parallel, work, logs / m["id"], m["id"],
+                                                       known.get(m["planner"]))
                         attribute(r["campaigns"], base_campaigns.get(m["planner"]))
                         r["modes"] = {mode: mode_stats(r["campaigns"], mode) for mode in args.modes}
                     if not args.no_ctest:

@@ -108,6 +108,8 @@ int run_fuzz(const std::vector<std::string>& args) {
   app.add_option("--search", search, "random (every run uniform) or guided (a share of the runs perturbs low-margin scenarios)")
       ->check(CLI::IsMember({"random", "guided"}));
   app.add_flag("--stop-on-failure", o.stop_on_failure, "stop starting runs after the first failing scenario (its case is still shrunk)");
+  app.add_flag("--stop-on-new-failure", o.stop_on_new_failure,
+               "stop starting runs after the first failing scenario with a signature the corpus does not hold yet");
   app.add_option("--determinism-every", o.determinism_every, "check determinism on every k-th run (0: never; default 8)");
   app.add_option("--shrink-attempts", o.shrink.max_attempts, "candidate checks per shrink (default 600)");
   app.add_option("--shrink-time", o.shrink.max_seconds, "seconds per shrink (default 60)");

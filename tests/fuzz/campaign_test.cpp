@@ -183,6 +183,43 @@ TEST(Campaign, StopOnFailureStartsNoRunAfterTheFirstFailingOne) {
   EXPECT_EQ(r.scenarios, *r.first_failure_run + 1);  // one job: the runs go in order
 }
 
+// fake_check's failure and a second one: rule "fake_fast" fails (ego liable) when the ego starts
+// faster than 30 m/s.
+CheckResult two_failures_check(const Scenario& s) {
+  CheckResult r = test::fake_check(s);
+  RuleResult fast;
+  fast.rule_id = "fake_fast";
+  fast.unit = "m/s";
+  fast.min_margin = 30.0 - s.ego.speed_mps;
+  fast.holds = fast.min_margin >= 0.0;
+  if (!fast.holds) {
+    fast.liable_id = Party::ego();
+    fast.first_violation_time_s = 0.0;
+  }
+  r.holds = r.holds && fast.holds;
+  r.rules.push_back(fast);
+  return r;
+}
+
+TEST(Campaign, StopOnNewFailureRunsPastTheSignaturesOfTheCorpus) {
+  const auto corpus = mg::test::unused_path("campaign_test_stop_on_new");
+  run_campaign(options(200, 1, corpus), fake_factory());  // the corpus now holds fake_proximity's case
+  auto o = options(100000, 1, corpus);
+  o.stop_on_new_failure = true;
+  const auto r = run_campaign(o, [] { return CheckFn(two_failures_check); });
+  ASSERT_TRUE(r.first_failure_run.has_value());
+  ASSERT_TRUE(r.first_new_failure_run.has_value());
+  ASSERT_TRUE(r.first_new_failure_s.has_value());
+  EXPECT_LT(*r.first_failure_run, *r.first_new_failure_run);  // a known failure did not stop it
+  EXPECT_EQ(r.scenarios, *r.first_new_failure_run + 1);        // one job: the runs go in order
+  std::uint64_t fast_first_run = 0;
+  for (const auto& [sig, rec] : r.signatures) {
+    if (sig.rule == "fake_fast") fast_first_run = rec.first_run;
+    EXPECT_EQ(rec.known_before, sig.rule == "fake_proximity") << sig.rule;
+  }
+  EXPECT_EQ(fast_first_run, *r.first_new_failure_run);
+}
+
 // A planted failure in a small window of two scalars, with a margin that measures the distance
 // to it (in window half-widths): ego speed 17.3 +- 0.3 m/s and ego X 30 +- 3 m. About one uniform
 // scenario in 1,500 falls inside; hill climbing on the margin gets there sooner.

@@ -37,7 +37,7 @@ std::string write_summary(const fs::path& dir, const std::string& name, const Ca
 }
 
 nlohmann::json without_timing(nlohmann::json j) {
-  for (const char* k : {"seconds", "scenarios_per_second", "first_failure_s", "date", "jobs"}) j.erase(k);
+  for (const char* k : {"seconds", "scenarios_per_second", "first_failure_s", "first_new_failure_s", "date", "jobs"}) j.erase(k);
   return j;
 }
 

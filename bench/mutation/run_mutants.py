@@ -717,7 +717,8 @@ def rerender(raw: Path, out_md: Path | None) -> int:
     args = argparse.Namespace(seeds=stored.get("seeds", 10), modes=stored.get("modes", list(MODES)),
                               time=stored.get("time", 60.0), parallel=stored.get("parallel", 2),
                               fixed_runs=stored.get("fixed_runs", 2000), no_ctest=stored.get("no_ctest", False),
-                              ctest_exclude=stored.get("ctest_exclude", ""))
+                              ctest_exclude=stored.get("ctest_exclude", ""), known_runs=stored.get("known_runs", 0),
+                              known_seed=stored.get("known_seed", 0))
     results = doc["results"]
     base = {r["planner"]: r["campaigns"] for r in results if r.get("baseline") and r.get("campaigns")}
     for r in results:

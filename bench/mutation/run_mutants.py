@@ -251,9 +251,15 @@ def signature_records(summary: dict) -> list[dict]:
     return []
 
 
+def runs_command(exe: Path, planner: str, runs: int, seed: int, corpus: str = "") -> list[str]:
+    """`mergeguard fuzz --runs N --seed S --jobs 2 --json` of a planner: a campaign of fixed runs,
+    its summary the same whatever the machine's load."""
+    return [str(exe), "fuzz", "--runs", str(runs), "--seed", str(seed), "--planner", planner, "--corpus", corpus,
+            "--jobs", "2", "--json"]
+
+
 def fixed_summary(exe: Path, planner: str, runs: int, logs: Path, tag: str) -> dict:
-    cmd = [str(exe), "fuzz", "--runs", str(runs), "--seed", "1", "--planner", planner, "--corpus", "", "--jobs", "2",
-           "--json"]
+    cmd = runs_command(exe, planner, runs, 1)
     t0 = time.monotonic()
     r, doc = fuzz_summary(cmd, logs / f"fixed-{tag}-{planner}.log", max(600.0, runs * 0.5))
     r["wall_s"] = round(time.monotonic() - t0, 1)
@@ -268,9 +274,8 @@ def fixed_summary(exe: Path, planner: str, runs: int, logs: Path, tag: str) -> d
 def rate_campaign(exe: Path, planner: str, runs: int, seed: int, logs: Path, tag: str) -> dict:
     """How often random search fails: a `fuzz --runs N --seed S --jobs 2` of the build, with the
     scenarios of each signature ({"runs", "seed", "signatures": {signature: scenarios}})."""
-    cmd = [str(exe), "fuzz", "--runs", str(runs), "--seed", str(seed), "--planner", planner, "--corpus", "",
-           "--jobs", "2", "--json"]
-    r, doc = fuzz_summary(cmd, logs / f"rate-{tag}-{planner}.log", max(600.0, runs * 0.5))
+    r, doc = fuzz_summary(runs_command(exe, planner, runs, seed), logs / f"rate-{tag}-{planner}.log",
+                          max(600.0, runs * 0.5))
     r.update({"runs": runs, "seed": seed})
     if doc is not None:
         r["signatures"] = {s.get("signature", "?"): s.get("scenarios", 0) for s in signature_records(doc)}
@@ -332,9 +337,8 @@ def known_corpus(exe: Path, planner: str, runs: int, seed: int, dest: Path, logs
     if dest.exists():
         shutil.rmtree(dest)
     dest.mkdir(parents=True)
-    cmd = [str(exe), "fuzz", "--runs", str(runs), "--seed", str(seed), "--planner", planner, "--jobs", "2",
-           "--corpus", str(dest), "--json"]
-    r, doc = fuzz_summary(cmd, logs / f"known-{planner}.log", max(900.0, runs * 0.5))
+    r, doc = fuzz_summary(runs_command(exe, planner, runs, seed, str(dest)), logs / f"known-{planner}.log",
+                          max(900.0, runs * 0.5))
     if doc is not None:
         r["signatures"] = sorted(s.get("signature", "?") for s in signature_records(doc))
     return r

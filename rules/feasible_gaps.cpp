@@ -36,24 +36,27 @@ bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t
 }
 
 // The merge a gap's feasibility is shown with, judged along its whole duration, not only at
-// rho / 2 and rho: the ego's centre follows the paper's sigmoid (RCPP §IV) in time, from its
-// observed Y at the start to the target lane's centre at rho through the midpoint at rho / 2
-// (the logistic of steepness c / rho, witness_steepness, cut at 0 and rho and rescaled), while
-// its speed changes from the observed one toward v_e* at its declared rates. At every one of
-// kWitnessSamples + 1 instants at which the ego is laterally nearer a vehicle than RCPP eq. (2)
-// (the judge's lateral RSS distance, with the ego's lateral speed on the path) plus
-// progress_lateral_margin_m, it must be RCPP eq. (1)'s D_lon plus progress_gap_margin_m clear of
-// it: behind every vehicle ahead of it, of the target lane at its observed speed (as Def. 1.2
-// takes the leader), of the lane beyond where braking at its b_max from now puts it (no part of
-// the gap, it may brake legally while the ego is near it, and the ego's RSS response would then
-// take it off its merge in mid-lane change, which sigmoid_pc_bounds holds against the ego), and,
-// until rho / 2 (P_c), ahead of every target-lane vehicle behind it, which may accelerate at its
-// a_accel^max (Def. 1.1). A gap that
-// ineq. (1)/(2) admit at rho / 2 and rho alone can still have the merge enter the RSS danger the
-// distance rules fail on (a leader passing the ego, a vehicle of the lane beyond): the rule
-// demands no merge the other rules would then fail. The lateral margin is the tracking slack a
-// driven merge needs: no controller follows its reference path to the centimetre.
+// rho / 2 and rho: the ego's centre follows the paper's sigmoid (RCPP §IV), a logistic in X, from
+// its observed position to the target lane's centre, through its middle at the X the ego reaches
+// at rho / 2, while its speed changes from the observed one toward v_e* at its declared rates
+// (WitnessPath). At every one of kWitnessSamples + 1 instants at which the ego is laterally nearer
+// a vehicle than RCPP eq. (2) (the judge's lateral RSS distance, with the ego's lateral speed on
+// the path) plus progress_lateral_margin_m, it must be RCPP eq. (1)'s D_lon plus
+// progress_gap_margin_m clear of it: behind every vehicle ahead of it, of the target lane at its
+// observed speed (as Def. 1.2 takes the leader), of the lane beyond where braking at its b_max
+// from now puts it (no part of the gap, it may brake legally while the ego is near it, and the
+// ego's RSS response would then take it off its merge in mid-lane change, which sigmoid_pc_bounds
+// holds against the ego), and, until rho / 2 (P_c), ahead of every target-lane vehicle behind it,
+// which may accelerate at its a_accel^max (Def. 1.1). A gap that ineq. (1)/(2) admit at rho / 2
+// and rho alone can still have the merge enter the RSS danger the distance rules fail on (a
+// leader passing the ego, a vehicle of the lane beyond): the rule demands no merge the other rules
+// would then fail. The lateral margin is the tracking slack a driven merge needs: no controller
+// follows its reference path to the centimetre.
 constexpr int kWitnessSamples = 40;
+// The witness's peak lateral acceleration, bracketed by its kWitnessSamples + 1 instants, is
+// refined by this many steps of a ternary search (the peak is narrow: the instants alone could
+// miss it by several per cent).
+constexpr int kComfortRefinements = 12;
 
 // The paper's sigmoid starts (its heading along the road) at this fraction of the lane change, as
 // RCPP's planner draws it (2 % to 98 % of W); shortest_turn_in_m starts it there too.
@@ -69,116 +72,177 @@ const std::array<double, 2>& witness_steepness() {
   return c;
 }
 
-// The logistic of steepness c over u in [0, 1], centred at u = 1/2, and the rise of its cut.
-struct CutLogistic {
-  double c;
-  double at(double u) const { return 1.0 / (1.0 + std::exp(-c * (u - 0.5))); }
-  double span() const { return at(1.0) - at(0.0); }
-};
-
-// The witness's peak lateral acceleration: y'' = -y0 (c/rho)^2 l(1-l)(1-2l) / span, and
-// |l(1-l)(1-2l)| peaks at 1/(6 sqrt 3) (within the cut for c > 2.6). A merge above
-// progress_lat_accel_max_mps2 is not offered: a comfortable lane change is what the rule demands.
-double witness_peak_lat_accel_mps2(double y0_m, double rho_s, double c) {
-  return std::abs(y0_m) * c * c / (6.0 * std::sqrt(3.0) * CutLogistic{c}.span() * rho_s * rho_s);
-}
-
-// The witness's speed tau_s in: from v0 toward ve at the ego's declared a_accel^max / a_brake^min.
-double witness_speed_mps(const Limits& el, double v0, double ve, double tau_s) {
-  return ve >= v0 ? std::min(ve, v0 + el.accel_max_mps2 * tau_s) : std::max(ve, v0 - el.brake_min_mps2 * tau_s);
-}
-
-struct WitnessLateral {
-  double y_m, vy_mps;
-};
-// The witness's Y and lateral speed at tau_s, of the cut logistic `logistic` with its value at
-// u = 0 `l0` and its rise `span` (both constant per steepness, computed once per witness).
-WitnessLateral witness_lateral(double y0_m, double rho_s, const CutLogistic& logistic, double l0, double span,
-                               double tau_s) {
-  const double l = logistic.at(tau_s / rho_s);
-  const double frac = (l - l0) / span;
-  return {y0_m * (1.0 - frac), -y0_m * logistic.c * l * (1.0 - l) / (rho_s * span)};
-}
-
-// The lateral half of a witness merge (one duration, one steepness), which does not depend on
-// v_e*: the instants at which the ego on the witness path is laterally nearer a vehicle than
-// RCPP eq. (2) plus progress_lateral_margin_m, with the vehicle, in instant order.
-// witness_merge_clear then judges only these (instant, vehicle) pairs for each v_e*.
-struct NearPair {
-  int k;          // instant index, tau = rho k / kWitnessSamples
-  std::size_t o;  // vehicle index
-};
-std::vector<NearPair> witness_near_pairs(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho,
-                                         double c) {
-  const auto& v = t.steps[step].vehicles;
-  const ObservedState& ego = v[0];
-  const Limits& el = t.vehicles[0].limits;
-  const double T = t.params.rss.response_time_s;
-  const CutLogistic logistic{c};
-  const double l0 = logistic.at(0.0), span = logistic.span();
-  std::vector<NearPair> near;
-  for (int k = 0; k <= kWitnessSamples; ++k) {
-    const WitnessLateral lat = witness_lateral(ego.y_m, rho, logistic, l0, span, rho * k / kWitnessSamples);
-    for (std::size_t o = 1; o < v.size(); ++o) {
-      const ObservedState& ov = v[o];
-      const bool o_left = ov.y_m >= lat.y_m;
-      const double d_lat = rss_lateral_m({o_left ? 0.0 : lat.vy_mps, o_left ? lat.vy_mps : 0.0,
-                                          size_of(t, o_left ? o : 0).width_m, size_of(t, o_left ? 0 : o).width_m, T,
-                                          el.lat_accel_max_mps2, el.lat_brake_min_mps2,
-                                          t.params.rss.fluctuation_margin_m});
-      // Written as "not clear" so that a NaN lateral distance counts as near: judged, not skipped.
-      if (!(std::abs(ov.y_m - lat.y_m) >= d_lat + p.progress_lateral_margin_m)) near.push_back({k, o});
+// The witness's speed profile (one duration rho and v_e*), shared by both steepnesses: from the
+// ego's observed speed toward v_e* at its declared a_accel^max / a_brake^min, with the distance
+// covered and the speed at the kWitnessSamples + 1 instants tau = rho k / kWitnessSamples.
+class WitnessSpeed {
+ public:
+  WitnessSpeed(const Limits& el, double v0_mps, double ve_mps, double rho_s)
+      : el_(el), v0_mps_(v0_mps), ve_mps_(ve_mps), rho_s_(rho_s) {
+    for (int k = 0; k <= kWitnessSamples; ++k) {
+      const double tau = tau_s(k);
+      distance_m_[static_cast<std::size_t>(k)] = distance_m(tau);
+      speed_mps_[static_cast<std::size_t>(k)] = speed_mps(tau);
     }
   }
-  return near;
-}
+  double rho_s() const { return rho_s_; }
+  double tau_s(int k) const { return rho_s_ * k / kWitnessSamples; }
+  double distance_m(int k) const { return distance_m_[static_cast<std::size_t>(k)]; }
+  double speed_mps(int k) const { return speed_mps_[static_cast<std::size_t>(k)]; }
+  double distance_m(double tau_s) const {
+    return speed_change_distance_m(v0_mps_, ve_mps_, el_.accel_max_mps2, el_.brake_min_mps2, tau_s);
+  }
+  double speed_mps(double tau_s) const {
+    return ve_mps_ >= v0_mps_ ? std::min(ve_mps_, v0_mps_ + el_.accel_max_mps2 * tau_s)
+                              : std::max(ve_mps_, v0_mps_ - el_.brake_min_mps2 * tau_s);
+  }
+  double accel_mps2(double tau_s) const {
+    if (ve_mps_ >= v0_mps_) return v0_mps_ + el_.accel_max_mps2 * tau_s < ve_mps_ ? el_.accel_max_mps2 : 0.0;
+    return v0_mps_ - el_.brake_min_mps2 * tau_s > ve_mps_ ? -el_.brake_min_mps2 : 0.0;
+  }
+  double top_speed_mps() const { return std::max(v0_mps_, ve_mps_); }
+  // The magnitude of the speed change's rate (0 when v_e* is the observed speed).
+  double top_accel_mps2() const {
+    return ve_mps_ > v0_mps_ ? el_.accel_max_mps2 : ve_mps_ < v0_mps_ ? el_.brake_min_mps2 : 0.0;
+  }
 
-// The longitudinal half at v_e*: at every near pair, D_lon plus progress_gap_margin_m behind a
-// vehicle ahead (of the target lane at its observed speed, of the lane beyond braking at its b_max
-// from now), and until rho / 2 ahead of a target-lane vehicle behind (accelerating at its
-// a_accel^max).
-bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, double ve,
-                         const std::vector<NearPair>& near) {
+ private:
+  const Limits& el_;
+  double v0_mps_, ve_mps_, rho_s_;
+  std::array<double, kWitnessSamples + 1> distance_m_{}, speed_mps_{};
+};
+
+// One witness merge (one duration rho, steepness c and v_e*), in X as the paper draws it: the
+// logistic of steepness kappa centred at X_mid = X(rho / 2), cut at the ego's X now and at X(rho)
+// and rescaled to run from its observed Y to the target lane's centre (Y = 0). kappa = (c / 2) /
+// the shorter half: with c = 2 ln 49 the logistic spans 2 % to 98 % over the shorter half, as
+// RCPP's planner bounds its kappa by both halves, and the longer half runs flat at its end. Its
+// lateral acceleration is the path's, driven on the speed profile: Y''(X) v^2 + Y'(X) a. A
+// sigmoid in time instead would put the steep part of an accelerating merge at its mean speed
+// rather than at the higher speed the ego drives it at, and demand merges no planner that draws
+// the paper's path can take within the comfort bound.
+class WitnessPath {
+ public:
+  struct At {
+    double x_m, v_mps, y_m, vy_mps;
+  };
+  WitnessPath(const ObservedState& ego, const WitnessSpeed& speed, double c) : speed_(speed) {
+    x0_m_ = ego.x_m;
+    y0_m_ = ego.y_m;
+    const double first_m = speed.distance_m(kWitnessSamples / 2), second_m = speed.distance_m(kWitnessSamples) - first_m;
+    x_mid_m_ = x0_m_ + first_m;
+    kappa_per_m_ = 0.5 * c / std::min(first_m, second_m);
+    l0_ = logistic(x0_m_);
+    span_ = logistic(x0_m_ + first_m + second_m) - l0_;
+  }
+  // The ego on the witness at instant k (tau = rho k / kWitnessSamples).
+  At at(int k) const {
+    const double x = x0_m_ + speed_.distance_m(k), v = speed_.speed_mps(k);
+    const double l = logistic(x);
+    return {x, v, y0_m_ * (1.0 - (l - l0_) / span_), slope(l) * v};
+  }
+  // |Y''(X) v^2 + Y'(X) a| at most limit_mps2 over the whole merge: by its bound when that
+  // suffices, else at the kWitnessSamples + 1 instants and, around the largest, by
+  // kComfortRefinements steps of a ternary search between the instants next to it (the lateral
+  // acceleration has one peak per half of the merge, which its samples bracket). The bound:
+  // |Y''| v^2 + |Y'| |a| = |Y0| kappa / span * l (1 - l) (A |1 - 2 l| + B) with A = kappa v_max^2
+  // and B the speed change's rate; with u = |1 - 2 l| that is (1 - u^2) (A u + B) / 4, largest at
+  // u = (sqrt(B^2 + 3 A^2) - B) / (3 A). Written as "within" so that a degenerate path (no
+  // distance to a half: kappa infinite, a NaN) is no comfortable merge.
+  bool comfortable(double limit_mps2) const {
+    const double v_max = speed_.top_speed_mps();
+    const double A = kappa_per_m_ * v_max * v_max, B = speed_.top_accel_mps2();
+    const double u = A > 0.0 ? (std::sqrt(B * B + 3.0 * A * A) - B) / (3.0 * A) : 0.0;
+    const double bound = std::abs(y0_m_) * kappa_per_m_ / span_ * 0.25 * (1.0 - u * u) * (A * u + B);
+    if (bound <= limit_mps2) return true;
+    if (!std::isfinite(bound)) return false;
+    int k_peak = 0;
+    double peak = -1.0;
+    for (int k = 0; k <= kWitnessSamples; ++k) {
+      const double a = lat_accel_mps2(speed_.tau_s(k), logistic(x0_m_ + speed_.distance_m(k)), speed_.speed_mps(k));
+      if (!(a <= limit_mps2)) return false;
+      if (a > peak) peak = a, k_peak = k;
+    }
+    double lo = speed_.tau_s(std::max(k_peak - 1, 0)), hi = speed_.tau_s(std::min(k_peak + 1, kWitnessSamples));
+    for (int i = 0; i < kComfortRefinements; ++i) {
+      const double m1 = lo + (hi - lo) / 3.0, m2 = hi - (hi - lo) / 3.0;
+      const double a1 = lat_accel_mps2(m1, logistic(x0_m_ + speed_.distance_m(m1)), speed_.speed_mps(m1));
+      const double a2 = lat_accel_mps2(m2, logistic(x0_m_ + speed_.distance_m(m2)), speed_.speed_mps(m2));
+      if (!(a1 <= limit_mps2 && a2 <= limit_mps2)) return false;
+      if (a1 < a2) lo = m1;
+      else hi = m2;
+    }
+    return true;
+  }
+
+ private:
+  // |Y''(X) v^2 + Y'(X) a| tau_s into the merge, where the logistic is at l and the speed v_mps.
+  double lat_accel_mps2(double tau_s, double l, double v_mps) const {
+    const double y_xx = -y0_m_ * kappa_per_m_ * kappa_per_m_ * l * (1.0 - l) * (1.0 - 2.0 * l) / span_;
+    return std::abs(y_xx * v_mps * v_mps + slope(l) * speed_.accel_mps2(tau_s));
+  }
+  double logistic(double x_m) const { return 1.0 / (1.0 + std::exp(-kappa_per_m_ * (x_m - x_mid_m_))); }
+  double slope(double l) const { return -y0_m_ * kappa_per_m_ * l * (1.0 - l) / span_; }  // dY/dX
+  const WitnessSpeed& speed_;
+  double x0_m_ = 0.0, y0_m_ = 0.0, x_mid_m_ = 0.0, kappa_per_m_ = 0.0, l0_ = 0.0, span_ = 1.0;
+};
+
+// Every instant of the witness against every vehicle: where the ego is laterally nearer it than
+// RCPP eq. (2) plus progress_lateral_margin_m, D_lon plus progress_gap_margin_m behind a vehicle
+// ahead (of the target lane at its observed speed, of the lane beyond braking at its b_max from
+// now), and until rho / 2 ahead of a target-lane vehicle behind (accelerating at its a_accel^max).
+bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho,
+                         const WitnessPath& path) {
   const auto& v = t.steps[step].vehicles;
-  const ObservedState& ego = v[0];
   const Limits& el = t.vehicles[0].limits;
-  const double v0 = std::max(ego.vx_mps, 0.0);
   const double T = t.params.rss.response_time_s;
   const double half_lane = 0.5 * t.road.lane_width_m;
-  int at_k = -1;
-  double tau = 0.0, x = 0.0, ve_now = 0.0;
-  for (const NearPair& n : near) {
-    if (n.k != at_k) {
-      at_k = n.k;
-      tau = rho * n.k / kWitnessSamples;
-      x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
-      ve_now = witness_speed_mps(el, v0, ve, tau);
-    }
-    const ObservedState& ov = v[n.o];
-    const double vo = std::max(ov.vx_mps, 0.0);
-    const double xo = ov.x_m + vo * tau;
-    const bool target_lane = std::abs(ov.y_m) < half_lane;
-    if (xo >= x) {  // ahead: the ego is the rear vehicle
-      // A vehicle of the lane beyond may brake at its b_max at any time while the ego is near it
-      // (witness_merge_clear's comment): kept behind where that braking from now puts it.
-      double xa = xo, va = vo;
-      if (!target_lane) {
-        const double b = std::max(limits_of(t, n.o).brake_max_mps2, -ov.accel_mps2);
-        xa = ov.x_m + speed_change_distance_m(vo, 0.0, 0.0, b, tau);
-        va = std::max(0.0, vo - b * tau);
+  const double ego_half_width_m = 0.5 * size_of(t, 0).width_m;
+  // Every instant must be clear, so the order is free: from the midpoint back to the start, then
+  // on to the end. The ego is laterally near the target lane's vehicles around its midpoint, where
+  // most witnesses that are not clear fail, after a few instants.
+  for (int j = 0; j <= kWitnessSamples; ++j) {
+    const int k = j <= kWitnessSamples / 2 ? kWitnessSamples / 2 - j : j;
+    const double tau = rho * k / kWitnessSamples;
+    const WitnessPath::At e = path.at(k);
+    // RCPP eq. (2) is mu + (w_L + w_R) / 2 + a term of the lateral speeds alone: that term, for a
+    // vehicle on either side of the ego, once per instant (eq. (2) with no widths).
+    const auto d_lat_no_widths = [&](bool o_left) {
+      return rss_lateral_m({o_left ? 0.0 : e.vy_mps, o_left ? e.vy_mps : 0.0, 0.0, 0.0, T, el.lat_accel_max_mps2,
+                            el.lat_brake_min_mps2, t.params.rss.fluctuation_margin_m});
+    };
+    const double d_lat_left = d_lat_no_widths(true), d_lat_right = d_lat_no_widths(false);
+    for (std::size_t o = 1; o < v.size(); ++o) {
+      const ObservedState& ov = v[o];
+      const bool o_left = ov.y_m >= e.y_m;
+      const double d_lat = (o_left ? d_lat_left : d_lat_right) + ego_half_width_m + 0.5 * size_of(t, o).width_m;
+      // Written as "clear" so that a NaN lateral distance counts as near: judged, not skipped.
+      if (std::abs(ov.y_m - e.y_m) >= d_lat + p.progress_lateral_margin_m) continue;
+      const double vo = std::max(ov.vx_mps, 0.0);
+      const double xo = ov.x_m + vo * tau;
+      const bool target_lane = std::abs(ov.y_m) < half_lane;
+      if (xo >= e.x_m) {  // ahead: the ego is the rear vehicle
+        // A vehicle of the lane beyond may brake at its b_max at any time while the ego is near it
+        // (the comment above): kept behind where that braking from now puts it.
+        double xa = xo, va = vo;
+        if (!target_lane) {
+          const double b = std::max(limits_of(t, o).brake_max_mps2, -ov.accel_mps2);
+          xa = ov.x_m + speed_change_distance_m(vo, 0.0, 0.0, b, tau);
+          va = std::max(0.0, vo - b * tau);
+        }
+        const double d_lon = rss_longitudinal_m({e.v_mps, va, size_of(t, 0).length_m, size_of(t, o).length_m, T,
+                                                 el.accel_max_mps2, el.brake_min_mps2, limits_of(t, o).brake_max_mps2});
+        if (!(xa - e.x_m >= d_lon + p.progress_gap_margin_m)) return false;
+        continue;
       }
-      const double d_lon = rss_longitudinal_m({ve_now, va, size_of(t, 0).length_m, size_of(t, n.o).length_m, T,
-                                               el.accel_max_mps2, el.brake_min_mps2, limits_of(t, n.o).brake_max_mps2});
-      if (!(xa - x >= d_lon + p.progress_gap_margin_m)) return false;
-      continue;
+      if (!target_lane || tau > 0.5 * rho + kTieS) continue;  // past P_c the follower keeps D_lon
+      const Limits& ol = limits_of(t, o);
+      const double xf = ov.x_m + vo * tau + 0.5 * ol.accel_max_mps2 * tau * tau;
+      const double vf = vo + ol.accel_max_mps2 * tau;
+      const double d_lon = rss_longitudinal_m({vf, e.v_mps, size_of(t, o).length_m, size_of(t, 0).length_m, T,
+                                               ol.accel_max_mps2, ol.brake_min_mps2, el.brake_max_mps2});
+      if (!(e.x_m - xf >= d_lon + p.progress_gap_margin_m)) return false;
     }
-    if (!target_lane || tau > 0.5 * rho + kTieS) continue;  // past P_c the follower keeps D_lon
-    const Limits& ol = limits_of(t, n.o);
-    const double xf = ov.x_m + vo * tau + 0.5 * ol.accel_max_mps2 * tau * tau;
-    const double vf = vo + ol.accel_max_mps2 * tau;
-    const double d_lon = rss_longitudinal_m({vf, ve_now, size_of(t, n.o).length_m, size_of(t, 0).length_m, T,
-                                             ol.accel_max_mps2, ol.brake_min_mps2, el.brake_max_mps2});
-    if (x - xf < d_lon + p.progress_gap_margin_m) return false;
   }
   return true;
 }
@@ -188,29 +252,20 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
 // be across the line, Y >= -W/2, with the body on the path's heading. A merge whose midpoint
 // alone is short of the end could leave the rear of the body in the side lane past it: the ego
 // would have had to leave the road to take it.
-bool witness_leaves_side_lane(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, double c,
-                              double ve) {
-  const ObservedState& ego = t.steps[step].vehicles[0];
-  const Limits& el = t.vehicles[0].limits;
+bool witness_leaves_side_lane(const ObservedTrace& t, const RuleParams& p, const WitnessPath& path) {
   const VehicleSize& size = t.vehicles[0].size;
-  const double v0 = std::max(ego.vx_mps, 0.0);
   const double hl = 0.5 * size.length_m, hw = 0.5 * size.width_m;
   const double limit_x = t.road.side_lane_end_x_m - p.progress_gap_margin_m;
   const double line_y = -0.5 * t.road.lane_width_m;
-  if (ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, rho) + hl < limit_x)
-    return true;  // the front is still short of it when the merge ends
-  const CutLogistic logistic{c};
-  const double l0 = logistic.at(0.0), span = logistic.span();
+  if (path.at(kWitnessSamples).x_m + hl < limit_x) return true;  // the front is still short of it when the merge ends
   for (int k = 0; k <= kWitnessSamples; ++k) {
-    const double tau = rho * k / kWitnessSamples;
-    const double x = ego.x_m + speed_change_distance_m(v0, ve, el.accel_max_mps2, el.brake_min_mps2, tau);
-    if (x + hl < limit_x) continue;
-    const WitnessLateral lat = witness_lateral(ego.y_m, rho, logistic, l0, span, tau);
-    const double psi = std::atan2(lat.vy_mps, std::max(witness_speed_mps(el, v0, ve, tau), 1e-6));
+    const WitnessPath::At e = path.at(k);
+    if (e.x_m + hl < limit_x) continue;
+    const double psi = std::atan2(e.vy_mps, std::max(e.v_mps, 1e-6));
     const double cs = std::cos(psi), sn = std::sin(psi);
     for (const double sl : {-1.0, 1.0}) {  // the rear and front right corners (the left ones are higher)
-      const double corner_x = x + sl * hl * cs + hw * sn;
-      const double corner_y = lat.y_m + sl * hl * sn - hw * cs;
+      const double corner_x = e.x_m + sl * hl * cs + hw * sn;
+      const double corner_y = e.y_m + sl * hl * sn - hw * cs;
       // Written as "not across" so that a NaN counts against the witness.
       if (corner_x >= limit_x && !(corner_y >= line_y)) return false;
     }
@@ -265,8 +320,8 @@ double shortest_turn_out_m(const ObservedTrace& t, const RuleParams& p, double y
 namespace {
 
 // Some v_e* of the interval, its midpoint within the turn-in and the room, whose witness merge
-// (witness_merge_clear, either steepness within progress_lat_accel_max_mps2) is clear along its
-// whole duration.
+// (WitnessPath, either steepness, its peak lateral acceleration within
+// progress_lat_accel_max_mps2) is clear along its whole duration.
 constexpr int kWitnessSpeeds = 8;
 // The turn-in and the room bound the distance to the midpoint, the turn-out the distance from the
 // midpoint to the merge's end.
@@ -276,22 +331,17 @@ struct WitnessRoom {
 template <class ToMid, class ToEnd>
 bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, const Def1Interval& in,
                     const ToMid& to_mid_m, const ToEnd& to_end_m, const WitnessRoom& r) {
-  // The steepnesses within the bound depend on the duration and the ego's Y only, not on v_e*.
-  std::array<bool, 2> comfortable{};
-  for (std::size_t k = 0; k < comfortable.size(); ++k)
-    comfortable[k] = witness_peak_lat_accel_mps2(t.steps[step].vehicles[0].y_m, rho, witness_steepness()[k]) <=
-                     p.progress_lat_accel_max_mps2;
-  if (!comfortable[0] && !comfortable[1]) return false;
-  std::array<std::optional<std::vector<NearPair>>, 2> near;  // built when first needed
   for (int j = 0; j <= kWitnessSpeeds; ++j) {
     const double ve = in.ve_lo_mps + (in.ve_hi_mps - in.ve_lo_mps) * j / kWitnessSpeeds;
     const double mid = to_mid_m(ve);
     if (mid < r.turn_in_m || mid > r.room_m || to_end_m(ve) - mid < r.turn_out_m) continue;
-    for (std::size_t k = 0; k < comfortable.size(); ++k) {
-      if (!comfortable[k]) continue;
-      if (!witness_leaves_side_lane(t, p, step, rho, witness_steepness()[k], ve)) continue;
-      if (!near[k]) near[k] = witness_near_pairs(t, p, step, rho, witness_steepness()[k]);
-      if (witness_merge_clear(t, p, step, rho, ve, *near[k])) return true;
+    const ObservedState& ego = t.steps[step].vehicles[0];
+    const WitnessSpeed speed(t.vehicles[0].limits, std::max(ego.vx_mps, 0.0), ve, rho);
+    for (const double c : witness_steepness()) {
+      const WitnessPath path(ego, speed, c);
+      if (!path.comfortable(p.progress_lat_accel_max_mps2)) continue;
+      if (!witness_leaves_side_lane(t, p, path)) continue;
+      if (witness_merge_clear(t, p, step, rho, path)) return true;
     }
   }
   return false;

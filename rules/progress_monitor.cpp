@@ -1,6 +1,7 @@
 #include "rules/progress_monitor.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -25,6 +26,34 @@ enum class Activity {
   kMerging,   // in an attempt whose body reached into the main lane, or its centre past the lane line
 };
 
+// The steps of the last rho_b of an approach toward the main lane (v_Y > 0 at every step) still
+// under way at the trace's last step, past the side lane's centre and outside any attempt: its
+// first step to pause from. Whether
+// it leads into a start the trace does not show, and the rule does not accuse the ego of letting
+// a gap pass on what the trace does not hold: a merge of any duration the rule offers (up to
+// 2 rho_b) begun within the last rho_b would not yet have reached its midpoint (at rho / 2), and
+// an unbroken approach cannot tell a drift from the merge that follows it. Before the last rho_b
+// the clock runs: an ego that drifts toward the lane without ever merging is judged on all but
+// the last rho_b of the trace.
+std::optional<std::size_t> censored_approach_start(const ObservedTrace& t, const RuleParams& p,
+                                                   const MergeAttempts& attempts) {
+  if (t.steps.empty()) return std::nullopt;
+  const std::size_t last = t.steps.size() - 1;
+  for (const MergeAttempt& a : attempts.attempts)
+    if (!a.end_time_s) return std::nullopt;  // in an attempt at the end: judged as such
+  // Past the side lane's centre at the end: an ego settling on its centre from below moves toward
+  // the main lane too, and would otherwise always have an approach under way. A merge from below
+  // the centre (an ego halted off it) crosses it on its way.
+  if (!(ego_of(t.steps[last]).y_m > t.road.side_lane_y_m())) return std::nullopt;
+  std::size_t first = last + 1;
+  while (first > 0 && ego_of(t.steps[first - 1]).vy_mps > 0.0) --first;
+  if (!attempts.attempts.empty()) first = std::max(first, step_at(t, *attempts.attempts.back().end_time_s) + 1);
+  const double rho_b_s = merge_duration_base_s(p.merge_duration_s, t.road.lane_width_m, p.progress_lat_accel_max_mps2);
+  while (first <= last && t.steps[last].time_s - t.steps[first].time_s > rho_b_s + kTieS) ++first;
+  if (first > last) return std::nullopt;
+  return first;
+}
+
 // An attempt is a merge once the ego's body reaches into the main lane (its entry): from its start
 // to its end, the ego is merging, and an offer it lets pass after that begins a new run. Before
 // the entry, and in an attempt that never enters, the clock pauses while the ego moves toward the
@@ -32,10 +61,14 @@ enum class Activity {
 // again loses no credit for its outward motion, one that drifts out and back, or stalls off its
 // lane centre, keeps the clock running on the way back and while it stalls. The unbroken lateral
 // approach that led into a start (v_Y > 0, however slow: a long sigmoid leaves its lane centre
-// gently) pauses the clock too: the merge began there.
+// gently) pauses the clock too: the merge began there. An approach still unbroken at the trace's
+// last step, outside an attempt, may lead into a start the trace ended before: its last rho_b
+// pauses the clock (censored_approach_start).
 std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, const MergeAttempts& attempts) {
   std::vector<Activity> out(t.steps.size(), Activity::kWaiting);
   const double line_y = -0.5 * t.road.lane_width_m;
+  if (const auto from = censored_approach_start(t, p, attempts))
+    for (std::size_t i = *from; i < out.size(); ++i) out[i] = Activity::kPaused;
   for (const MergeAttempt& a : attempts.attempts) {
     for (std::size_t i = a.start_step; i > 0 && ego_of(t.steps[i - 1]).vy_mps > 0.0; --i)
       if (out[i - 1] == Activity::kWaiting) out[i - 1] = Activity::kPaused;

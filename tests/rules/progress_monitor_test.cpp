@@ -30,6 +30,33 @@ TEST(ProgressMonitor, HaltingOnAnEmptyRoadIsNeedless) {
   EXPECT_NEAR(out.result.min_margin, -2.0, 1e-9);
 }
 
+TEST(ProgressMonitor, AnApproachTheTraceEndsBeforeItsStartIsNotJudged) {
+  // An empty road, the ego at 20 m/s (rho_b = rho_m = 4 s): it waits 2.5 s, then moves toward the
+  // main lane at 0.05 m/s, below lat_speed_hysteresis_mps, so no start is observed before the
+  // trace ends at 6 s. The approach may lead into a start the trace does not show: its last
+  // rho_b (all of it here) pauses the clock, and the 2.5 s waited are within the grace. Without
+  // the approach the ego waits 6 s and fails.
+  Scenario s = base_scenario();
+  const Trace straight = constant_accel_trace(s, 6.0);
+  EXPECT_TRUE(test::run(monitor_progress, s, test::with_lateral_move(straight, 2.5, 0.05)).result.holds);
+  const MonitorOutput out = test::run(monitor_progress, s, straight);
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
+}
+
+TEST(ProgressMonitor, OnlyTheLastRhoBOfAnApproachThatNeverStartsPausesTheClock) {
+  // The same road; the ego drifts toward the main lane at 0.05 m/s from the start of an 8 s
+  // trace and never starts a merge: only the last rho_b (4 s) of its approach pauses the clock,
+  // and it waited the 4 s before, 1 s beyond the grace. A drift that never merges is no merge
+  // under way.
+  Scenario s = base_scenario();
+  const MonitorOutput out =
+      test::run(monitor_progress, s, test::with_lateral_move(constant_accel_trace(s, 8.0), 0.0, 0.05));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
+  EXPECT_NEAR(*out.result.first_violation_time_s, 3.02, 1e-9);
+}
+
 TEST(ProgressMonitor, HaltingBesideADensePlatoonIsNotNeedless) {
   // Vehicles every 45.5 m at 20 m/s (just RSS-safe for them, far too tight for the ego, which
   // needs about 90 m) pass the halted ego: no gap is feasible, the halt is justified and the

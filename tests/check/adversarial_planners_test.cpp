@@ -1,7 +1,8 @@
 // Adversarial planners: each does a wrong thing the judge must see, and is judged violated with the
 // right rule and the right party (the ego). Liveness: a creeper at 0.06 m/s, an early stopper 39 m
 // before the side lane's end, a weaver that approaches the main lane and turns back again and
-// again, a slow drifter that enters the main lane at 0.09 m/s lateral, and a planner that
+// again, a slow drifter that enters the main lane at 0.09 m/s lateral, a drifter that never
+// starts a merge and ends its run still on its way, and a planner that
 // pretends to merge by drifting out and back. A RapidCheck property: a planner that never merges
 // fails `progress` on every generated scenario in which a gap stayed feasible longer than the
 // grace (feasibility sampled independently of the monitor's own run bookkeeping).
@@ -145,6 +146,25 @@ TEST(AdversarialPlanners, AWeaverTowardTheMainLaneOscillates) {
   EXPECT_EQ(smooth.liable_id, Party::ego());
   // Its outward swings are attempts that never entered the main lane: waiting, for progress.
   EXPECT_FALSE(rule(r, "progress").holds);
+}
+
+TEST(AdversarialPlanners, ADrifterThatNeverStartsAMergeIsCreditedOnlyTheEndOfItsApproach) {
+  // At 5 m/s, y rising 2 mm per metre (1 cm/s lateral) from the side lane's centre: it moves
+  // toward the main lane for the whole run and never starts a merge; the trace ends with it still
+  // on its way. Only the last rho_b of that approach pauses the clock (the start it may lead into
+  // would lie beyond the trace); the gaps it let pass before fail it.
+  Scenario s = passing_traffic();
+  s.ego.speed_mps = 5.0;
+  const double side_y = -3.5;
+  auto p = follower("drifter", [side_y](double x) { return side_y + 0.002 * std::max(0.0, x); }, 5.0, 10.0);
+  const CheckResult r = check_scenario(s, p);
+  const ObservedState& last = r.trace.steps.back().vehicles[0];
+  ASSERT_GT(last.vy_mps, 0.0);                   // still approaching when the trace ends
+  ASSERT_LT(last.y_m, -0.5 * r.trace.road.lane_width_m);  // never in the main lane
+  const RuleResult& progress = rule(r, "progress");
+  ASSERT_FALSE(progress.holds) << progress.detail;
+  EXPECT_EQ(progress.liable_id, Party::ego());
+  EXPECT_LT(*progress.first_violation_time_s, r.trace.steps.back().time_s - r.rule_params.merge_duration_s);
 }
 
 TEST(AdversarialPlanners, ASlowDrifterIsMergingAndJudgedByDefinition1) {

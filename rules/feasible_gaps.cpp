@@ -53,6 +53,7 @@ bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t
 // would then fail. The lateral margin is the tracking slack a driven merge needs: no controller
 // follows its reference path to the centimetre.
 constexpr int kWitnessSamples = 40;
+static_assert(kWitnessSamples % 2 == 0, "instant kWitnessSamples / 2 is the midpoint, rho / 2");
 // The witness's peak lateral acceleration, bracketed by its kWitnessSamples + 1 instants, is
 // refined by this many steps of a ternary search (the peak is narrow: the instants alone could
 // miss it by several per cent).
@@ -85,7 +86,6 @@ class WitnessSpeed {
       speed_mps_[static_cast<std::size_t>(k)] = speed_mps(tau);
     }
   }
-  double rho_s() const { return rho_s_; }
   double tau_s(int k) const { return rho_s_ * k / kWitnessSamples; }
   double distance_m(int k) const { return distance_m_[static_cast<std::size_t>(k)]; }
   double speed_mps(int k) const { return speed_mps_[static_cast<std::size_t>(k)]; }

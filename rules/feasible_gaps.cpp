@@ -135,6 +135,7 @@ class WitnessPath {
     l0_ = logistic(x0_m_);
     span_ = logistic(x0_m_ + first_m + second_m) - l0_;
   }
+  double tau_s(int k) const { return speed_.tau_s(k); }
   // The ego on the witness at instant k (tau = rho k / kWitnessSamples).
   At at(int k) const {
     const double x = x0_m_ + speed_.distance_m(k), v = speed_.speed_mps(k);
@@ -191,8 +192,7 @@ class WitnessPath {
 // RCPP eq. (2) plus progress_lateral_margin_m, D_lon plus progress_gap_margin_m behind a vehicle
 // ahead (of the target lane at its observed speed, of the lane beyond braking at its b_max from
 // now), and until rho / 2 ahead of a target-lane vehicle behind (accelerating at its a_accel^max).
-bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho,
-                         const WitnessPath& path) {
+bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_t step, const WitnessPath& path) {
   const auto& v = t.steps[step].vehicles;
   const Limits& el = t.vehicles[0].limits;
   const double T = t.params.rss.response_time_s;
@@ -203,7 +203,7 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
   // most witnesses that are not clear fail, after a few instants.
   for (int j = 0; j <= kWitnessSamples; ++j) {
     const int k = j <= kWitnessSamples / 2 ? kWitnessSamples / 2 - j : j;
-    const double tau = rho * k / kWitnessSamples;
+    const double tau = path.tau_s(k);
     const WitnessPath::At e = path.at(k);
     // RCPP eq. (2) is mu + (w_L + w_R) / 2 + a term of the lateral speeds alone: that term, for a
     // vehicle on either side of the ego, once per instant (eq. (2) with no widths).
@@ -235,7 +235,7 @@ bool witness_merge_clear(const ObservedTrace& t, const RuleParams& p, std::size_
         if (!(xa - e.x_m >= d_lon + p.progress_gap_margin_m)) return false;
         continue;
       }
-      if (!target_lane || tau > 0.5 * rho + kTieS) continue;  // past P_c the follower keeps D_lon
+      if (!target_lane || k > kWitnessSamples / 2) continue;  // past P_c the follower keeps D_lon
       const Limits& ol = limits_of(t, o);
       const double xf = ov.x_m + vo * tau + 0.5 * ol.accel_max_mps2 * tau * tau;
       const double vf = vo + ol.accel_max_mps2 * tau;
@@ -341,7 +341,7 @@ bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t ste
       const WitnessPath path(ego, speed, c);
       if (!path.comfortable(p.progress_lat_accel_max_mps2)) continue;
       if (!witness_leaves_side_lane(t, p, path)) continue;
-      if (witness_merge_clear(t, p, step, rho, path)) return true;
+      if (witness_merge_clear(t, p, step, path)) return true;
     }
   }
   return false;

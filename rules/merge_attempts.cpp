@@ -173,9 +173,14 @@ double pair_margin_m(const ObservedTrace& t, const Def1Reading& r, const PairCov
                   : def1_2_margin_m(t, r.step, c.vehicle, r.ve_star_mps, r.rho_s);
 }
 
-bool delivered_in_window(const CoopExchange& x, const MergeAttempt& a, double from_s) {
+// An acceptance an attempt may rest on: delivered by its entry (or start), and inside its decision
+// window or still binding its sender when the attempt starts (until t_r + rho_c + rho_m, the span
+// for which `progress` offers it: an ego that let it pass would fail there, so a merge begun on it
+// then, after an abort or a wait for the gap's other vehicle, is made on it).
+bool delivered_in_window(const CoopExchange& x, const MergeAttempt& a, double from_s, const RuleParams& p) {
   const double d = x.accept_delivered_time_s;
-  return d >= 0.0 && d >= from_s - kTieS && d <= a.entry_time_s.value_or(a.start_time_s) + kTieS;
+  if (d < 0.0 || d > a.entry_time_s.value_or(a.start_time_s) + kTieS) return false;
+  return d >= from_s - kTieS || a.start_time_s <= x.request_time_s + p.comm_threshold_s + p.merge_duration_s + kTieS;
 }
 
 PcCheck pc_check_of(const Inputs& in, std::size_t i, const MergeAttempt& a) {
@@ -365,7 +370,7 @@ bool AttemptJudge::try_def2() {
     const CoopExchange& x = in_.exchanges[i];
     // An acceptance of a request that lacks a number accepted nothing the rules can hold anyone
     // to: it is no acceptance (def2_request_sound fails the request).
-    if (!x.complete() || !x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_))
+    if (!x.complete() || !x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_, in_.p))
       continue;
     const int k = in_.t.index_of(x.request->to_id);
     const bool broke =
@@ -405,7 +410,7 @@ bool AttemptJudge::try_def2() {
 bool AttemptJudge::try_def2_unknown_gap() {
   for (std::size_t i = 0; i < in_.exchanges.size(); ++i) {
     const CoopExchange& x = in_.exchanges[i];
-    if (!x.complete() || !x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_))
+    if (!x.complete() || !x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_, in_.p))
       continue;
     const int k = in_.t.index_of(x.request->to_id);
     const GapIndices then = in_.around[std::min(step_at_or_after(in_.t, x.accept_delivered_time_s), in_.t.steps.size() - 1)];
@@ -576,7 +581,7 @@ void AttemptJudge::no_basis() {
   }
   for (const CoopExchange& x : in_.exchanges) {
     const double d = x.accept_delivered_time_s;
-    if (d < 0.0 || x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_)) continue;
+    if (d < 0.0 || x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_, in_.p)) continue;
     const int k = in_.t.index_of(x.request->to_id);
     const GapIndices then = in_.around[std::min(step_at_or_after(in_.t, d), in_.t.steps.size() - 1)];
     const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/merge_duration.h"
+#include "core/rss.h"
 #include "rules/coop_exchange.h"
 #include "rules/definition2_inequalities.h"
 #include "rules/definition1_gap.h"
@@ -90,6 +91,7 @@ std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, co
 // nothing: the merge it promised never existed, and an ego that drops it, or never takes it up,
 // is waiting for a reason (the responder rules hold the sender liable).
 struct Acceptance {
+  const CoopExchange* exchange = nullptr;
   int partner_id = 0;
   bool ego_ahead = true;  // Def. 2.1 (the ego merges ahead of the partner) or 2.2
   double from_s = 0.0, to_s = 0.0;
@@ -107,7 +109,7 @@ std::vector<Acceptance> acceptances(const ObservedTrace& t, const RuleParams& p,
     const double to_s = x.request_time_s + p.comm_threshold_s + p.merge_duration_s;
     const int k = t.index_of(x.request->to_id);
     if (k >= 1 && responder_broke_acceptance(t, p, x, static_cast<std::size_t>(k), to_s)) continue;
-    out.push_back({x.request->to_id, x.request->coop_case == CoopCase::kEgoAhead, d, to_s});
+    out.push_back({&x, x.request->to_id, x.request->coop_case == CoopCase::kEgoAhead, d, to_s});
   }
   return out;
 }
@@ -143,6 +145,33 @@ bool other_vehicle_leaves_room(const ObservedTrace& t, const RuleParams& p, cons
   return true;
 }
 
+// ... and only while the sender itself still leaves room for it: a merge begun now at the ego's
+// observed speed (held, as Def. 2 holds it) reaches its midpoint rho / 2 later outside the sender's
+// RSS distance (RCPP eq. (1); 2.1: the sender behind, 2.2: ahead), the sender on the profile it
+// accepted (toward v_o* by t_r + rho_c, as def2_positions and sigmoid_pc_bounds predict it), at v_o*
+// past the acceptance's span. An ego that slowed, or let the sender close in, until a merge would
+// end inside its safe distance (sigmoid_pc_bounds, the ego's) has no merge left on it.
+bool partner_leaves_room(const ObservedTrace& t, const RuleParams& p, const Acceptance& a, std::size_t i, double rho_s) {
+  const int k = t.index_of(a.partner_id);
+  if (k < 1) return false;
+  const std::size_t ko = static_cast<std::size_t>(k);
+  const double t_mid = t.steps[i].time_s + 0.5 * rho_s;
+  const double t_profile = std::min(t_mid, a.to_s);
+  const ProfileBound b = accepted_profile_bound(t, p, *a.exchange, ko, t_profile);
+  if (!b.valid) return false;
+  const double v_o = std::max(0.0, b.profile_v_mps);
+  const double x_o = b.profile_x_m + v_o * (t_mid - t_profile);
+  const ObservedState& ego = ego_of(t.steps[i]);
+  const double v_e = std::max(0.0, ego.vx_mps);
+  const double x_e = ego.x_m + v_e * 0.5 * rho_s;
+  const std::size_t rear = a.ego_ahead ? ko : 0, front = a.ego_ahead ? 0 : ko;
+  const Limits& r = limits_of(t, rear);
+  const double d_lon = rss_longitudinal_m({a.ego_ahead ? v_o : v_e, a.ego_ahead ? v_e : v_o, size_of(t, rear).length_m,
+                                           size_of(t, front).length_m, t.params.rss.response_time_s, r.accel_max_mps2,
+                                           r.brake_min_mps2, limits_of(t, front).brake_max_mps2});
+  return (a.ego_ahead ? x_e - x_o : x_o - x_e) >= d_lon;
+}
+
 Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepted, std::size_t i) {
   Offer o;
   o.gaps = def1_gaps_feasible(ctx.trace, ctx.params, i);
@@ -151,7 +180,8 @@ Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepte
   const double rho_s = merge_duration_base_s(ctx.params.merge_duration_s, ctx.trace.road.lane_width_m,
                                              ctx.params.progress_lat_accel_max_mps2);
   for (const Acceptance& a : accepted)
-    if (now >= a.from_s - kTieS && now <= a.to_s + kTieS && other_vehicle_leaves_room(ctx.trace, ctx.params, a, i, rho_s))
+    if (now >= a.from_s - kTieS && now <= a.to_s + kTieS && other_vehicle_leaves_room(ctx.trace, ctx.params, a, i, rho_s) &&
+        partner_leaves_room(ctx.trace, ctx.params, a, i, rho_s))
       o.partner_id = a.partner_id;
   return o;
 }

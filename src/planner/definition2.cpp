@@ -5,14 +5,14 @@
 #include "core/rss.h"
 
 namespace mg {
-namespace {
 
-// D_lon of ineq. (4): the ego as the rear vehicle after the exchange, the responder in front at v_o*.
 double d_lon_ego_rear_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps) {
   return rss_longitudinal_m({coop_ego_speed_after_mps(c, CoopCase::kEgoBehind), vo_star_mps, c.ego_length_m,
                              responder.length_m, c.response_time_s, c.ego_limits.accel_max_mps2,
                              c.ego_limits.brake_min_mps2, responder.limits.brake_max_mps2});
 }
+
+namespace {
 
 // The responder starts when the request arrives: request_latency_s late at v_o instead of v_o*.
 double latency_shift_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps) {

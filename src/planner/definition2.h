@@ -40,6 +40,9 @@ double coop_pc_m(const CoopContext& c, CoopCase k);
 // as the rear vehicle at v_o*, the ego in front at its post-exchange speed. RCPP eq. (1).
 double d_lon_star_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps);
 
+// D_lon of ineq. (4) (Def. 2.2): the ego as the rear vehicle after the exchange, the responder in
+// front at v_o*. RCPP eq. (1).
+double d_lon_ego_rear_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps);
 // RCPP ineq. (3); Def. 2.1 B. Margin (m, >= 0 holds):
 //   P_c - D*_lon - [X_o + (v_o + v_o*)/2 rho_c + v_o* rho_m/2]. Non-increasing in v_o*.
 double ineq3_margin_m(const CoopContext& c, const MainLaneVehicle& responder, double vo_star_mps);

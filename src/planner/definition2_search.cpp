@@ -127,11 +127,46 @@ Def2Plan coop_plan(const CoopCandidate& x, const CoopBounds& b, double pc_m, dou
   return plan;
 }
 
+// The cheapest sigmoid of candidate x through pc_m, its responder on responder_ramp (whose
+// RSS distance is checked over the exchange and the merge, rho_c + rho_m), base_cost its cost
+// besides the sigmoid's; its cost in *cost_out.
+std::optional<Def2Plan> coop_sigmoid(const CoopCandidate& x, const CoopBounds& b, double pc_m,
+                                     const SpeedRamp& responder_ramp, double base_cost, double* cost_out) {
+  const WorldSnapshot& w = x.w;
+  const PlannerSetup& s = *w.setup;
+  const RcppParams p = rcpp_params(s);
+  const CoopContext& c = x.c;
+  const MainLaneVehicle& o = x.responder();
+  const double start_x = c.ego_x_m + coop_ego_travel_m(c, x.k);
+  const double complete_by_x = pc_m + x.v_after_mps * 0.5 * c.merge_duration_s;
+  const SpeedRamp ramp{c.ego_speed_mps, x.v_after_mps, c.ego_limits.accel_max_mps2, c.ego_limits.brake_min_mps2};
+  const auto kappa_range = [&](double pc) { return kappa_range_for(s, pc, start_x, complete_by_x, ramp, c.ego_x_m); };
+  const GapTracks tracks = coop_tracks(x, responder_ramp);
+  const auto partner_x = [&](const ObservedVehicle& v, double t) {
+    return v.id == o.id ? o.x_m + responder_ramp.distance_at_m(t) : constant_speed_x(v, t);
+  };
+  std::optional<FieldTimeline> field;  // built when the first candidate needs it
+  const double kappa_cap = kappa_cap_per_m(s, ramp);
+  const auto cost = [&](double pc, double kappa) {
+    const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
+    // No planning buffer: the responder's cooperative profile is built to leave exactly D*_lon.
+    if (!occupancy_clear(s, c.ego_x_m, w.ego.y_m, sig, ramp,
+                         OccupancyInstants::over(c.comm_threshold_s + c.merge_duration_s), tracks, 0.0))
+      return std::numeric_limits<double>::infinity();
+    if (!field) field = field_timeline(w, 2.0 * x.t_c_s, partner_x);
+    return base_cost + sharp_sigmoid_penalty(kappa, kappa_cap) +
+           field_cost(p, *field, sig, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); });
+  };
+  const auto choice = choose_sigmoid({pc_m}, kappa_range, p.kappa_candidates, cost);
+  if (!choice) return std::nullopt;
+  *cost_out = choice->cost;
+  return coop_plan(x, b, pc_m, choice->kappa_per_m);
+}
+
 // One Definition 2 candidate: responder lane[i], case k; its cost in *cost_out.
 std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
                                        std::size_t i, CoopCase k, double* cost_out) {
-  const PlannerSetup& s = *w.setup;
-  const RcppParams p = rcpp_params(s);
+  const RcppParams p = rcpp_params(*w.setup);
   const CoopContext c = coop_context(w);
   const MainLaneVehicle& o = lane[i];
   const VoStar vo = solve_vo_star(c, o, k);
@@ -141,37 +176,11 @@ std::optional<Def2Plan> coop_candidate(const WorldSnapshot& w, const std::vector
   const auto b = coop_bounds(x);
   const double pc = coop_pc_m(c, k);
   if (!b || pc < b->pc_min_m || pc > b->pc_max_m) return std::nullopt;  // P_c bounds cross (RCPP §II-C)
-  const double start_x = c.ego_x_m + coop_ego_travel_m(c, k);
-  const double complete_by_x = pc + x.v_after_mps * 0.5 * c.merge_duration_s;
-  const SpeedRamp ramp{c.ego_speed_mps, x.v_after_mps, c.ego_limits.accel_max_mps2, c.ego_limits.brake_min_mps2};
-  const auto kappa_range = [&](double pc_m) {
-    return kappa_range_for(s, pc_m, start_x, complete_by_x, ramp, c.ego_x_m);
-  };
   const double base =
       p.cost_time_weight * x.t_c_s +
       p.cost_speed_change_weight * (std::abs(vo.vo_star_mps - o.speed_mps) + std::abs(x.v_after_mps - c.ego_speed_mps));
   const double rate = std::abs(vo.vo_star_mps - o.speed_mps) / c.comm_threshold_s + 1e-9;
-  const SpeedRamp responder_ramp{o.speed_mps, vo.vo_star_mps, rate, rate};
-  const GapTracks tracks = coop_tracks(x, responder_ramp);
-  const auto partner_x = [&](const ObservedVehicle& v, double t) {
-    return v.id == o.id ? o.x_m + responder_ramp.distance_at_m(t) : constant_speed_x(v, t);
-  };
-  std::optional<FieldTimeline> field;  // built when the first candidate needs it
-  const double kappa_cap = kappa_cap_per_m(s, ramp);
-  const auto cost = [&](double pc_m, double kappa) {
-    const Sigmoid sig{s.road.lane_width_m, kappa, pc_m, -s.road.lane_width_m};
-    // No planning buffer: the responder's cooperative profile is built to leave exactly D*_lon.
-    if (!occupancy_clear(s, c.ego_x_m, w.ego.y_m, sig, ramp,
-                         OccupancyInstants::over(c.comm_threshold_s + c.merge_duration_s), tracks, 0.0))
-      return std::numeric_limits<double>::infinity();
-    if (!field) field = field_timeline(w, 2.0 * x.t_c_s, partner_x);
-    return base + sharp_sigmoid_penalty(kappa, kappa_cap) +
-           field_cost(p, *field, sig, [&](double t) { return c.ego_x_m + ramp.distance_at_m(t); });
-  };
-  const auto choice = choose_sigmoid({pc}, kappa_range, p.kappa_candidates, cost);
-  if (!choice) return std::nullopt;
-  *cost_out = choice->cost;
-  return coop_plan(x, *b, pc, choice->kappa_per_m);
+  return coop_sigmoid(x, *b, pc, SpeedRamp{o.speed_mps, vo.vo_star_mps, rate, rate}, base, cost_out);
 }
 
 // The clauses of Definition 2 the order at the request allows: 2.1 (c_e ahead of c_o^i) for a
@@ -208,6 +217,55 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
     }
   }
   return best;
+}
+
+bool responder_breaks_acceptance(const WorldSnapshot& w, const HeldAcceptance& a, const MainLaneVehicle& o) {
+  if (w.time_s < a.yield_by_s) return false;
+  const double over_mps = o.speed_mps - a.vo_star_mps;
+  return (a.coop_case == CoopCase::kEgoAhead ? over_mps : -over_mps) > kBrokenPromiseMps;
+}
+
+std::optional<Def2Plan> plan_accepted_definition2(const WorldSnapshot& w, const HeldAcceptance& a) {
+  if (w.time_s < a.yield_by_s) return std::nullopt;
+  CoopContext c = coop_context(w);
+  // The answer is in hand: no exchange window, no request in flight.
+  c.comm_threshold_s = 0.0;
+  c.request_latency_s = 0.0;
+  if (w.time_s + 0.5 * c.merge_duration_s > a.bound_until_s + kHeldAcceptanceTieS) return std::nullopt;
+  const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
+  const auto it = std::find_if(lane.begin(), lane.end(), [&](const MainLaneVehicle& v) { return v.id == a.partner_id; });
+  if (it == lane.end()) return std::nullopt;
+  const std::size_t i = static_cast<std::size_t>(it - lane.begin());
+  const MainLaneVehicle& o = *it;
+  if (responder_breaks_acceptance(w, a, o)) return std::nullopt;
+  const std::vector<CoopCase> cases = cases_by_order(w, o);
+  if (std::find(cases.begin(), cases.end(), a.coop_case) == cases.end()) return std::nullopt;
+  // The responder as it may still drive: toward v_o* from its speed now, never on the ego's side
+  // of it (2.1: no slower than it is; 2.2: no faster), at v_o* from the merge's start.
+  const bool ahead = a.coop_case == CoopCase::kEgoAhead;
+  const double v_o = ahead ? std::max(o.speed_mps, a.vo_star_mps) : std::min(o.speed_mps, a.vo_star_mps);
+  VoStar vo;
+  vo.feasible = true;
+  vo.coop_case = a.coop_case;
+  vo.vo_star_mps = v_o;
+  vo.d_lon_star_m = std::max(a.d_lon_star_m, ahead ? d_lon_star_m(c, o, v_o) : d_lon_ego_rear_m(c, o, v_o));
+  const CoopCandidate x{w, lane, i, a.coop_case, c, vo, coop_ego_speed_after_mps(c, a.coop_case), 0.5 * c.merge_duration_s};
+  auto b = coop_bounds(x);
+  if (!b) return std::nullopt;
+  // Where the request said the ego would cross (def2_request_truthful: 2.1 no sooner, 2.2 no later).
+  if (ahead) b->pc_min_m = std::max(b->pc_min_m, a.pc_m);
+  else b->pc_max_m = std::min(b->pc_max_m, a.pc_m);
+  const double pc = coop_pc_m(c, a.coop_case);
+  if (pc < b->pc_min_m || pc > b->pc_max_m) return std::nullopt;
+  double cost = 0.0;
+  auto plan = coop_sigmoid(x, *b, pc, SpeedRamp{v_o, v_o, 1.0, 1.0}, 0.0, &cost);
+  if (!plan) return std::nullopt;
+  plan->decision.mode = DecisionMode::kDef2Merge;
+  plan->decision.reason = std::string(ahead ? "Def. 2.1 (ego ahead)" : "Def. 2.2 (ego behind)") + ": vehicle " +
+                          std::to_string(o.id) + "'s acceptance of t = " + fixed_text(a.delivered_time_s, 2) +
+                          " s binds it until t = " + fixed_text(a.bound_until_s, 2) + " s; merging again at P_c = " +
+                          fixed_text(pc, 1) + " m (asked: " + fixed_text(a.pc_m, 1) + " m)";
+  return plan;
 }
 
 }  // namespace mg

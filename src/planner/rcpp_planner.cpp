@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "core/fixed_text.h"
@@ -284,10 +285,25 @@ std::string RcppPlanner::advance_phase(const WorldSnapshot& w) {
   // a cooperative merge the hold stays: asking a partner that has just broken its acceptance again
   // at once put the ego in its lane without the right of way.
   const CommittedMerge& aborted = merging->merge;
+  forget_broken_acceptance(aborted, w);
   const bool unmoved = aborted.decision.mode == DecisionMode::kDef1Merge && w.ego.y_m - aborted.start_y_m <= kUnmovedAbortM;
   side.no_merge_before_s = unmoved ? w.time_s : w.time_s + kMergeRetryAfterAbortS;
   phase_ = std::move(side);
   return "merge aborted (P_c bounds crossed or lane occupied at the predicted positions); ";
+}
+
+// A cooperative merge aborted with its partner driving on the wrong side of the v_o* it accepted:
+// that partner is not asked again, nor its acceptance merged on again (a reneging partner that
+// accepted a second request drove into the ego merging on it; a campaign finding).
+void RcppPlanner::forget_broken_acceptance(const CommittedMerge& aborted, const WorldSnapshot& w) {
+  if (aborted.decision.mode != DecisionMode::kDef2Merge || !held_ || held_->partner_id != aborted.decision.coop_partner_id)
+    return;
+  for (const ObservedVehicle& o : w.others) {
+    if (o.id != held_->partner_id || !responder_breaks_acceptance(w, *held_, to_lane_vehicle(o))) continue;
+    retry_after_s_[o.id] = std::numeric_limits<double>::infinity();
+    held_.reset();
+    return;
+  }
 }
 
 std::optional<CommittedMerge> RcppPlanner::read_reply(InSideLane& side, const WorldSnapshot& w, std::string& note) {
@@ -300,6 +316,16 @@ std::optional<CommittedMerge> RcppPlanner::read_reply(InSideLane& side, const Wo
     // once a cycle, so one delivered after the deadline may still be read before the next).
     const double delivered_s = std::isnan(m.delivered_time_s) ? w.time_s : m.delivered_time_s;
     if (m.type == MessageType::kAccept && delivered_s <= pending.deadline_s + kDeadlineTieS) {
+      const Def2Plan& asked = pending.plan;
+      const double bound_until_s =
+          asked.decision.time_s + w.setup->params.planner.comm_threshold_s + w.setup->params.planner.merge_duration_s;
+      const double yield_by_s =
+          asked.decision.time_s + w.setup->ego.v2v.latency_s + w.setup->params.planner.comm_threshold_s;
+      held_ = HeldAcceptance{partner,     asked.vo.coop_case, asked.vo.vo_star_mps, asked.vo.d_lon_star_m, asked.vo.pc_m,
+                             delivered_s, yield_by_s,         bound_until_s};
+      // The partner now cooperates and refuses any new request while bound (a merge aborted on its
+      // acceptance is made again on it instead).
+      retry_after_s_[partner] = std::max(retry_after_s_[partner], bound_until_s);
       RcppDecision d = pending.plan.decision;
       d.mode = DecisionMode::kDef2Merge;
       d.reason = "vehicle " + std::to_string(partner) + " accepted: " + d.reason;
@@ -365,18 +391,22 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
   if (w.time_s < side.no_merge_before_s)  // just aborted: back toward the side lane centre first
     return {hold_after_abort(side, w, h, side_lane_path(side.lateral, w), note), std::nullopt};
   if (defers_merge(side, w, false)) return {back_to_centre(side, w, h, reversals_, false, note), std::nullopt};
-  // A Definition 1 plan's merge (it supersedes an open request), or the way back to the centre
-  // when the weaving budget defers it.
-  const auto take_def1_plan = [&](const Def1Plan& plan) -> SideLaneStep {
-    CommittedMerge merge = start_def1_merge(side, w, plan, reversals_);
+  // A merge (it supersedes an open request), or the way back to the centre when the weaving
+  // budget defers it.
+  const auto take = [&](CommittedMerge merge) -> SideLaneStep {
     if (const bool away = turns_away_first(merge, w); defers_merge(side, w, away))
       return {back_to_centre(side, w, h, reversals_, away, note), std::nullopt};
     side.pending.reset();
     merge.decision.reason = note + merge.decision.reason;
     return {{}, std::move(merge)};
   };
+  const auto take_def1_plan = [&](const Def1Plan& plan) { return take(start_def1_merge(side, w, plan, reversals_)); };
   std::string why;
   if (auto plan = plan_definition1(w, MergeDurations::kRhoM, &why)) return take_def1_plan(*plan);
+  if (held_ && !side.pending) {
+    if (auto plan = plan_accepted_definition2(w, *held_))
+      return take(commit(side, w, plan->sigmoid, plan->ego_speed_after_mps, std::move(plan->decision)));
+  }
   SideLaneStep step;
   step.out.path = side_lane_path(side.lateral, w);
   send_request(side, w, step.out, note);

@@ -63,6 +63,7 @@ class RcppPlanner : public Planner {
   SideLaneStep decide_in_side_lane(InSideLane& side, const WorldSnapshot& w);
   void take_sooner_merge(Merging& merging, const WorldSnapshot& w) const;
   bool defers_merge(const InSideLane& side, const WorldSnapshot& w, bool turns_away) const;
+  void forget_broken_acceptance(const CommittedMerge& aborted, const WorldSnapshot& w);
   std::optional<CommittedMerge> read_reply(InSideLane& side, const WorldSnapshot& w, std::string& note);
   void send_request(InSideLane& side, const WorldSnapshot& w, RcppCycle& out, std::string& note);
 
@@ -72,6 +73,9 @@ class RcppPlanner : public Planner {
   // Until when the latest Def. 2.2 request binds the ego to braking at most b_min (Def. 2.2A:
   // rho_c after it, whether or not the ego still waits for its answer); -1 once refused.
   double ego_behind_request_until_s_ = -1.0;
+  // The latest acceptance read, kept while it binds its sender: a merge made on it and aborted
+  // may be made again on it (plan_accepted_definition2).
+  std::optional<HeldAcceptance> held_;
   BrakingMemory braking_;
   ReversalLedger reversals_;  // starts a merge only while an abort of it stays within the smoothness rule
 };

@@ -371,25 +371,44 @@ TEST(MergeAttempts, AnAcceptanceFromAVehicleOutsideTheGapGrantsNothing) {
   EXPECT_EQ(only_attempt(*j).basis, RowBasis::kNone);
 }
 
-TEST(MergeAttempts, AnAbortedAttemptsAcceptanceDoesNotCarryOverToTheNextAttempt) {
-  // Out at 1 m/s for 0.5 s from 1 s and back (aborted at about 1.96 s), then over from 2.5 s: the
-  // acceptance of 0.9 s grants the first attempt; the second one's window starts at the abort.
-  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
-  Trace t = with_exchange(test::with_aborted_move(constant_accel_trace(s, 5.0), 1.0, 1.0, 0.5), 1, 0.9);
-  const Trace second = merging_from(s, 2.5, 5.0);
+// Out at 1 m/s for 0.5 s from 1 s and back (aborted at about 1.96 s), then over again from
+// second_from_s. The acceptance of 0.9 s (request at 0.5 s) binds vehicle 1 until 0.5 + rho_c +
+// rho_m = 5.5 s, the span for which progress offers it.
+Trace aborted_then_over_again(const Scenario& s, double second_from_s, double horizon_s) {
+  Trace t = with_exchange(test::with_aborted_move(constant_accel_trace(s, horizon_s), 1.0, 1.0, 0.5), 1, 0.9);
+  const Trace second = merging_from(s, second_from_s, horizon_s);
   for (std::size_t i = 0; i < t.steps.size(); ++i)
-    if (t.steps[i].time_s >= 2.5) t.steps[i].ego = second.steps[i].ego;
-  const auto j = test::judge(s, t);
+    if (t.steps[i].time_s >= second_from_s) t.steps[i].ego = second.steps[i].ego;
+  return t;
+}
+
+TEST(MergeAttempts, AnAbortedAttemptsAcceptanceCarriesOverWhileItBindsItsSender) {
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, aborted_then_over_again(s, 2.5, 5.0));
   ASSERT_EQ(j->attempts.attempts.size(), 2u);
   const MergeAttempt& first = j->attempts.attempts[0];
   const MergeAttempt& again = j->attempts.attempts[1];
   EXPECT_EQ(first.basis, RowBasis::kDef2);
   ASSERT_TRUE(first.end_time_s.has_value());
   EXPECT_FALSE(first.completed);
-  EXPECT_EQ(again.basis, RowBasis::kNone);
+  EXPECT_EQ(again.basis, RowBasis::kDef2) << again.observation;
+  EXPECT_TRUE(j->row.ego_holds_at(1.5));
+  EXPECT_TRUE(j->row.ego_holds_at(3.0));
+}
+
+TEST(MergeAttempts, AnAbortedAttemptsAcceptanceDoesNotCarryOverPastItsSpan) {
+  // The same, over again from 6 s: vehicle 1 is no longer bound, and the second attempt's window
+  // starts at the abort.
+  const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
+  const auto j = test::judge(s, aborted_then_over_again(s, 6.0, 9.0));
+  ASSERT_EQ(j->attempts.attempts.size(), 2u);
+  const MergeAttempt& first = j->attempts.attempts[0];
+  const MergeAttempt& again = j->attempts.attempts[1];
+  EXPECT_EQ(first.basis, RowBasis::kDef2);
+  EXPECT_EQ(again.basis, RowBasis::kNone) << again.observation;
   EXPECT_TRUE(j->row.ego_holds_at(1.5));
   EXPECT_FALSE(j->row.ego_holds_at(*first.end_time_s + 0.01));
-  EXPECT_FALSE(j->row.ego_holds_at(3.0));
+  EXPECT_FALSE(j->row.ego_holds_at(7.0));
 }
 
 // Vehicle 1 25 m behind the ego at its speed: D_lon(20, 20) = 45.175 m, so the ego that moves over

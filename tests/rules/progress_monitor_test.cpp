@@ -270,5 +270,29 @@ TEST(ProgressMonitor, AnAcceptanceWhoseOtherVehicleLeftNoRoomOffersNothing) {
   EXPECT_TRUE(out.result.holds) << out.result.detail;
 }
 
+TEST(ProgressMonitor, AnAcceptanceWhoseSenderTheEgoLetCloseInOffersNoMore) {
+  // Vehicle 4 yields to 12 m/s as it accepted, but the ego brakes from 15 m/s at 2 m/s2 from 0.1 s
+  // to 9 m/s (Def. 2.1 has it hold its speed): vehicle 4 closes in, and from about 1.8 s a merge
+  // begun at the ego's speed would reach its midpoint inside vehicle 4's RSS distance
+  // (sigmoid_pc_bounds, the ego's). The acceptance offered a merge for less than the grace.
+  const Scenario s = coop_offer_scenario();
+  Trace t = coop_offer_trace(s, 4, slows(0.1, 12.0, 8.0));
+  for (std::size_t i = 1; i < t.steps.size(); ++i) {
+    const double dt = t.steps[i].time_s - t.steps[i - 1].time_s;
+    VehicleState& e = t.steps[i].ego;
+    const VehicleState& before = t.steps[i - 1].ego;
+    e.vx_mps = std::max(9.0, 15.0 - 2.0 * std::max(0.0, t.steps[i].time_s - 0.1));
+    e.x_m = before.x_m + 0.5 * (before.vx_mps + e.vx_mps) * dt;
+    e.accel_mps2 = (e.vx_mps - before.vx_mps) / dt;
+  }
+  const MonitorOutput out = test::run(monitor_progress, s, t);
+  EXPECT_TRUE(out.result.holds) << out.result.detail;
+  const auto unused = std::find_if(out.result.measures.begin(), out.result.measures.end(),
+                                   [](const auto& m) { return m.first == "longest_unused_s"; });
+  ASSERT_NE(unused, out.result.measures.end());
+  EXPECT_GT(unused->second, 0.5);
+  EXPECT_LT(unused->second, 3.0);
+}
+
 }  // namespace
 }  // namespace mg

@@ -110,7 +110,8 @@ TEST(RssLongitudinalMonitor, AnEgoMovingTowardALongitudinallyUnsafeVehicleCutsIn
 // laterally safe; back at 0.5 m/s) holds the right of way from 0.1 s until it is seen aborted
 // back on the side-lane centre (Y < -3.45, t = 0.92 s). From `resume_s` it moves toward the main
 // lane at 1.2 m/s: D_lat = 0.1 + 1.9 + (1.2 + 1.3)/2 * 0.5 + 1.3^2/1.6 = 3.68 m > 3.5 m, dangerous
-// from t_b = resume_s, a new attempt without the right of way.
+// from t_b = resume_s: a new attempt, on the acceptance while it binds vehicle 1 (until 0 + rho_c +
+// rho_m = 5 s), after that without the right of way.
 Scenario abort_scenario() {
   Scenario s = base_scenario();
   s.road.speed_limit_mps = 22.0;
@@ -119,7 +120,7 @@ Scenario abort_scenario() {
 }
 
 Trace abort_then_resume(const Scenario& s, double resume_s) {
-  Trace t = constant_accel_trace(s, 2.5);
+  Trace t = constant_accel_trace(s, std::max(2.5, resume_s + 0.9));
   double y = s.ego.y_m;
   for (auto& st : t.steps) {
     const double tt = st.time_s + 1e-9;
@@ -145,12 +146,16 @@ TEST(RssLongitudinalMonitor, AnEgoThatAbortedWithinTheResponseTimeHasNotCutIn) {
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, Party::vehicle(1));
   EXPECT_NEAR(*out.result.first_violation_time_s, 1.7, 0.021);
-  // Resuming at 1.6 s, more than T after the abort: a cut-in, the ego liable from the step at
-  // which it is again past its lane centre by the start offset (0.1 s later).
-  const MonitorOutput late = test::run(monitor_rss_longitudinal, s, abort_then_resume(s, 1.6));
+  // Resuming at 1.6 s, more than T after the abort, on the acceptance still in force: no cut-in.
+  const MonitorOutput again = test::run(monitor_rss_longitudinal, s, abort_then_resume(s, 1.6));
+  ASSERT_FALSE(again.result.holds);
+  EXPECT_EQ(again.result.liable_id, Party::vehicle(1));
+  // Resuming at 5.6 s, once the acceptance no longer binds vehicle 1: a cut-in, the ego liable
+  // from the step at which it is again past its lane centre by the start offset (0.1 s later).
+  const MonitorOutput late = test::run(monitor_rss_longitudinal, s, abort_then_resume(s, 5.6));
   ASSERT_FALSE(late.result.holds);
   EXPECT_EQ(late.result.liable_id, Party::ego());
-  EXPECT_NEAR(*late.result.first_violation_time_s, 1.7, 0.021);
+  EXPECT_NEAR(*late.result.first_violation_time_s, 5.7, 0.021);
 }
 
 // Vehicle 1 (30 m/s) passes the ego (20 m/s, Y = -2.0: laterally unsafe at rest) from 3 m behind:

@@ -20,8 +20,10 @@ struct Def1Plan {
 
 // kRhoM: the configured merge duration (raised to a comfortable one); kLonger: the longer ones of
 // kMergeDurationFactors, tried only after Definition 2 (the paper's order: Def. 1 at rho_m, then
-// cooperation, then the extension). nullopt when no gap is feasible; `why` then gets the reasons.
-enum class MergeDurations { kRhoM, kLonger };
+// cooperation, then the extension); kFlat: every duration with sigmoids flatter than
+// kappa_min_per_m only, the last resort before a halt. nullopt when no gap is feasible; `why`
+// then gets the reasons.
+enum class MergeDurations { kRhoM, kLonger, kFlat };
 std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations durations, std::string* why);
 
 }  // namespace mg

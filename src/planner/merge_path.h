@@ -90,9 +90,11 @@ inline double sharp_sigmoid_penalty(double kappa_per_m, double kappa_cap_per_m) 
 // sideslip rule's speed a crawl's turn-in is bounded by the steering alone, and an ego halted a
 // few metres too close to the side lane's end for a sigmoid from the 2 % point sat there while
 // the judge's witness, which starts from the ego's offset, offered a merge (`progress`).
+// kappa_floor_per_m replaces the configured kappa_min_per_m when positive (the flat fallback of
+// the Definition 1 search, kFlatKappaFloorPerM).
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m,
-                           double start_fraction = kSigmoidEndFraction);
+                           double start_fraction = kSigmoidEndFraction, double kappa_floor_per_m = 0.0);
 
 // A vehicle a track cannot pass, being behind it in the same lane: its own motion from x0_m, and
 // the bumper-to-centre distance the track keeps behind it (half both lengths and kLeaderStandoffM).

@@ -410,11 +410,13 @@ RcppPlanner::SideLaneStep RcppPlanner::decide_in_side_lane(InSideLane& side, con
   SideLaneStep step;
   step.out.path = side_lane_path(side.lateral, w);
   send_request(side, w, step.out, note);
-  // The longer merges are the costly search (three durations); while no merge exists they are
-  // tried every kLongerMergeEveryS (docs/performance.md), Def. 1 at rho_m every cycle.
+  // The longer merges and the flat fallback are the costly searches (three and four durations);
+  // while no merge exists they are tried every kLongerMergeEveryS (docs/performance.md), Def. 1 at
+  // rho_m every cycle.
   if (!side.pending && w.time_s + 1e-9 >= side.next_longer_merge_s) {
     side.next_longer_merge_s = w.time_s + kLongerMergeEveryS;
     if (auto plan = plan_definition1(w, MergeDurations::kLonger, &why)) return take_def1_plan(*plan);
+    if (auto plan = plan_definition1(w, MergeDurations::kFlat, nullptr)) return take_def1_plan(*plan);
   }
   if (side.pending)
     wait_for_reply(*side.pending, w, h, step.out);

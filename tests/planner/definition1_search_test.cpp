@@ -1,0 +1,41 @@
+// The Definition 1 search of RCPP (planner/definition1_search.h) on scenarios campaigns found.
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/scenario.h"
+#include "planner/planner.h"
+#include "planner/rcpp_params.h"
+
+#include "rcpp_decision_of.h"
+
+namespace mg {
+namespace {
+
+Scenario case_scenario(const std::string& name) {
+  const std::string path = std::string(MG_SOURCE_DIR) + "/corpus/cases/" + name + ".json";
+  std::ifstream in(path);
+  return scenario_from_json(nlohmann::json::parse(in).at("scenario"), path);
+}
+
+// The ego at 29.6 m/s, 40 m behind vehicle 3 at 10.2 m/s, vehicle 2 of the lane beyond 66 m
+// ahead at its speed: every merge ahead of vehicle 3 at kappa >= kappa_min_per_m (0.05/m) keeps
+// the ego inside D_lat of a vehicle it must be D_lon-clear of, so no duration offers one; the flat
+// fallback merges at once, flatter than the floor (before it the ego braked toward its halt point
+// and let the gap go: `progress`, campaign seed 8301, run 429).
+TEST(Definition1Search, WhenNoMergeAtTheSlopeFloorIsClearAFlatterOneIsTaken) {
+  const Scenario s = case_scenario("rcpp__progress__progress__ego-8");
+  ASSERT_DOUBLE_EQ(rcpp_params(s.params.planner).kappa_min_per_m, 0.05);
+  auto planner = make_planner("rcpp");
+  const RcppDecision d = decision_of(planner->plan(initial_snapshot(s)));
+  EXPECT_EQ(d.mode, DecisionMode::kDef1Merge) << d.reason;
+  EXPECT_LT(d.kappa_per_m, 0.05) << d.reason;
+  EXPECT_GE(d.kappa_per_m, 0.03) << d.reason;
+  ASSERT_TRUE(d.gap.has_value());
+  EXPECT_EQ(d.gap->follower_id, 3);
+}
+
+}  // namespace
+}  // namespace mg

@@ -382,17 +382,22 @@ Trace aborted_then_over_again(const Scenario& s, double second_from_s, double ho
   return t;
 }
 
+// Judged, with its two attempts; the first, on the acceptance, holds by Definition 2.
+auto judge_aborted_then_over_again(const Scenario& s, double second_from_s, double horizon_s) {
+  auto j = test::judge(s, aborted_then_over_again(s, second_from_s, horizon_s));
+  EXPECT_EQ(j->attempts.attempts.size(), 2u);
+  const MergeAttempt& first = j->attempts.attempts.front();
+  EXPECT_EQ(first.basis, RowBasis::kDef2);
+  EXPECT_TRUE(first.end_time_s.has_value() && !first.completed);
+  EXPECT_TRUE(j->row.ego_holds_at(1.5));
+  return j;
+}
+
 TEST(MergeAttempts, AnAbortedAttemptsAcceptanceCarriesOverWhileItBindsItsSender) {
   const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
-  const auto j = test::judge(s, aborted_then_over_again(s, 2.5, 5.0));
+  const auto j = judge_aborted_then_over_again(s, 2.5, 5.0);
   ASSERT_EQ(j->attempts.attempts.size(), 2u);
-  const MergeAttempt& first = j->attempts.attempts[0];
-  const MergeAttempt& again = j->attempts.attempts[1];
-  EXPECT_EQ(first.basis, RowBasis::kDef2);
-  ASSERT_TRUE(first.end_time_s.has_value());
-  EXPECT_FALSE(first.completed);
-  EXPECT_EQ(again.basis, RowBasis::kDef2) << again.observation;
-  EXPECT_TRUE(j->row.ego_holds_at(1.5));
+  EXPECT_EQ(j->attempts.attempts[1].basis, RowBasis::kDef2) << j->attempts.attempts[1].observation;
   EXPECT_TRUE(j->row.ego_holds_at(3.0));
 }
 
@@ -400,14 +405,10 @@ TEST(MergeAttempts, AnAbortedAttemptsAcceptanceDoesNotCarryOverPastItsSpan) {
   // The same, over again from 6 s: vehicle 1 is no longer bound, and the second attempt's window
   // starts at the abort.
   const Scenario s = gap_scenario(-45.0, std::nullopt, 22.0);
-  const auto j = test::judge(s, aborted_then_over_again(s, 6.0, 9.0));
+  const auto j = judge_aborted_then_over_again(s, 6.0, 9.0);
   ASSERT_EQ(j->attempts.attempts.size(), 2u);
-  const MergeAttempt& first = j->attempts.attempts[0];
-  const MergeAttempt& again = j->attempts.attempts[1];
-  EXPECT_EQ(first.basis, RowBasis::kDef2);
-  EXPECT_EQ(again.basis, RowBasis::kNone) << again.observation;
-  EXPECT_TRUE(j->row.ego_holds_at(1.5));
-  EXPECT_FALSE(j->row.ego_holds_at(*first.end_time_s + 0.01));
+  EXPECT_EQ(j->attempts.attempts[1].basis, RowBasis::kNone) << j->attempts.attempts[1].observation;
+  EXPECT_FALSE(j->row.ego_holds_at(*j->attempts.attempts[0].end_time_s + 0.01));
   EXPECT_FALSE(j->row.ego_holds_at(7.0));
 }
 

@@ -84,17 +84,10 @@ inline double sharp_sigmoid_penalty(double kappa_per_m, double kappa_cap_per_m) 
 // lateral acceleration along the ego's speed profile (ramp from ramp_origin_x_m) within the comfort
 // bound, and lies in the configured [kappa_min, kappa_max] and under the curvature cap of the
 // ramp's top speed (kappa_cap_per_m; where the other bounds lie above it, kappa_sharpest_per_m).
-// A crawl (the ramp's top speed at most crawl_speed_mps) may start where the sigmoid is at
-// start_fraction of the lane change, the ego's own lateral progress (an ego halted off its centre
-// toward the main lane; the path keeps its offset until the sigmoid meets it): below the
-// sideslip rule's speed a crawl's turn-in is bounded by the steering alone, and an ego halted a
-// few metres too close to the side lane's end for a sigmoid from the 2 % point sat there while
-// the judge's witness, which starts from the ego's offset, offered a merge (`progress`).
 // kappa_floor_per_m replaces the configured kappa_min_per_m when positive (the flat fallback of
 // the Definition 1 search, kFlatKappaFloorPerM).
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
-                           const SpeedRamp& ramp, double ramp_origin_x_m,
-                           double start_fraction = kSigmoidEndFraction, double kappa_floor_per_m = 0.0);
+                           const SpeedRamp& ramp, double ramp_origin_x_m, double kappa_floor_per_m = 0.0);
 
 // A vehicle a track cannot pass, being behind it in the same lane: its own motion from x0_m, and
 // the bumper-to-centre distance the track keeps behind it (half both lengths and kLeaderStandoffM).

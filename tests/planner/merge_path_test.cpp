@@ -361,22 +361,6 @@ TEST(KappaCap, AnEgoAtRestNearTheSideLaneEndCanMergeAtACrawl) {
   EXPECT_FALSE(kappa_range_for(s, 8.0, 0.0, 17.0, SpeedRamp{0.0, 5.0, 2.0, 4.0}, 0.0).has_value());
 }
 
-// The same ego, halted with its centre 15 % of the way to the main lane (a hold after an abort),
-// and P_c only 5 m ahead: a sigmoid from its 2 % point needs kappa >= ln(49)/5 = 0.778/m, above the
-// crawl's steering cap; one that starts where the ego already is, ln(0.85/0.15)/5 = 0.347/m,
-// fits. Only a crawl may start there: at 5 m/s the start fraction changes nothing.
-TEST(KappaCap, ACrawlMayStartItsSigmoidAtTheEgosOwnLateralProgress) {
-  Scenario s = road_only();
-  s.road.side_lane_end_x_m = 22.0;
-  const SpeedRamp crawl{0.0, 1.3, 2.0, 4.0};
-  EXPECT_FALSE(kappa_range_for(s, 5.0, 0.0, 17.0, crawl, 0.0).has_value());
-  const KappaRange held = kappa_range_for(s, 5.0, 0.0, 17.0, crawl, 0.0, 0.15);
-  ASSERT_TRUE(held.has_value());
-  EXPECT_NEAR(held->first, std::max(std::log(0.85 / 0.15) / 5.0, std::log(49.0) / 12.0), 1e-9);
-  const SpeedRamp brisk{0.0, 5.0, 2.0, 4.0};
-  EXPECT_EQ(kappa_range_for(s, 5.0, 0.0, 17.0, brisk, 0.0, 0.15), kappa_range_for(s, 5.0, 0.0, 17.0, brisk, 0.0));
-}
-
 // Vehicle 2, the gap's follower, stands at X = 90 m; vehicle 1 approaches it at 10 m/s from X = 0.
 // As a follower alone vehicle 1 would be predicted past vehicle 2 (accelerating at 2 m/s2 for
 // rho/2 = 3 s: 39 m at 3 s, 79 m at 6 s, 115 m at 9 s); behind it, it stays 6.8 m (half both

@@ -17,12 +17,12 @@ namespace mg {
 namespace {
 
 // When no Definition 1 merge of any duration is clear, the search tries the flatter sigmoids
-// below kappa_min_per_m, down to this slope, before the ego halts. At speed the merge's own length asks for less than the floor (ln 49 /
-// kappa before P_c is 130 m at 0.03/m), and a steeper sigmoid moves the ego sideways faster, its
-// D_lat larger, so that it stays inside D_lat of a vehicle it is overtaking or of one in the lane
-// beyond for longer: the search let pass gaps whose flatter merge `progress`'s witness found
-// clear. Only as a last resort: the floor shapes the paper's merges (the best scenario of
-// docs/paper_search.md reproduced 11 of its 15 claims instead of 13 with a floor of 0.03/m).
+// below kappa_min_per_m, down to this slope, before the ego halts. At speed the merge's own
+// length asks for less than the floor (ln 49 / kappa before P_c is 130 m at 0.03/m), and a
+// steeper sigmoid moves the ego sideways faster, its D_lat larger, so that it stays inside D_lat
+// of a vehicle it is overtaking or of one in the lane beyond for longer: the search let pass gaps
+// whose flatter merge `progress`'s witness found clear. Only as a last resort: the floor shapes
+// every merge at speed (with a floor of 0.03/m throughout, reproduce-paper's variant table moved).
 constexpr double kFlatKappaFloorPerM = 0.03;
 
 constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds ...

@@ -121,16 +121,16 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
   const double v_traffic = gap_traffic_speed_mps(gap, v_e);
   GapTracks tracks = gap_tracks(f.lane, gap, f.rho_s, [&](int id) { return observed_accel_mps2(f.w, id); });
   tracks.beside = f.beside;
-  const auto kappa_range = [&](double v) {
+  const auto range_from = [&](double v, double floor_per_m) {
     const SpeedRamp ramp = ctx.ramp_to(v);
-    return kappa_range_for(s, b.pc_at(f, v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(f.rho_s), ramp, ctx.ego_x_m);
+    return kappa_range_for(s, b.pc_at(f, v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(f.rho_s), ramp, ctx.ego_x_m,
+                           floor_per_m);
   };
+  const auto kappa_range = [&](double v) { return range_from(v, 0.0); };
   // The flat fallback: the slopes below the configured floor, down to kFlatKappaFloorPerM, of a
   // v_e* whose range starts at that floor.
   const auto flatter_range = [&](double v) -> KappaRange {
-    const SpeedRamp ramp = ctx.ramp_to(v);
-    const KappaRange r = kappa_range_for(s, b.pc_at(f, v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(f.rho_s), ramp,
-                                         ctx.ego_x_m, kFlatKappaFloorPerM);
+    const KappaRange r = range_from(v, kFlatKappaFloorPerM);
     if (!r || r->first >= p.kappa_min_per_m) return std::nullopt;
     return std::make_pair(r->first, std::min(r->second, p.kappa_min_per_m));
   };

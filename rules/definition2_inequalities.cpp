@@ -64,6 +64,13 @@ ProfileBound accepted_profile_bound(const ObservedTrace& s, const RuleParams& p,
   return b;
 }
 
+double d_lon_m(const ObservedTrace& s, std::size_t rear, double v_rear, std::size_t front, double v_front) {
+  const Limits& r = limits_of(s, rear);
+  return rss_longitudinal_m({std::max(0.0, v_rear), std::max(0.0, v_front), size_of(s, rear).length_m,
+                             size_of(s, front).length_m, s.params.rss.response_time_s, r.accel_max_mps2,
+                             r.brake_min_mps2, limits_of(s, front).brake_max_mps2});
+}
+
 namespace {
 
 struct RequestView {
@@ -72,13 +79,6 @@ struct RequestView {
   const ObservedState& ego;   // at the send
   const ObservedState& resp;  // at the send
 };
-
-double d_lon_m(const ObservedTrace& s, std::size_t rear, double v_rear, std::size_t front, double v_front) {
-  const Limits& r = limits_of(s, rear);
-  return rss_longitudinal_m({std::max(0.0, v_rear), std::max(0.0, v_front), size_of(s, rear).length_m,
-                             size_of(s, front).length_m, s.params.rss.response_time_s, r.accel_max_mps2,
-                             r.brake_min_mps2, limits_of(s, front).brake_max_mps2});
-}
 
 // RCPP ineq. (3), eq. (1) for D*_lon, and the reach of v_o* at b_min,o within rho_c (expressed as
 // the distance the deeper slowdown would need over rho_c: half the speed shortfall times rho_c).

@@ -46,6 +46,10 @@ ProfileBound accepted_profile_bound(const ObservedTrace& t, const RuleParams& p,
                                     double time_s);
 ProfileBound accepted_profile_bound(const MonitorContext& ctx, const CoopExchange& x, std::size_t k, double time_s);
 
+// RCPP eq. (1) between trace vehicles rear and front at the given speeds (negative speeds as 0),
+// with their declared sizes and limits.
+double d_lon_m(const ObservedTrace& s, std::size_t rear, double v_rear, std::size_t front, double v_front);
+
 // Whether the responder k of an accepted request was beyond def2_positions' bound at a step of
 // [acceptance, until_s]: it broke what it accepted.
 bool responder_broke_acceptance(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x, std::size_t k,

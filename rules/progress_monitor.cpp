@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "core/merge_duration.h"
-#include "core/rss.h"
 #include "rules/coop_exchange.h"
 #include "rules/definition2_inequalities.h"
 #include "rules/definition1_gap.h"
@@ -164,12 +163,7 @@ bool partner_leaves_room(const ObservedTrace& t, const RuleParams& p, const Acce
   const ObservedState& ego = ego_of(t.steps[i]);
   const double v_e = std::max(0.0, ego.vx_mps);
   const double x_e = ego.x_m + v_e * 0.5 * rho_s;
-  const std::size_t rear = a.ego_ahead ? ko : 0, front = a.ego_ahead ? 0 : ko;
-  const Limits& r = limits_of(t, rear);
-  const double d_lon = rss_longitudinal_m({a.ego_ahead ? v_o : v_e, a.ego_ahead ? v_e : v_o, size_of(t, rear).length_m,
-                                           size_of(t, front).length_m, t.params.rss.response_time_s, r.accel_max_mps2,
-                                           r.brake_min_mps2, limits_of(t, front).brake_max_mps2});
-  return (a.ego_ahead ? x_e - x_o : x_o - x_e) >= d_lon;
+  return a.ego_ahead ? x_e - x_o >= d_lon_m(t, ko, v_o, 0, v_e) : x_o - x_e >= d_lon_m(t, 0, v_e, ko, v_o);
 }
 
 Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepted, std::size_t i) {

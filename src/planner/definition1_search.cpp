@@ -28,6 +28,15 @@ constexpr double kFlatKappaFloorPerM = 0.03;
 constexpr double kPcMarginM = 1.0;          // P_c candidates keep this far inside their bounds ...
 constexpr double kNearPcBoundPenalty = 1e4;  // ... or pay this (far above any candidate's cost)
 
+// A merge whose sigmoid starts (its 2 % point) more than kPromptStartS of the ego's ramp ahead
+// pays kLateStartPenalty, so it is chosen only when no merge into any gap starts sooner. The cost
+// prefers keeping the ego's speed, and a long merge decided at speed drew its sigmoid from a
+// point seconds ahead while a slower merge into the same gap could begin at once: the ego drove
+// on in its side lane past the grace `progress` allows an offered merge (a campaign finding).
+// Below kNearPcBoundPenalty: a candidate near its P_c bounds is the worse risk.
+constexpr double kPromptStartS = 2.0;
+constexpr double kLateStartPenalty = 1e3;
+
 std::string gap_name(const Gap& g) {
   const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
   return "gap (follower " + id(g.follower_id) + ", leader " + id(g.leader_id) + ")";
@@ -151,13 +160,15 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
     }
     const double pc = b.pc_at(f, v);
     const bool near_bound = pc < b.pc_min_m + pc_margin || pc > b.pc_max_m - pc_margin;
+    const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
+    const bool late_start = sig.x_at_fraction_m(kSigmoidEndFraction) > ctx.ego_x_m + ramp.distance_at_m(kPromptStartS);
     const double def1_cost = p.cost_time_weight * f.half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                              p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
-                             (near_bound ? kNearPcBoundPenalty : 0.0) + sharp_sigmoid_penalty(kappa, kappa_cap);
+                             (near_bound ? kNearPcBoundPenalty : 0.0) + (late_start ? kLateStartPenalty : 0.0) +
+                             sharp_sigmoid_penalty(kappa, kappa_cap);
     // Not below the best so far even with the field at its floor: not chosen (a tie keeps the
     // first), so neither its occupancy nor its field is evaluated.
     if (def1_cost + field_floor >= best_seen) return std::numeric_limits<double>::infinity();
-    const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
     if (!occupancy_clear(s, ctx.ego_x_m, f.w.ego.y_m, sig, ramp, OccupancyInstants::over(f.rho_s), tracks,
                          kOccupancyPlanningBufferM, &memo))
       return std::numeric_limits<double>::infinity();

@@ -1,4 +1,5 @@
 // The Definition 1 search of RCPP (planner/definition1_search.h) on scenarios campaigns found.
+#include <cmath>
 #include <fstream>
 #include <string>
 
@@ -35,6 +36,30 @@ TEST(Definition1Search, WhenNoMergeAtTheSlopeFloorIsClearAFlatterOneIsTaken) {
   EXPECT_GE(d.kappa_per_m, 0.03) << d.reason;
   ASSERT_TRUE(d.gap.has_value());
   EXPECT_EQ(d.gap->follower_id, 3);
+}
+
+// The ego at 12.7 m/s, vehicle 1 58 m behind it at 22.7 m/s, overtaking: the only gap is behind
+// vehicle 1. Keeping the ego's speed is cheapest, and its merge at rho = 15.4 s (v_e* = 11.8 m/s,
+// kappa = 0.153/m) starts its sigmoid 65 m ahead, more than five seconds away; a merge at
+// v_e* = 8 m/s starts within two. The later one let the gap the progress rule offered pass
+// (campaign seed 7101, run 76704, here a second into that run, the vehicle's braking beyond
+// its limits later in the run left out).
+TEST(Definition1Search, AMergeThatStartsWithinTwoSecondsIsTakenBeforeACheaperLaterOne) {
+  Scenario s = case_scenario("rcpp__progress__progress__ego-9");
+  s.ego.x_m = 83.2;
+  s.ego.y_m = -4.0;
+  s.ego.speed_mps = 12.7;
+  ASSERT_EQ(s.vehicles.size(), 1u);
+  s.vehicles[0].x_m = 25.2;
+  s.vehicles[0].speed_mps = 22.7;
+  s.vehicles[0].noncompliance = NonCompliance{};
+  auto planner = make_planner("rcpp");
+  const RcppDecision d = decision_of(planner->plan(initial_snapshot(s)));
+  ASSERT_EQ(d.mode, DecisionMode::kDef1Merge) << d.reason;
+  ASSERT_TRUE(d.gap.has_value());
+  EXPECT_EQ(d.gap->leader_id, 1);
+  const double start_x_m = d.pc_m - std::log(49.0) / d.kappa_per_m;  // the sigmoid's 2 % point
+  EXPECT_LT(start_x_m - s.ego.x_m, 2.0 * s.ego.speed_mps) << d.reason;
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 #include <sstream>
 
 #include "core/demand.h"
+#include "rules/acceptance_cover.h"
 #include "rules/check.h"
+#include "rules/def1_reading.h"
 #include "rules/definition2_inequalities.h"
 #include "rules/monitor.h"
 
@@ -41,12 +43,6 @@ struct Inputs {
   const std::vector<CoopExchange>& exchanges;
   const std::vector<GapIndices>& around;
 };
-
-std::size_t step_at_or_after(const ObservedTrace& t, double time_s) {
-  const auto it = std::lower_bound(t.steps.begin(), t.steps.end(), time_s - kTieS,
-                                   [](const ObservedStep& s, double v) { return s.time_s < v; });
-  return static_cast<std::size_t>(it - t.steps.begin());
-}
 
 // The attempts' spans from the merge phases.
 std::vector<MergeAttempt> spans_of(const MergePhases& phases) {
@@ -112,116 +108,6 @@ double approach_onset_s(const ObservedTrace& t, const RuleParams& p, std::size_t
 // The decision window is read every kScanStride steps (0.1 s at 50 Hz): a Definition 1 reading
 // costs two bisections, and a gap's feasibility does not come and go within a tenth of a second.
 constexpr std::size_t kScanStride = 5;
-
-// The merge durations a Definition 1 reading at `time_s` is tried with, in order.
-//   - An attempt that reached its midpoint: rho_m, or, when longer, twice the time to the midpoint
-//     less the response time T. Definition 1.1 lets the follower accelerate until the ego merges;
-//     rho_m alone for a merge whose midpoint came much later would predict it at a_accel^max for
-//     rho_m/2 only and move onto a follower that accelerated legally the duty the ego's late
-//     merge created (spec §8, point 23). T: RSS's time to turn a decision into
-//     motion; a midpoint within T of the one decided is that merge, tracked with a lag.
-//   - One still under way when the trace ends: rho_m, then, when longer, the shortest duration
-//     whose midpoint falls after that end. Nothing has crossed the follower's path yet (an ego
-//     stalled with a corner in the lane is not merging on: the RSS rules judge it there), so
-//     rho_m stands where it admits a v_e*.
-//   - One aborted before its midpoint: rho_m.
-std::vector<double> reading_rhos_s(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, double time_s) {
-  if (a.midpoint_time_s)
-    return {std::max(p.merge_duration_s, 2.0 * (*a.midpoint_time_s - time_s - t.params.rss.response_time_s))};
-  std::vector<double> out = {p.merge_duration_s};
-  if (!a.end_time_s && 2.0 * (t.steps.back().time_s - time_s) > p.merge_duration_s)
-    out.push_back(2.0 * (t.steps.back().time_s - time_s));
-  return out;
-}
-
-// Definition 1 at step i for a gap, with a duration.
-Def1Reading read_def1_at(const ObservedTrace& t, const MergeAttempt& a, const GapIndices& gap, std::size_t i,
-                         double rho) {
-  const double time_s = t.steps[i].time_s;
-  Def1Reading r{gap, i, time_s, rho, def1_interval(t, i, gap, rho)};
-  // v_e*: nearest the ego's speed where it crossed the line (or would have, rho/2 on).
-  const std::size_t at = a.midpoint_time_s ? step_at_or_after(t, *a.midpoint_time_s)
-                                           : std::min(step_at_or_after(t, time_s + 0.5 * rho), t.steps.size() - 1);
-  const double v_mid = t.steps[std::min(at, t.steps.size() - 1)].vehicles[0].vx_mps;
-  r.observed_mps = v_mid;
-  r.ve_star_mps = r.interval.feasible() ? std::clamp(v_mid, r.interval.ve_lo_mps, r.interval.ve_hi_mps)
-                                        : def1_best_speed_mps(t, i, gap, rho);
-  r.margin_11_m = def1_1_margin_m(t, i, gap.follower, r.ve_star_mps, rho);
-  r.margin_12_m = def1_2_margin_m(t, i, gap.leader, r.ve_star_mps, rho);
-  return r;
-}
-
-// Definition 1 at step i for a gap: the first duration that admits a v_e*, else the one with the
-// largest smaller margin.
-Def1Reading read_def1(const ObservedTrace& t, const RuleParams& p, const MergeAttempt& a, const GapIndices& gap,
-                      std::size_t i) {
-  std::optional<Def1Reading> best;
-  for (const double rho : reading_rhos_s(t, p, a, t.steps[i].time_s)) {
-    const Def1Reading r = read_def1_at(t, a, gap, i, rho);
-    if (!best || (r.interval.feasible() && !best->interval.feasible()) ||
-        (r.interval.feasible() == best->interval.feasible() && r.min_margin_m() > best->min_margin_m()))
-      best = r;
-    if (best->interval.feasible()) break;
-  }
-  return *best;
-}
-
-// Definition 1 for the pair of the ego and one vehicle of the gap entered, at a reading: ineq.
-// (1.1) toward a follower, (1.2) toward a leader, at the reading's step, v_e* and rho.
-double pair_margin_m(const ObservedTrace& t, const Def1Reading& r, const PairCover& c, bool follower) {
-  return follower ? def1_1_margin_m(t, r.step, c.vehicle, r.ve_star_mps, r.rho_s)
-                  : def1_2_margin_m(t, r.step, c.vehicle, r.ve_star_mps, r.rho_s);
-}
-
-// An acceptance an attempt may rest on: delivered by its entry (or start), and inside its decision
-// window or still binding its sender when the attempt starts (until t_r + rho_c + rho_m, the span
-// for which `progress` offers it: an ego that let it pass would fail there, so a merge begun on it
-// then, after an abort or a wait for the gap's other vehicle, is made on it).
-bool delivered_in_window(const CoopExchange& x, const MergeAttempt& a, double from_s, const RuleParams& p) {
-  const double d = x.accept_delivered_time_s;
-  if (d < 0.0 || d > a.entry_time_s.value_or(a.start_time_s) + kTieS) return false;
-  return d >= from_s - kTieS || a.start_time_s <= x.request_time_s + p.comm_threshold_s + p.merge_duration_s + kTieS;
-}
-
-PcCheck pc_check_of(const Inputs& in, std::size_t i, const MergeAttempt& a) {
-  const CoopExchange& x = in.exchanges[i];
-  PcCheck c{i, x.request->pc_m, *a.crossing_x_m, *a.crossing_time_s};
-  c.tolerance_m = std::max(a.crossing_speed_mps * in.t.params.rss.response_time_s, 0.5 * in.t.vehicles[0].size.length_m);
-  c.margin_m = x.request->coop_case == CoopCase::kEgoAhead ? c.crossing_x_m - (c.pc_m - c.tolerance_m)
-                                                            : (c.pc_m + c.tolerance_m) - c.crossing_x_m;
-  return c;
-}
-
-// Definition 1 for the pair of the ego and the gap's other vehicle at the request of an
-// acceptance: the leader (2.1: the partner its follower) by ineq. (1.2) over rho_c + rho_m, the
-// follower (2.2: the partner its leader) by ineq. (1.1) over 2 rho_c + rho_m, with the ego at
-// the speed the request's case gives it after rho_c (2.1: its speed; 2.2: after braking at b_min).
-// +inf for an open side.
-double other_vehicle_margin_m(const Inputs& in, const CoopExchange& x, int other, bool other_is_follower) {
-  if (other < 1) return std::numeric_limits<double>::infinity();
-  const ObservedTrace& t = in.t;
-  const std::size_t i = std::min(step_at_or_after(t, x.sent_time_s), t.steps.size() - 1);
-  const double v_e = std::max(0.0, t.steps[i].vehicles[0].vx_mps);
-  const double rho_c = in.p.comm_threshold_s, rho_m = in.p.merge_duration_s;
-  const double v_after = x.request->coop_case == CoopCase::kEgoAhead
-                             ? v_e
-                             : std::max(0.0, v_e - t.vehicles[0].limits.brake_min_mps2 * rho_c);
-  return other_is_follower ? def1_1_margin_m(t, i, other, v_after, 2.0 * rho_c + rho_m)
-                           : def1_2_margin_m(t, i, other, v_after, rho_c + rho_m);
-}
-
-// The vehicle of the lane next to the responder of `x` on the side the ego merges on, at the
-// request (the gap the request asked for): for an attempt whose gap entered is not known.
-int requested_gap_other(const Inputs& in, const CoopExchange& x) {
-  const std::size_t i = std::min(step_at_or_after(in.t, x.sent_time_s), in.t.steps.size() - 1);
-  const int k = in.t.index_of(x.request->to_id);
-  const bool ahead = x.request->coop_case == CoopCase::kEgoAhead;
-  for (const GapIndices& g : lane_gaps(in.t, i)) {
-    if (ahead && g.follower == k) return g.leader;
-    if (!ahead && g.leader == k) return g.follower;
-  }
-  return -1;
-}
 
 std::string gap_text(const ObservedTrace& t, const GapIndices& g) {
   const auto side = [&](int k) { return k < 1 ? std::string("open") : party_name(Party::from_vehicle_id(t.vehicles[static_cast<std::size_t>(k)].id)); };
@@ -320,6 +206,7 @@ class AttemptJudge {
 
  private:
   bool known_gap() const { return a_.midpoint_time_s.has_value(); }
+  ReadingSpan span() const { return {a_.midpoint_time_s, a_.end_time_s.has_value()}; }
   PairCover* side_for(const CoopExchange& x, bool responder_broke);
   bool try_def2();
   bool try_def2_unknown_gap();
@@ -379,7 +266,7 @@ bool AttemptJudge::try_def2() {
     if (c == nullptr) continue;
     // A responder that broke what it accepted left the ego to answer its breach: where the ego
     // then crossed says nothing of the P_c it asked on.
-    const std::optional<PcCheck> pc = broke ? std::nullopt : std::optional(pc_check_of(in_, i, a_));
+    const std::optional<PcCheck> pc = broke ? std::nullopt : std::optional(pc_check_of(in_.t, x, i, a_));
     if (pc) checks_.push_back(*pc);
     if (x.order_margin_m < 0.0 || (pc && pc->margin_m < 0.0)) {
       if (!untruthful_) untruthful_side_ = c;
@@ -394,7 +281,7 @@ bool AttemptJudge::try_def2() {
   for (PairCover* c : {&a_.follower, &a_.leader}) {
     if (c->vehicle < 1 || c->by == Cover::kDef2) continue;
     const std::size_t i = a_.follower.by == Cover::kDef2 ? *a_.follower.exchange : *a_.leader.exchange;
-    c->margin_m = other_vehicle_margin_m(in_, in_.exchanges[i], c->vehicle, c == &a_.follower);
+    c->margin_m = other_vehicle_margin_m(in_.t, in_.p, in_.exchanges[i], c->vehicle, c == &a_.follower);
     if (c->margin_m >= 0.0) *c = PairCover{c->vehicle, Cover::kDef2Pair, in_.exchanges[i].accept_delivered_time_s, c->margin_m, i};
   }
   const auto covered = [](const PairCover& c) { return c.vehicle < 1 || c.by != Cover::kNone; };
@@ -421,7 +308,7 @@ bool AttemptJudge::try_def2_unknown_gap() {
       continue;
     }
     const bool other_is_follower = x.request->coop_case == CoopCase::kEgoBehind;
-    if (other_vehicle_margin_m(in_, x, requested_gap_other(in_, x), other_is_follower) < 0.0) continue;
+    if (other_vehicle_margin_m(in_.t, in_.p, x, requested_gap_other(in_.t, x), other_is_follower) < 0.0) continue;
     a_.basis = RowBasis::kDef2;
     a_.exchange = x;
     a_.decision_time_s = x.accept_delivered_time_s;
@@ -437,7 +324,7 @@ bool AttemptJudge::covers_rest(const Def1Reading& r) const {
   for (const PairCover* c : {&a_.follower, &a_.leader}) {
     if (c->vehicle < 1 || c->by == Cover::kDef2) continue;
     if (c->vehicle == r.gap.follower || c->vehicle == r.gap.leader) continue;
-    if (pair_margin_m(in_.t, r, *c, c == &a_.follower) < 0.0) return false;
+    if (pair_margin_m(in_.t, r, c->vehicle, c == &a_.follower) < 0.0) return false;
   }
   return true;
 }
@@ -451,7 +338,7 @@ void AttemptJudge::cover_by_reading(const Def1Reading& r) {
     if (c->vehicle < 1 || c->by == Cover::kDef2) continue;
     const bool member = c->vehicle == r.gap.follower || c->vehicle == r.gap.leader;
     c->margin_m = member ? (c->vehicle == r.gap.follower ? r.margin_11_m : r.margin_12_m)
-                         : pair_margin_m(in_.t, r, *c, c == &a_.follower);
+                         : pair_margin_m(in_.t, r, c->vehicle, c == &a_.follower);
     c->exchange.reset();
     // A vehicle of a feasible reading's gap is covered by the reading (its margin at v_e* is the
     // bisection's, >= 0 to within its tolerance); another one by its pair's margin.
@@ -470,7 +357,7 @@ void AttemptJudge::extend_back(std::size_t first) {
   std::size_t stride = kScanStride;
   while (a_.def1.step > first) {
     const std::size_t i = a_.def1.step - std::min(stride, a_.def1.step - first);
-    const Def1Reading r = read_def1(in_.t, in_.p, a_, a_.gap, i);
+    const Def1Reading r = read_def1(in_.t, in_.p, span(), a_.gap, i);
     if (r.interval.feasible() && covers_rest(r)) {
       a_.def1 = r;
     } else if (stride > 1) {
@@ -492,7 +379,7 @@ void AttemptJudge::earliest_run(std::size_t first) {
   const std::size_t credit_first = step_at_or_after(in_.t, credit_from_s_);
   for (std::size_t i = a_.def1.step; i > first;) {
     i = i >= first + kScanStride ? i - kScanStride : first;
-    const Def1Reading r = read_def1(in_.t, in_.p, a_, a_.def1.gap, i);
+    const Def1Reading r = read_def1(in_.t, in_.p, span(), a_.def1.gap, i);
     if (!r.interval.feasible() || !covers_rest(r)) continue;
     a_.def1 = r;
     extend_back(credit_first);
@@ -507,7 +394,7 @@ void AttemptJudge::keep_if_best(const Def1Reading& r, bool covers) {
   if (known_gap() && !covers)
     for (const PairCover* c : {&a_.follower, &a_.leader})
       if (c->vehicle >= 1 && c->by != Cover::kDef2 && c->vehicle != r.gap.follower && c->vehicle != r.gap.leader)
-        score = std::min(score, pair_margin_m(in_.t, r, *c, c == &a_.follower));
+        score = std::min(score, pair_margin_m(in_.t, r, c->vehicle, c == &a_.follower));
   const bool good = r.interval.feasible() && covers;
   if (a_.def1_read && (good != best_good_ ? !good : score <= best_score_)) return;
   a_.def1 = r;
@@ -539,7 +426,7 @@ bool AttemptJudge::try_def1() {
     for (const GapIndices& g : gaps_at(in_, a_, i))
       if (std::find(gaps.begin(), gaps.end(), g) == gaps.end()) gaps.push_back(g);
     for (const GapIndices& gap : gaps) {
-      const Def1Reading r = read_def1(t, in_.p, a_, gap, i);
+      const Def1Reading r = read_def1(t, in_.p, span(), gap, i);
       // A neighbouring gap is a hypothesis about where the ego is going: it counts only when
       // feasible at a v_e* the ego's observed speed fits (a stop "behind the vehicle alongside"
       // over a duration stretched to the trace's end fits any gap; an ego still at 20 m/s was
@@ -638,14 +525,6 @@ void AttemptJudge::run() {
 }
 
 }  // namespace
-
-bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x) {
-  const std::vector<CoopExchange> no_exchanges;
-  const std::vector<GapIndices> no_gaps;
-  const Inputs in{t, p, no_exchanges, no_gaps};
-  const bool other_is_follower = x.request->coop_case == CoopCase::kEgoBehind;
-  return other_vehicle_margin_m(in, x, requested_gap_other(in, x), other_is_follower) >= 0.0;
-}
 
 MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p, const MergePhases& phases,
                                      const std::vector<CoopExchange>& exchanges,

@@ -39,6 +39,7 @@
 
 #include "core/observed_trace.h"
 #include "rules/coop_exchange.h"
+#include "rules/def1_reading.h"
 #include "rules/definition1_gap.h"
 #include "rules/merge_phases.h"
 
@@ -46,19 +47,6 @@ namespace mg {
 
 enum class RowBasis { kNone, kDef1, kDef2 };
 std::string to_string(RowBasis b);
-
-struct Def1Reading {
-  GapIndices gap;
-  std::size_t step = 0;
-  double time_s = 0.0;
-  double rho_s = 0.0;
-  Def1Interval interval;
-  double ve_star_mps = 0.0;   // the v_e* the margins are stated at
-  double observed_mps = 0.0;  // the ego's observed speed it was chosen nearest to
-  double margin_11_m = std::numeric_limits<double>::infinity();
-  double margin_12_m = std::numeric_limits<double>::infinity();
-  double min_margin_m() const { return margin_11_m < margin_12_m ? margin_11_m : margin_12_m; }
-};
 
 // What gives the ego the right of way toward one vehicle of the gap it entered.
 enum class Cover {
@@ -138,12 +126,6 @@ struct MergeAttempt {
 struct MergeAttempts {
   std::vector<MergeAttempt> attempts;
 };
-
-// Whether the gap's vehicle other than the partner of an accepted request leaves room for the
-// Definition 2 merge, judged at the request as for the right of way (the vehicle ahead of the
-// partner for 2.1 by ineq. (1.2) over rho_c + rho_m, the one behind it for 2.2 by ineq. (1.1) over
-// 2 rho_c + rho_m; an open side is clear).
-bool other_gap_vehicle_clear(const ObservedTrace& t, const RuleParams& p, const CoopExchange& x);
 
 // `exchanges` as coop_exchanges gives them; `around` the gap around the ego at every step.
 MergeAttempts observe_merge_attempts(const ObservedTrace& t, const RuleParams& p, const MergePhases& phases,

@@ -46,6 +46,12 @@ std::size_t step_at(const ObservedTrace& t, double time_s) {
   return i;
 }
 
+std::size_t step_at_or_after(const ObservedTrace& t, double time_s) {
+  const auto it = std::lower_bound(t.steps.begin(), t.steps.end(), time_s - kTieS,
+                                   [](const ObservedStep& s, double v) { return s.time_s < v; });
+  return static_cast<std::size_t>(it - t.steps.begin());
+}
+
 double step_interval_s(const ObservedTrace& t) {
   return t.steps.size() < 2 ? 0.0 : t.steps[1].time_s - t.steps[0].time_s;
 }

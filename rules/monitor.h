@@ -107,6 +107,8 @@ inline int index_of_party(const ObservedTrace& t, Party party) {
 }
 // Index of the trace step nearest to time_s.
 std::size_t step_at(const ObservedTrace& t, double time_s);
+// Index of the first step at or after time_s (within kTieS); steps.size() when there is none.
+std::size_t step_at_or_after(const ObservedTrace& t, double time_s);
 inline double speed_of(const ObservedState& v) { return v.vx_mps; }  // road-frame longitudinal speed
 // The trace's sampling interval (its first step; 0 for fewer than two steps).
 double step_interval_s(const ObservedTrace& t);

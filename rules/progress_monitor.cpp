@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/merge_duration.h"
+#include "rules/acceptance_cover.h"
 #include "rules/coop_exchange.h"
 #include "rules/definition2_inequalities.h"
 #include "rules/definition1_gap.h"

@@ -130,10 +130,13 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
   const double v_traffic = gap_traffic_speed_mps(gap, v_e);
   GapTracks tracks = gap_tracks(f.lane, gap, f.rho_s, [&](int id) { return observed_accel_mps2(f.w, id); });
   tracks.beside = f.beside;
+  // The ego's own lateral progress toward the main lane, where a merge from a crawl may start its
+  // sigmoid (kappa_range_for).
+  const double start_fraction = (f.w.ego.y_m - s.road.side_lane_y_m()) / s.road.lane_width_m;
   const auto range_from = [&](double v, double floor_per_m) {
     const SpeedRamp ramp = ctx.ramp_to(v);
     return kappa_range_for(s, b.pc_at(f, v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(f.rho_s), ramp, ctx.ego_x_m,
-                           floor_per_m);
+                           floor_per_m, start_fraction);
   };
   const auto kappa_range = [&](double v) { return range_from(v, 0.0); };
   // The flat fallback: the slopes below the configured floor, down to kFlatKappaFloorPerM, of a

@@ -69,15 +69,20 @@ double kappa_sharpest_per_m(const PlannerSetup& s, double top_speed_mps) {
 }
 
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
-                           const SpeedRamp& ramp, double ramp_origin_x_m, double kappa_floor_per_m) {
+                           const SpeedRamp& ramp, double ramp_origin_x_m, double kappa_floor_per_m,
+                           double start_fraction) {
   const RcppParams p = rcpp_params(s);
+  const double crawl_mps = crawl_speed_mps(s);
+  const bool from_crawl = ramp.v0_mps <= crawl_mps && std::sqrt(ramp.top_speed_squared_m2ps2()) > crawl_mps;
+  const double start_span_times_kappa =
+      from_crawl ? ln_ratio(1.0 - std::clamp(start_fraction, kSigmoidEndFraction, 0.5)) : half_span_times_kappa();
   const double before_m = pc_m - start_x_m;
   const double after_m = complete_by_x_m - pc_m;
   const double exit_room_m = side_exit_limit_x_m(s, std::max(ramp.v0_mps, ramp.v_target_mps)) - pc_m;
   if (before_m <= 0.0 || after_m <= 0.0 || exit_room_m <= 0.0) return std::nullopt;
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double floor_per_m = kappa_floor_per_m > 0.0 ? kappa_floor_per_m : p.kappa_min_per_m;
-  const double lo = std::max({floor_per_m, half_span_times_kappa() / before_m, half_span_times_kappa() / after_m,
+  const double lo = std::max({floor_per_m, start_span_times_kappa / before_m, half_span_times_kappa() / after_m,
                               ln_ratio(exit_fraction) / exit_room_m});
   double kappa_cap = kappa_cap_per_m(s, ramp);
   if (lo > kappa_cap) kappa_cap = kappa_sharpest_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2()));

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "planner/rcpp_params.h"
+
 namespace mg {
 namespace {
 
@@ -359,6 +361,25 @@ TEST(KappaCap, AnEgoAtRestNearTheSideLaneEndCanMergeAtACrawl) {
   EXPECT_NEAR(crawl->first, std::log(49.0) / 8.0, 1e-9);
   EXPECT_LE(crawl->first, crawl->second);
   EXPECT_FALSE(kappa_range_for(s, 8.0, 0.0, 17.0, SpeedRamp{0.0, 5.0, 2.0, 4.0}, 0.0).has_value());
+}
+
+// An ego at rest with 10 m to P_c, a quarter of the lane change (the defaults' W = 3.5 m) toward
+// the main lane: from the 2 % point kappa >= ln(49)/10 = 0.389/m, beyond the tracker's envelope
+// (0.255/m at 8 m/s); from its own progress, kappa >= ln(3)/10 = 0.110/m. A ramp that stays at a
+// crawl, and one that starts at speed, keep the 2 % point.
+TEST(KappaCap, AnEgoStartingAtRestMayStartItsSigmoidAtItsOwnLateralProgress) {
+  Scenario s = road_only();
+  s.road.side_lane_end_x_m = 200.0;
+  const double quarter = 0.25;
+  const SpeedRamp from_rest{0.0, 8.0, 2.0, 4.0};
+  EXPECT_FALSE(kappa_range_for(s, 10.0, 0.0, 60.0, from_rest, 0.0).has_value());
+  const KappaRange own = kappa_range_for(s, 10.0, 0.0, 60.0, from_rest, 0.0, 0.0, quarter);
+  ASSERT_TRUE(own.has_value());
+  EXPECT_NEAR(own->first, std::max(rcpp_params(s).kappa_min_per_m, std::log(3.0) / 10.0), 1e-9);
+  const KappaRange crawl = kappa_range_for(s, 10.0, 0.0, 60.0, SpeedRamp{0.0, 1.3, 2.0, 4.0}, 0.0, 0.0, quarter);
+  ASSERT_TRUE(crawl.has_value());
+  EXPECT_NEAR(crawl->first, std::log(49.0) / 10.0, 1e-9);
+  EXPECT_FALSE(kappa_range_for(s, 10.0, 0.0, 60.0, SpeedRamp{8.0, 8.0, 2.0, 4.0}, 0.0, 0.0, quarter).has_value());
 }
 
 // Vehicle 2, the gap's follower, stands at X = 90 m; vehicle 1 approaches it at 10 m/s from X = 0.

@@ -72,19 +72,26 @@ KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m, double kappa_floor_per_m,
                            double start_fraction) {
   const RcppParams p = rcpp_params(s);
-  const double crawl_mps = crawl_speed_mps(s);
-  const bool from_crawl = ramp.v0_mps <= crawl_mps && std::sqrt(ramp.top_speed_squared_m2ps2()) > crawl_mps;
-  const double start_span_times_kappa =
-      from_crawl ? ln_ratio(1.0 - std::clamp(start_fraction, kSigmoidEndFraction, 0.5)) : half_span_times_kappa();
   const double before_m = pc_m - start_x_m;
   const double after_m = complete_by_x_m - pc_m;
   const double exit_room_m = side_exit_limit_x_m(s, std::max(ramp.v0_mps, ramp.v_target_mps)) - pc_m;
   if (before_m <= 0.0 || after_m <= 0.0 || exit_room_m <= 0.0) return std::nullopt;
   const double exit_fraction = side_lane_exit_fraction(s.ego.size.width_m, s.road.lane_width_m);
   const double floor_per_m = kappa_floor_per_m > 0.0 ? kappa_floor_per_m : p.kappa_min_per_m;
-  const double lo = std::max({floor_per_m, start_span_times_kappa / before_m, half_span_times_kappa() / after_m,
-                              ln_ratio(exit_fraction) / exit_room_m});
+  const auto lowest_for = [&](double start_span_times_kappa) {
+    return std::max({floor_per_m, start_span_times_kappa / before_m, half_span_times_kappa() / after_m,
+                     ln_ratio(exit_fraction) / exit_room_m});
+  };
+  double lo = lowest_for(half_span_times_kappa());
   double kappa_cap = kappa_cap_per_m(s, ramp);
+  // From a crawl, the start at the ego's own progress, but only under the cap: a sharper path is
+  // tracked behind it, and one begun 18 % across the lane put a corner past the road's edge at
+  // the side lane's end (`on_road`; a campaign finding).
+  const double crawl_mps = crawl_speed_mps(s);
+  if (ramp.v0_mps <= crawl_mps && std::sqrt(ramp.top_speed_squared_m2ps2()) > crawl_mps && lo > kappa_cap) {
+    const double own_lo = lowest_for(ln_ratio(1.0 - std::clamp(start_fraction, kSigmoidEndFraction, 0.5)));
+    if (own_lo <= kappa_cap) lo = own_lo;
+  }
   if (lo > kappa_cap) kappa_cap = kappa_sharpest_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2()));
   if (lo > kappa_cap) return std::nullopt;
   // The search needs the margin's sign only: a flat sigmoid is comfortable by the bound alone (a

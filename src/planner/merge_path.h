@@ -90,10 +90,12 @@ inline double sharp_sigmoid_penalty(double kappa_per_m, double kappa_cap_per_m) 
 // accelerates beyond the crawl may start where the sigmoid is at start_fraction of the lane change,
 // its own lateral progress toward the main lane, instead of at the end fraction: the path keeps
 // its offset until the sigmoid meets it, there, at the ego, where the heading's kink is taken at
-// a crawl. An ego halted off its centre near the side lane's end otherwise found no sigmoid
-// from its 2 % point that also left the side lane before its end (`progress`, whose witness starts
-// from the ego's offset; a campaign finding). Not for a ramp that stays at a crawl: its path,
-// steeper at the crawl's steering cap, was tracked so far behind it that a corner left the road.
+// a crawl. Only where no sigmoid from the end fraction fits under the curvature cap and one from
+// start_fraction does (the cap itself still applies). An ego halted off its centre near the side
+// lane's end otherwise found no sigmoid from its 2 % point that also left the side lane before
+// its end (`progress`, whose witness starts from the ego's offset; a campaign finding). Not for a
+// ramp that stays at a crawl, nor beyond the cap: such a path, steeper, was tracked so far
+// behind it that a corner left the road at the side lane's end.
 KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m, double complete_by_x_m,
                            const SpeedRamp& ramp, double ramp_origin_x_m, double kappa_floor_per_m = 0.0,
                            double start_fraction = kSigmoidEndFraction);

@@ -366,7 +366,7 @@ TEST(KappaCap, AnEgoAtRestNearTheSideLaneEndCanMergeAtACrawl) {
 // An ego at rest with 10 m to P_c, a quarter of the lane change (the defaults' W = 3.5 m) toward
 // the main lane: from the 2 % point kappa >= ln(49)/10 = 0.389/m, beyond the tracker's envelope
 // (0.255/m at 8 m/s); from its own progress, kappa >= ln(3)/10 = 0.110/m. A ramp that stays at a
-// crawl, and one that starts at speed, keep the 2 % point.
+// crawl, and one that starts at speed, keep the 2 % point, and the own start stays under the cap.
 TEST(KappaCap, AnEgoStartingAtRestMayStartItsSigmoidAtItsOwnLateralProgress) {
   Scenario s = road_only();
   s.road.side_lane_end_x_m = 200.0;
@@ -380,6 +380,11 @@ TEST(KappaCap, AnEgoStartingAtRestMayStartItsSigmoidAtItsOwnLateralProgress) {
   ASSERT_TRUE(crawl.has_value());
   EXPECT_NEAR(crawl->first, std::log(49.0) / 10.0, 1e-9);
   EXPECT_FALSE(kappa_range_for(s, 10.0, 0.0, 60.0, SpeedRamp{8.0, 8.0, 2.0, 4.0}, 0.0, 0.0, quarter).has_value());
+  // With P_c 5 m ahead the own start needs ln(3)/5 = 0.220/m: above the cap (0.215/m), where a
+  // path is tracked behind it; not granted (from the 2 % point it would need 0.778/m).
+  ASSERT_GT(std::log(3.0) / 5.0, kappa_cap_per_m(s, from_rest));
+  EXPECT_LT(std::log(3.0) / 5.0, kappa_sharpest_per_m(s, 8.0));
+  EXPECT_FALSE(kappa_range_for(s, 5.0, 0.0, 60.0, from_rest, 0.0, 0.0, quarter).has_value());
 }
 
 // Vehicle 2, the gap's follower, stands at X = 90 m; vehicle 1 approaches it at 10 m/s from X = 0.

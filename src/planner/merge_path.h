@@ -88,9 +88,10 @@ inline double sharp_sigmoid_penalty(double kappa_per_m, double kappa_cap_per_m) 
 // the Definition 1 search, kFlatKappaFloorPerM).
 // An ego that starts at a crawl or at rest (the ramp's start speed at most crawl_speed_mps) and
 // accelerates beyond the crawl may start where the sigmoid is at start_fraction of the lane change,
-// its own lateral progress toward the main lane, instead of at the end fraction: the path keeps
-// its offset until the sigmoid meets it, there, at the ego, where the heading's kink is taken at
-// a crawl. Only where no sigmoid from the end fraction fits under the curvature cap and one from
+// its own lateral progress toward the main lane, instead of at the end fraction: a merge that
+// keeps the ego's offset (CommittedMerge::from_hold) meets the sigmoid there, at the ego, where the
+// heading's kink is taken at a crawl; one that does not lies no lower there than from the end
+// fraction. Only where no sigmoid from the end fraction fits under the curvature cap and one from
 // start_fraction does (the cap itself still applies). An ego halted off its centre near the side
 // lane's end otherwise found no sigmoid from its 2 % point that also left the side lane before
 // its end (`progress`, whose witness starts from the ego's offset; a campaign finding). Not for a

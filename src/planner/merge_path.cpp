@@ -88,11 +88,12 @@ KappaRange kappa_range_for(const PlannerSetup& s, double pc_m, double start_x_m,
   // tracked behind it, and one begun 18 % across the lane put a corner past the road's edge at
   // the side lane's end (`on_road`; a campaign finding).
   const double crawl_mps = crawl_speed_mps(s);
-  if (ramp.v0_mps <= crawl_mps && std::sqrt(ramp.top_speed_squared_m2ps2()) > crawl_mps && lo > kappa_cap) {
+  const double top_mps = std::sqrt(ramp.top_speed_squared_m2ps2());
+  if (ramp.v0_mps <= crawl_mps && top_mps > crawl_mps && lo > kappa_cap) {
     const double own_lo = lowest_for(ln_ratio(1.0 - std::clamp(start_fraction, kSigmoidEndFraction, 0.5)));
     if (own_lo <= kappa_cap) lo = own_lo;
   }
-  if (lo > kappa_cap) kappa_cap = kappa_sharpest_per_m(s, std::sqrt(ramp.top_speed_squared_m2ps2()));
+  if (lo > kappa_cap) kappa_cap = kappa_sharpest_per_m(s, top_mps);
   if (lo > kappa_cap) return std::nullopt;
   // The search needs the margin's sign only: a flat sigmoid is comfortable by the bound alone (a
   // lower bound of the margin, then >= 0), without the speed profile.

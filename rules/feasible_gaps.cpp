@@ -276,7 +276,10 @@ bool witness_leaves_side_lane(const ObservedTrace& t, const RuleParams& p, const
 }  // namespace
 
 // RCPP §IV: the merge path is a sigmoid (a logistic across the lanes) driven within the sideslip
-// rule, |beta| <= sideslip_max_rad, so its curvature is at most c = tan(beta_max) / l_r
+// rule, |beta| <= sideslip_max_rad. A driven path is tracked with some overshoot of its curvature,
+// so a merge the rule demands keeps within progress_sideslip_fraction of the bound (tracking slack,
+// as progress_lateral_margin_m is for the lateral position): a path at the whole bound can be
+// taken only by breaking `sideslip`. Its curvature is then at most c = tan(f beta_max) / l_r
 // (kinematic sideslip atan(l_r c)). l_r, the centre of gravity's distance to the rear axle, is not
 // declared; half the ego's length bounds it from above, so c is the smallest any car may need. A
 // logistic of amplitude A (the ego's Y to the target lane's centre) and steepness kappa has peak
@@ -287,15 +290,15 @@ bool witness_leaves_side_lane(const ObservedTrace& t, const RuleParams& p, const
 // turned across the lane and is no merge the paper's planner draws.
 namespace {
 
-// The steepest logistic of amplitude |y_m| whose peak curvature stays within the sideslip bound
-// (above), and where the lane line lies on it (f_line, the fraction of the lane change).
+// The steepest logistic of amplitude |y_m| whose peak curvature stays within that share of the
+// sideslip bound (above), and where the lane line lies on it (f_line, the fraction of the lane change).
 struct SteepestSigmoid {
   double kappa_per_m = 0.0;
   double f_line = 0.0;
 };
 SteepestSigmoid steepest_sigmoid(const ObservedTrace& t, const RuleParams& p, double y_m) {
   const double amplitude_m = std::abs(y_m);
-  const double c = std::tan(p.sideslip_max_rad) / (0.5 * t.vehicles[0].size.length_m);
+  const double c = std::tan(p.progress_sideslip_fraction * p.sideslip_max_rad) / (0.5 * t.vehicles[0].size.length_m);
   return {std::sqrt(6.0 * std::sqrt(3.0) * c / amplitude_m), (-0.5 * t.road.lane_width_m - y_m) / amplitude_m};
 }
 
@@ -309,7 +312,7 @@ double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_
 }
 
 // The witness completes its merge by rho: a second half shorter than this turns back along the
-// lane more sharply than the sideslip bound allows.
+// lane more sharply than that share of the sideslip bound allows.
 double shortest_turn_out_m(const ObservedTrace& t, const RuleParams& p, double y_m) {
   if (y_m >= -0.5 * t.road.lane_width_m || y_m == 0.0) return 0.0;
   const SteepestSigmoid s = steepest_sigmoid(t, p, y_m);
@@ -365,14 +368,20 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   if (r.room_m < r.turn_in_m) return out;
   const std::vector<GapIndices> gaps = lane_gaps(t, step);
   const double base_rho_s = merge_duration_base_s(p.merge_duration_s, t.road.lane_width_m, p.progress_lat_accel_max_mps2);
+  // rho_m, or longer: a merge that observably takes longer holds the right of way on a reading
+  // over its own duration (rules/merge_attempts.h). A declared rho_m shorter than the shortest
+  // comfortable lane change is raised to it, as RCPP's planner raises it (core/merge_duration.h).
+  // An ego slower than the slowest merge speed must first gain speed, and from rest only a merge
+  // of 3 rho_b reaches a midpoint a tracked path can turn in to (shortest_turn_in_m): it is offered
+  // that one too. A faster ego is not: the planner's long merges begin with seconds of straight
+  // driving toward a sigmoid start far ahead, which the rule could not tell from waiting.
+  const std::array<double, 4> durations_s{base_rho_s, 1.5 * base_rho_s, 2.0 * base_rho_s, 3.0 * base_rho_s};
+  const std::size_t n_durations = v0 < p.progress_min_merge_speed_mps ? 4 : 3;
   for (std::size_t g = 0; g < gaps.size(); ++g) {
     const GapIndices& gap = gaps[g];
     const GapIndices ahead = g + 1 < gaps.size() ? gaps[g + 1] : GapIndices{};
-    // rho_m, or longer: a merge that observably takes longer holds the right of way on a reading
-    // over its own duration (rules/merge_attempts.h), and from low speed only a longer one
-    // reaches a midpoint the turn-in allows. A declared rho_m shorter than the shortest
-    // comfortable lane change is raised to it, as RCPP's planner raises it (core/merge_duration.h).
-    for (const double rho : {base_rho_s, 1.5 * base_rho_s, 2.0 * base_rho_s}) {
+    for (std::size_t d = 0; d < n_durations; ++d) {
+      const double rho = durations_s[d];
       if (!leader_holds_speed(t, p, step, gap, ahead, rho)) continue;
       // def1_feasible is def1_interval's feasibility exactly, at a fraction of its bisections;
       // raising ve_lo below can only narrow the interval.

@@ -14,12 +14,15 @@ namespace mg {
 
 // A gap of the rightmost main lane that admits a Definition 1 merge from the ego's observed state
 // at `step`, judged with the rules' own code (rules/definition1_gap.h): for rho = rho_m (or 1.5 or
-// 2 rho_m: a merge that observably takes longer is read over its own duration), some v_e* in
+// 2 rho_m: a merge that observably takes longer is read over its own duration; and 3 rho_m for an
+// ego slower than progress_min_merge_speed_mps: from rest only a long merge reaches a midpoint a
+// tracked path can turn in to), some v_e* in
 // [progress_min_merge_speed_mps, speed limit] satisfies ineq. (1.1) and (1.2) by
 // progress_gap_margin_m under both position models (the bounded-rate one starts from the ego's
 // observed speed and changes it at its declared a_accel^max / a_brake^min, so a v_e* it cannot
 // reach in time does not count), and at such a v_e* the ego's centre reaches the lane line
-// (rho / 2 on) no sooner than the paper's sigmoid within the sideslip bound can turn in (shortest_turn_in_m),
+// (rho / 2 on) no sooner than the paper's sigmoid within progress_sideslip_fraction of the sideslip
+// bound can turn in (shortest_turn_in_m),
 // and from there covers at least its turn-out by rho (shortest_turn_out_m),
 // and with its front still progress_gap_margin_m short of the side lane's end, and the whole body
 // across the lane line before any corner comes within progress_gap_margin_m of that end (past it
@@ -40,7 +43,8 @@ struct FeasibleMerge {
   double ve_star_mps = 0.0;  // the slowest feasible v_e*
   double ve_max_mps = 0.0;   // the fastest
 };
-// The shortest X in which the paper's sigmoid path within the sideslip bound (sideslip_max_rad;
+// The shortest X in which the paper's sigmoid path within progress_sideslip_fraction of the
+// sideslip bound (sideslip_max_rad;
 // kinematic sideslip, the centre of gravity at most half the length ahead of the rear axle) takes
 // the ego's centre from Y = y_m, heading along the road, to the lane line (0 at or past it).
 double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_m);

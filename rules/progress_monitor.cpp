@@ -31,7 +31,7 @@ enum class Activity {
 // still under way at the trace's last step, past the side lane's centre and outside any attempt:
 // the clock pauses from there. Whether the approach leads into a start the trace does not show,
 // and the rule does not accuse the ego of letting a gap pass on what the trace does not hold: a
-// merge of any duration the rule offers (up to 2 rho_b) begun within the last rho_b would not yet
+// merge of any duration the rule offers (up to 3 rho_b) begun within the last rho_b would not yet
 // have reached its midpoint (at rho / 2), and an unbroken approach cannot tell a drift from the
 // merge that follows it. Before the last rho_b the clock runs: an ego that drifts toward the lane
 // without ever merging is judged on all but the last rho_b of the trace.

@@ -86,6 +86,8 @@ constexpr Param<RuleParams> kRuleRows[] = {
           "`progress`: lateral slack of a feasible merge beyond D_lat"),
     param("progress_lat_accel_max_mps2", &R::progress_lat_accel_max_mps2, "m/s²", at_least(0.5), at_most(5.0),
           "`progress`: peak lateral acceleration of a merge the rule offers (a comfortable lane change)"),
+    param("progress_sideslip_fraction", &R::progress_sideslip_fraction, "", at_least(0.1), at_most(1.0),
+          "`progress`: share of the `sideslip` bound within which a merge the rule offers turns in and out"),
 };
 static_assert(well_formed<RuleParams>(kRuleRows));
 

@@ -71,6 +71,7 @@ struct RuleParams {
   double progress_min_merge_speed_mps = 5.0;
   double progress_lateral_margin_m = 0.75;
   double progress_lat_accel_max_mps2 = 1.5;
+  double progress_sideslip_fraction = 0.7;
   bool operator==(const RuleParams&) const = default;
 };
 

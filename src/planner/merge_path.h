@@ -63,8 +63,8 @@ double kappa_cap_per_m(const PlannerSetup& s, double top_speed_mps);
 double kappa_cap_per_m(const PlannerSetup& s, const SpeedRamp& ramp);  // at the ramp's top speed
 // The sharpest kappa of a merge driven at most at top_speed_mps, used only where no sigmoid within
 // kappa_cap_per_m fits (kappa_range_for): the tracker's envelope (merge_curvature_cap_per_m), or
-// the crawl's cap if larger. The `progress` rule's witness merge turns in at the whole sideslip
-// bound (rules/feasible_gaps.h); within half of it RCPP let pass merges from low speed whose
+// the crawl's cap if larger. The `progress` rule's witness merge turns in within a share of the
+// sideslip bound (rules/feasible_gaps.h); within half of it RCPP let pass merges from low speed whose
 // turn-in or second half was a metre or two too short. Where the half bound fits it is kept, and
 // a sharper candidate pays sharp_sigmoid_penalty: tracked further behind, sharper sigmoids taken
 // for their lower cost put merges the re-check then aborted. The room the halt point leaves for a

@@ -94,17 +94,18 @@ TEST(FeasibleGaps, AnAcceleratingMergeIsJudgedOnThePaperSigmoidInXAtTheSpeedItIs
   EXPECT_EQ(gaps.front().leader_id, -1);
 }
 
-TEST(FeasibleGaps, TheTurnInAndOutAreTheSteepestSigmoidWithinTheSideslipBound) {
-  // c = tan(0.05) / 2.4 (half the 4.8 m length); from the side-lane centre (Y = -3.5, A = 3.5) the
-  // steepest logistic has kappa = sqrt(6 sqrt 3 c / 3.5) = 0.2489/m and reaches the line (its
-  // middle) ln 49 / kappa = 15.64 m after its 2 % point; from Y = -2.5 (A = 2.5, the line at
-  // f = 0.3) the same with logit(0.3); at the line itself, nothing.
+TEST(FeasibleGaps, TheTurnInAndOutAreTheSteepestSigmoidWithinTheSideslipShare) {
+  // c = tan(0.7 * 0.05) / 2.4 (the default share of the bound; half the 4.8 m length); from the
+  // side-lane centre (Y = -3.5, A = 3.5) the steepest logistic has kappa = sqrt(6 sqrt 3 c / 3.5)
+  // = 0.2081/m and reaches the line (its middle) ln 49 / kappa = 18.70 m after its 2 % point; from
+  // Y = -2.5 (A = 2.5, the line at f = 0.3) the same with logit(0.3); at the line itself, nothing.
   const Scenario s = base_scenario();
   const auto j = test::judge(s, constant_accel_trace(s, 0.1));
-  const double c = std::tan(0.05) / 2.4;
+  ASSERT_EQ(j->params.progress_sideslip_fraction, 0.7);
+  const double c = std::tan(0.7 * 0.05) / 2.4;
   const double k35 = std::sqrt(6.0 * std::sqrt(3.0) * c / 3.5), k25 = std::sqrt(6.0 * std::sqrt(3.0) * c / 2.5);
   EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -3.5), std::log(49.0) / k35, 1e-9);
-  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -3.5), 15.64, 0.01);
+  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -3.5), 18.70, 0.01);
   EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -2.5), (std::log(0.3 / 0.7) + std::log(49.0)) / k25, 1e-9);
   EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -1.75), 0.0, 1e-12);
   // The turn-out, from the line to the 98 % point: symmetric from the lane centre; from Y = -2.5
@@ -112,6 +113,30 @@ TEST(FeasibleGaps, TheTurnInAndOutAreTheSteepestSigmoidWithinTheSideslipBound) {
   EXPECT_NEAR(shortest_turn_out_m(j->trace, j->params, -3.5), std::log(49.0) / k35, 1e-9);
   EXPECT_NEAR(shortest_turn_out_m(j->trace, j->params, -2.5), (std::log(49.0) - std::log(0.3 / 0.7)) / k25, 1e-9);
   EXPECT_NEAR(shortest_turn_out_m(j->trace, j->params, -1.75), 0.0, 1e-12);
+  // At the whole bound the same path turns in 15.64 m: sharper than a tracked path can be driven
+  // within `sideslip`.
+  j->params.progress_sideslip_fraction = 1.0;
+  EXPECT_NEAR(shortest_turn_in_m(j->trace, j->params, -3.5), 15.64, 0.01);
+}
+
+TEST(FeasibleGaps, AMergeFromRestIsOfferedOnlyWhereATrackedPathCanTurnIn) {
+  // The ego at rest 0.1 m above its side-lane centre with a weak a_accel^max (0.9 m/s^2), the main
+  // lane empty: the longest merge the rule offers (3 rho_b = 12 s) covers at most 16.2 m to its
+  // midpoint. A path at the whole sideslip bound turns in within that (15.2 m): offered, at
+  // 3 rho_b. Within the default share (18.2 m) it is not: no tracked path reaches the lane line
+  // there without breaking `sideslip`, and waiting is no lapse of liveness.
+  Scenario s = base_scenario();
+  s.ego.x_m = 100.0;
+  s.ego.y_m = -3.4;
+  s.ego.speed_mps = 0.0;
+  s.ego.limits.accel_max_mps2 = 0.9;
+  s.vehicles = {};
+  const auto j = test::judge(s, constant_accel_trace(s, 0.0));
+  EXPECT_TRUE(def1_gaps_feasible(j->trace, j->params, 0).empty());
+  j->params.progress_sideslip_fraction = 1.0;
+  const std::vector<FeasibleMerge> offered = def1_gaps_feasible(j->trace, j->params, 0);
+  ASSERT_EQ(offered.size(), 1u);
+  EXPECT_NEAR(offered.front().merge_duration_s, 12.0, 1e-9);
 }
 
 }  // namespace

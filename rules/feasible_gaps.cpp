@@ -150,6 +150,9 @@ class WitnessPath {
   // and B the speed change's rate; with u = |1 - 2 l| that is (1 - u^2) (A u + B) / 4, largest at
   // u = (sqrt(B^2 + 3 A^2) - B) / (3 A). Written as "within" so that a degenerate path (no
   // distance to a half: kappa infinite, a NaN) is no comfortable merge.
+  // The peak curvature of its path, |Y''| at its steepest (small slopes, as for shortest_turn_in_m):
+  // |Y0| kappa^2 / (6 sqrt 3 span).
+  double peak_curvature_per_m() const { return std::abs(y0_m_) * kappa_per_m_ * kappa_per_m_ / (6.0 * std::sqrt(3.0) * span_); }
   bool comfortable(double limit_mps2) const {
     const double v_max = speed_.top_speed_mps();
     const double A = kappa_per_m_ * v_max * v_max, B = speed_.top_accel_mps2();
@@ -296,9 +299,15 @@ struct SteepestSigmoid {
   double kappa_per_m = 0.0;
   double f_line = 0.0;
 };
+// c = tan(progress_sideslip_fraction sideslip_max_rad) / (l_e / 2): the sharpest curvature of a
+// merge the rule demands (above).
+double curvature_cap_per_m(const ObservedTrace& t, const RuleParams& p) {
+  return std::tan(p.progress_sideslip_fraction * p.sideslip_max_rad) / (0.5 * t.vehicles[0].size.length_m);
+}
+
 SteepestSigmoid steepest_sigmoid(const ObservedTrace& t, const RuleParams& p, double y_m) {
   const double amplitude_m = std::abs(y_m);
-  const double c = std::tan(p.progress_sideslip_fraction * p.sideslip_max_rad) / (0.5 * t.vehicles[0].size.length_m);
+  const double c = curvature_cap_per_m(t, p);
   return {std::sqrt(6.0 * std::sqrt(3.0) * c / amplitude_m), (-0.5 * t.road.lane_width_m - y_m) / amplitude_m};
 }
 
@@ -323,13 +332,16 @@ double shortest_turn_out_m(const ObservedTrace& t, const RuleParams& p, double y
 namespace {
 
 // Some v_e* of the interval, its midpoint within the turn-in and the room, whose witness merge
-// (WitnessPath, either steepness, its peak lateral acceleration within
-// progress_lat_accel_max_mps2) is clear along its whole duration.
+// (WitnessPath, either steepness, its peak curvature within curvature_cap_per_m and its peak
+// lateral acceleration within progress_lat_accel_max_mps2) is clear along its whole duration. The
+// turn-in bounds where the midpoint may lie; the steeper cut (c = 10) over the same first half is
+// sharper than that, and is a merge the rule demands only where its own curvature keeps within
+// the cap.
 constexpr int kWitnessSpeeds = 8;
 // The turn-in and the room bound the distance to the midpoint, the turn-out the distance from the
-// midpoint to the merge's end.
+// midpoint to the merge's end, the curvature cap the witness's path.
 struct WitnessRoom {
-  double turn_in_m, room_m, turn_out_m;
+  double turn_in_m, room_m, turn_out_m, curvature_cap_per_m;
 };
 template <class ToMid, class ToEnd>
 bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t step, double rho, const Def1Interval& in,
@@ -342,6 +354,8 @@ bool witness_exists(const ObservedTrace& t, const RuleParams& p, std::size_t ste
     const WitnessSpeed speed(t.vehicles[0].limits, std::max(ego.vx_mps, 0.0), ve, rho);
     for (const double c : witness_steepness()) {
       const WitnessPath path(ego, speed, c);
+      // Written as "within" so that a NaN curvature is no merge.
+      if (!(path.peak_curvature_per_m() <= r.curvature_cap_per_m)) continue;
       if (!path.comfortable(p.progress_lat_accel_max_mps2)) continue;
       if (!witness_leaves_side_lane(t, p, path)) continue;
       if (witness_merge_clear(t, p, step, path)) return true;
@@ -362,7 +376,7 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   // The second half at least the turn-out long.
   const WitnessRoom r{shortest_turn_in_m(t, p, v[0].y_m),
                       t.road.side_lane_end_x_m - margin - (v[0].x_m + 0.5 * t.vehicles[0].size.length_m),
-                      shortest_turn_out_m(t, p, v[0].y_m)};
+                      shortest_turn_out_m(t, p, v[0].y_m), curvature_cap_per_m(t, p)};
   const auto id = [&](int k) { return k < 1 ? -1 : t.vehicles[static_cast<std::size_t>(k)].id; };
   std::vector<FeasibleMerge> out;
   if (r.room_m < r.turn_in_m) return out;

@@ -29,8 +29,9 @@ namespace mg {
 // the road's edge is the lane line: on_road). A gap whose leader
 // brakes harder than progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader
 // holds its speed). The merge must also be clear along its whole duration, not only at rho / 2 and
-// rho: on the paper's sigmoid in X (its middle where the ego is at rho / 2, driven on the speed
-// profile toward v_e* with a peak lateral acceleration within progress_lat_accel_max_mps2),
+// rho: on the paper's sigmoid in X (its middle where the ego is at rho / 2, its peak curvature
+// within the same share of the sideslip bound, driven on the speed profile toward v_e* with a peak
+// lateral acceleration within progress_lat_accel_max_mps2),
 // wherever the ego is laterally nearer a vehicle (of the target lane or the lane beyond) than
 // D_lat plus progress_lateral_margin_m, it is D_lon plus progress_gap_margin_m behind it if ahead
 // (a vehicle of the lane beyond where braking at its b_max from now would put it), and ahead of it

@@ -139,5 +139,35 @@ TEST(FeasibleGaps, AMergeFromRestIsOfferedOnlyWhereATrackedPathCanTurnIn) {
   EXPECT_NEAR(offered.front().merge_duration_s, 12.0, 1e-9);
 }
 
+TEST(FeasibleGaps, AWitnessSharperThanTheCurvatureCapIsNoMerge) {
+  // An ego of 4.4 m at rest 0.9 cm above its side-lane centre on a 3.25 m lane, its front 25 m
+  // before the side lane's end, the main lane empty; rho_m declared 2.3 s, raised to the shortest
+  // comfortable lane change, rho_b = 3.73 s. From rest at 2.8 m/s^2 a merge of 2 rho_b reaches its
+  // midpoint just past the turn-in (17.2 m), and only the steeper cut (c = 10) gets the whole body
+  // across the lane line before the end: its kappa, 5 / 17.3 m, puts its peak curvature at
+  // 0.026/m, beyond the cap (tan(0.7 * 0.05) / 2.2 m = 0.016/m) and beyond even the whole sideslip
+  // bound's (0.023/m). No merge the ego could drive within `sideslip` is there: it is not offered.
+  Scenario s = base_scenario();
+  s.road.lane_width_m = 3.25;
+  s.road.side_lane_end_x_m = 70.0;
+  s.road.speed_limit_mps = 20.4;
+  s.params.rules.merge_duration_s = 2.3;
+  s.ego.limits.brake_min_mps2 = 5.7;
+  s.ego.limits.brake_max_mps2 = 8.7;
+  s.ego.size.length_m = 4.4;
+  s.ego.size.width_m = 1.8;
+  s.ego.limits.accel_max_mps2 = 2.8;
+  s.ego.x_m = 43.02;
+  s.ego.y_m = -3.241;
+  s.ego.speed_mps = 0.0;
+  s.vehicles = {};
+  const auto j = test::judge(s, constant_accel_trace(s, 0.0));
+  EXPECT_TRUE(def1_gaps_feasible(j->trace, j->params, 0).empty());
+  // 10 m farther back the unhurried cut fits: offered.
+  s.ego.x_m -= 10.0;
+  const auto k = test::judge(s, constant_accel_trace(s, 0.0));
+  EXPECT_FALSE(def1_gaps_feasible(k->trace, k->params, 0).empty());
+}
+
 }  // namespace
 }  // namespace mg

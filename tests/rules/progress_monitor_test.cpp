@@ -153,17 +153,17 @@ TEST(ProgressMonitor, AnEgoTooCloseToTheEndToTurnInIsNotJudged) {
 
 
 TEST(ProgressMonitor, AMergeThatWouldLeaveTheRoadPastTheSideLaneEndIsNotOffered) {
-  // At rest, its front 29 m before the side lane's end, on an empty road: a merge (at
-  // a_accel^max) reaches its midpoint past the turn-in (18.7 m) with the front 10 m short of the
+  // At rest, its front 30 m before the side lane's end, on an empty road: a merge (at
+  // a_accel^max) reaches its midpoint past the turn-in (18.7 m) with the front 11 m short of the
   // end, but the rear of the body is still in the side lane when the front comes within
   // progress_gap_margin_m of the end, where the road's edge is the lane line (on_road). No merge
   // gets the whole body across in time, so none is offered (without this condition one would be,
-  // from 24 m); 3 m farther back one is.
+  // from about 24 m); 4 m farther back one is.
   Scenario s = base_scenario();
-  s.ego.x_m = s.road.side_lane_end_x_m - 29.0 - 2.4;
+  s.ego.x_m = s.road.side_lane_end_x_m - 30.0 - 2.4;
   s.ego.speed_mps = 0.0;
   EXPECT_TRUE(test::run(monitor_progress, s, constant_accel_trace(s, 5.0)).result.holds);
-  s.ego.x_m -= 3.0;
+  s.ego.x_m -= 4.0;
   const MonitorOutput out = test::run(monitor_progress, s, constant_accel_trace(s, 5.0));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, Party::ego());

@@ -142,6 +142,9 @@ class WitnessPath {
     const double l = logistic(x);
     return {x, v, y0_m_ * (1.0 - (l - l0_) / span_), slope(l) * v};
   }
+  // The peak curvature of its path, |Y''| at its steepest (small slopes, as for shortest_turn_in_m):
+  // |Y0| kappa^2 / (6 sqrt 3 span).
+  double peak_curvature_per_m() const { return std::abs(y0_m_) * kappa_per_m_ * kappa_per_m_ / (6.0 * std::sqrt(3.0) * span_); }
   // |Y''(X) v^2 + Y'(X) a| at most limit_mps2 over the whole merge: by its bound when that
   // suffices, else at the kWitnessSamples + 1 instants and, around the largest, by
   // kComfortRefinements steps of a ternary search between the instants next to it (the lateral
@@ -150,9 +153,6 @@ class WitnessPath {
   // and B the speed change's rate; with u = |1 - 2 l| that is (1 - u^2) (A u + B) / 4, largest at
   // u = (sqrt(B^2 + 3 A^2) - B) / (3 A). Written as "within" so that a degenerate path (no
   // distance to a half: kappa infinite, a NaN) is no comfortable merge.
-  // The peak curvature of its path, |Y''| at its steepest (small slopes, as for shortest_turn_in_m):
-  // |Y0| kappa^2 / (6 sqrt 3 span).
-  double peak_curvature_per_m() const { return std::abs(y0_m_) * kappa_per_m_ * kappa_per_m_ / (6.0 * std::sqrt(3.0) * span_); }
   bool comfortable(double limit_mps2) const {
     const double v_max = speed_.top_speed_mps();
     const double A = kappa_per_m_ * v_max * v_max, B = speed_.top_accel_mps2();
@@ -387,7 +387,7 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   // comfortable lane change is raised to it, as RCPP's planner raises it (core/merge_duration.h).
   // An ego slower than the slowest merge speed must first gain speed, and from rest only a merge
   // of 3 rho_b reaches a midpoint a tracked path can turn in to (shortest_turn_in_m): it is offered
-  // that one too. A faster ego is not: the planner's long merges begin with seconds of straight
+  // that one too. A faster ego is not: a long merge from speed begins with seconds of straight
   // driving toward a sigmoid start far ahead, which the rule could not tell from waiting.
   const std::array<double, 4> durations_s{base_rho_s, 1.5 * base_rho_s, 2.0 * base_rho_s, 3.0 * base_rho_s};
   const std::size_t n_durations = v0 < p.progress_min_merge_speed_mps ? 4 : 3;

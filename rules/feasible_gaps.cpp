@@ -385,12 +385,14 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   // rho_m, or longer: a merge that observably takes longer holds the right of way on a reading
   // over its own duration (rules/merge_attempts.h). A declared rho_m shorter than the shortest
   // comfortable lane change is raised to it, as RCPP's planner raises it (core/merge_duration.h).
-  // An ego slower than the slowest merge speed must first gain speed, and from rest only a merge
-  // of 3 rho_b reaches a midpoint a tracked path can turn in to (shortest_turn_in_m): it is offered
-  // that one too. A faster ego is not: a long merge from speed begins with seconds of straight
-  // driving toward a sigmoid start far ahead, which the rule could not tell from waiting.
+  // An ego so slow that even at its a_accel^max it cannot reach the turn-in by the midpoint of a
+  // merge of 2 rho_b (from rest, a tracked path needs more room than it covers in rho_b) is
+  // offered one of 3 rho_b too: it must first gain speed. Another is not: a long merge from
+  // speed begins with seconds of straight driving toward a sigmoid start far ahead, which the
+  // rule could not tell from waiting.
   const std::array<double, 4> durations_s{base_rho_s, 1.5 * base_rho_s, 2.0 * base_rho_s, 3.0 * base_rho_s};
-  const std::size_t n_durations = v0 < p.progress_min_merge_speed_mps ? 4 : 3;
+  const double reach_2_rho_b_m = speed_change_distance_m(v0, t.road.speed_limit_mps, ego.accel_max_mps2, ego.brake_min_mps2, base_rho_s);
+  const std::size_t n_durations = reach_2_rho_b_m < r.turn_in_m ? 4 : 3;
   for (std::size_t g = 0; g < gaps.size(); ++g) {
     const GapIndices& gap = gaps[g];
     const GapIndices ahead = g + 1 < gaps.size() ? gaps[g + 1] : GapIndices{};

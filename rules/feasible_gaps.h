@@ -15,8 +15,8 @@ namespace mg {
 // A gap of the rightmost main lane that admits a Definition 1 merge from the ego's observed state
 // at `step`, judged with the rules' own code (rules/definition1_gap.h): for rho = rho_m (or 1.5 or
 // 2 rho_m: a merge that observably takes longer is read over its own duration; and 3 rho_m for an
-// ego slower than progress_min_merge_speed_mps: from rest only a long merge reaches a midpoint a
-// tracked path can turn in to), some v_e* in
+// ego too slow to reach the turn-in by the midpoint of 2 rho_m even at its a_accel^max: from rest
+// only a long merge reaches a midpoint a tracked path can turn in to), some v_e* in
 // [progress_min_merge_speed_mps, speed limit] satisfies ineq. (1.1) and (1.2) by
 // progress_gap_margin_m under both position models (the bounded-rate one starts from the ego's
 // observed speed and changes it at its declared a_accel^max / a_brake^min, so a v_e* it cannot

@@ -279,9 +279,11 @@ double ego_lateral_rss_m(const PlannerSetup& s, double lat_speed_mps) {
 }
 
 // The ego on its path at one instant: its lateral room beyond D_lat (and the tracking margin) to
-// the target lane's centre, and whether a corner is over the lane line.
+// the target lane's centre, for the body's corner on its heading (room_m) and for its centre
+// (centre_room_m), and whether a corner is over the lane line.
 struct PathLateral {
   double room_m = 0.0;
+  double centre_room_m = 0.0;
   bool over_line = false;
 };
 
@@ -301,7 +303,7 @@ PathLateral path_lateral(const PlannerSetup& s, double ego_y_m, const Sigmoid& s
   const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
   // A corner over the lane line (with kLaneLineMarginM) is in the lane, whatever D_lat says:
   // the rules judge entry by it (docs/spec.md §8).
-  return {-y - yaw_extra_m - (d_lat + margin_m),
+  return {-y - yaw_extra_m - (d_lat + margin_m), -y - (d_lat + margin_m),
           -y - yaw_extra_m - 0.5 * s.ego.size.width_m < 0.5 * s.road.lane_width_m + kLaneLineMarginM};
 }
 
@@ -338,11 +340,15 @@ struct OccupancyScan {
     // both parts, so a room above it is clear unless over the line); with it, it decides alone.
     if (std::isnan(below.lane_m)) {
       if (std::isnan(widest_extra)) widest_extra = widest_extra_m(s, tracks);
-      if (!lat.over_line && lat.room_m >= widest_extra) return false;
+      if (!lat.over_line && std::min(lat.room_m, lat.centre_room_m) >= widest_extra) return false;
       below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
     }
     const bool lane_blocked = below.lane_m > kNone && (lat.over_line || lat.room_m < below.lane_m);
-    return lane_blocked || lat.room_m < below.beside_m;
+    // A vehicle of another lane is judged by RCPP eq. (2) between centres (rss_lateral), whatever
+    // the ego's yaw: the corner, which decides where the ego enters its target lane, would keep a
+    // merge from passing a vehicle of the lane beyond at the D_lat and tracking margin the rules
+    // and the progress rule's witness keep.
+    return lane_blocked || lat.centre_room_m < below.beside_m;
   }
 };
 

@@ -14,6 +14,17 @@
 namespace mg {
 namespace {
 
+// Definition 1.1 counts on the gap's follower accelerating at most at its declared a_accel^max. A
+// follower seen accelerating harder (beyond accel_tolerance_mps2: declared_limits holds it liable)
+// voids that: the gap in front of it closes faster than the definition bounds, and an ego that
+// does not merge into it is not letting a right of way pass.
+bool follower_within_limits(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap) {
+  if (gap.follower < 1) return true;
+  const std::size_t f = static_cast<std::size_t>(gap.follower);
+  // Written as "within" so that a NaN acceleration voids the offer rather than passing unseen.
+  return t.steps[step].vehicles[f].accel_mps2 <= t.vehicles[f].limits.accel_max_mps2 + p.accel_tolerance_mps2;
+}
+
 // Definition 1.2 counts on the gap's leader holding its speed. A leader seen braking harder than
 // progress_leader_braking_mps2 does not, nor one closing on the vehicle ahead of it in its lane so
 // fast that, holding its speed over rho, it would come within that vehicle's D_lon (RCPP eq. (1);
@@ -396,6 +407,7 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   for (std::size_t g = 0; g < gaps.size(); ++g) {
     const GapIndices& gap = gaps[g];
     const GapIndices ahead = g + 1 < gaps.size() ? gaps[g + 1] : GapIndices{};
+    if (!follower_within_limits(t, p, step, gap)) continue;
     for (std::size_t d = 0; d < n_durations; ++d) {
       const double rho = durations_s[d];
       if (!leader_holds_speed(t, p, step, gap, ahead, rho)) continue;

@@ -28,7 +28,8 @@ namespace mg {
 // across the lane line before any corner comes within progress_gap_margin_m of that end (past it
 // the road's edge is the lane line: on_road). A gap whose leader
 // brakes harder than progress_leader_braking_mps2 does not count (Def. 1.2 assumes the leader
-// holds its speed). The merge must also be clear along its whole duration, not only at rho / 2 and
+// holds its speed), nor one whose follower accelerates beyond its declared a_accel^max plus
+// accel_tolerance_mps2 (Def. 1.1 bounds it by that). The merge must also be clear along its whole duration, not only at rho / 2 and
 // rho: on the paper's sigmoid in X (its middle where the ego is at rho / 2, its peak curvature
 // within the same share of the sideslip bound, driven on the speed profile toward v_e* with a peak
 // lateral acceleration within progress_lat_accel_max_mps2),

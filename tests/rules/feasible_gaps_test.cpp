@@ -1,5 +1,6 @@
 #include "rules/feasible_gaps.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -167,6 +168,21 @@ TEST(FeasibleGaps, AWitnessSharperThanTheCurvatureCapIsNoMerge) {
   s.ego.x_m -= 10.0;
   const auto k = test::judge(s, constant_accel_trace(s, 0.0));
   EXPECT_FALSE(def1_gaps_feasible(k->trace, k->params, 0).empty());
+}
+
+TEST(FeasibleGaps, AGapWhoseFollowerAcceleratesBeyondItsLimitIsNotOffered) {
+  // Vehicle 1 follows 100 m behind the ego, both at 20 m/s, on an empty lane ahead: the gap in front
+  // of it is offered. Seen accelerating beyond its declared a_accel^max (plus the tolerance), it
+  // closes the gap faster than Definition 1.1 bounds: the gap is not offered; at its limit it is.
+  Scenario s = base_scenario();
+  s.ego.x_m = 100.0;
+  s.vehicles = {vehicle(1, 0.0, 20.0)};
+  const double a_max = s.vehicles[0].limits.accel_max_mps2;
+  const auto within = test::judge(s, constant_accel_trace(s, 0.1, {0.0, a_max}));
+  EXPECT_FALSE(def1_gaps_feasible(within->trace, within->params, 0).empty());
+  const auto beyond = test::judge(s, constant_accel_trace(s, 0.1, {0.0, a_max + 0.5}));
+  const std::vector<FeasibleMerge> offered = def1_gaps_feasible(beyond->trace, beyond->params, 0);
+  EXPECT_TRUE(std::none_of(offered.begin(), offered.end(), [](const FeasibleMerge& m) { return m.follower_id == 1; }));
 }
 
 }  // namespace

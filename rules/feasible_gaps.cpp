@@ -21,8 +21,8 @@ namespace {
 bool follower_within_limits(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap) {
   if (gap.follower < 1) return true;
   const std::size_t f = static_cast<std::size_t>(gap.follower);
-  // Written as "within" so that a NaN acceleration voids the offer rather than passing unseen.
-  return t.steps[step].vehicles[f].accel_mps2 <= t.vehicles[f].limits.accel_max_mps2 + p.accel_tolerance_mps2;
+  // Written as "not beyond" so that a NaN acceleration excuses no wait (a loaded trace holds none).
+  return !(t.steps[step].vehicles[f].accel_mps2 > t.vehicles[f].limits.accel_max_mps2 + p.accel_tolerance_mps2);
 }
 
 // Definition 1.2 counts on the gap's leader holding its speed. A leader seen braking harder than

@@ -187,7 +187,7 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const M
   return Track{l.x_m, motion, l.length_m, l.width_m, l.limits, 0.0, {}};
 }
 
-BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2) {
+BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2, double speed_cap_mps) {
   MG_DEMAND(lane_y_m > 0.0);
   // Braking at its b_max from now: nothing in the merge depends on a vehicle of another lane, and
   // one that brakes legally while the ego is laterally close to it (a weak lateral brake makes
@@ -195,6 +195,12 @@ BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double obser
   // distance (a campaign finding, docs/planner.md).
   BesideTrack t{leader_track(v, std::min(observed_accel_mps2, -v.limits.brake_max_mps2)),
                 leader_track(v, observed_accel_mps2)};
+  // Nominally it keeps accelerating as seen, up to the cap: whether it may be ahead of the ego
+  // decides whether it constrains the merge, and one predicted at constant speed while it
+  // accelerated beside the ego came out ahead a cycle later, so that each merge planned past it
+  // was aborted at its first re-check (a campaign finding, docs/planner.md).
+  if (observed_accel_mps2 > 0.0 && speed_cap_mps > v.speed_mps)
+    t.nominal.motion = SpeedRamp{v.speed_mps, speed_cap_mps, observed_accel_mps2, 1.0};
   t.braking.lane_y_m = t.nominal.lane_y_m = lane_y_m;
   return t;
 }

@@ -195,8 +195,10 @@ struct GapTracks {
 };
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
                      const std::function<double(int)>& observed_accel_mps2);
-// A vehicle of another main lane, centred at lane_y_m > 0, for GapTracks::beside.
-BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2);
+// A vehicle of another main lane, centred at lane_y_m > 0, for GapTracks::beside: nominally at
+// its observed acceleration while that is positive, up to speed_cap_mps (the road's speed limit),
+// else as leader_track predicts it.
+BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double observed_accel_mps2, double speed_cap_mps);
 
 // Lane-occupancy check of a candidate (conservative addition to the paper's instants rho/2 and
 // rho, docs/planner.md): at every one of kOccupancySamples instants of [0, rho] at which the

@@ -76,7 +76,7 @@ std::vector<BesideTrack> beside_tracks(const WorldSnapshot& w) {
   for (const ObservedVehicle& o : w.others) {
     const double lane_y_m = std::round(o.state.y_m / lane_w) * lane_w;
     if (lane_y_m < 0.5 * lane_w) continue;  // the target lane
-    tracks.push_back(beside_track(to_lane_vehicle(o), lane_y_m, o.state.accel_mps2));
+    tracks.push_back(beside_track(to_lane_vehicle(o), lane_y_m, o.state.accel_mps2, w.setup->road.speed_limit_mps));
   }
   return tracks;
 }

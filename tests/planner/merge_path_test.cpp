@@ -95,11 +95,11 @@ TEST(OccupancyClear, AMergeKeepsDLatFromAVehicleAheadInTheNextLane) {
   GapTracks tracks;  // an empty target lane
   const Sigmoid sharp{3.5, 0.08, 50.0, -3.5}, flat{3.5, 0.03, 50.0, -3.5};
   EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0));
-  tracks.beside.push_back(beside_track(lane_vehicle(2, 90.0, 20.0), 3.5, 0.0));
+  tracks.beside.push_back(beside_track(lane_vehicle(2, 90.0, 20.0), 3.5, 0.0, 0.0));
   EXPECT_FALSE(occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0));
   EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, flat, ego, OccupancyInstants::over(4.0), tracks, 0.0));
   // Behind the ego it is the rear vehicle of any such situation: no constraint on the merge.
-  tracks.beside = {beside_track(lane_vehicle(2, -30.0, 20.0), 3.5, 0.0)};
+  tracks.beside = {beside_track(lane_vehicle(2, -30.0, 20.0), 3.5, 0.0, 0.0)};
   EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0));
 }
 
@@ -127,14 +127,16 @@ TEST(LeaderTrack, ALeaderIsPredictedBehindEveryVehicleAheadOfIt) {
 }
 
 // A vehicle of the next lane may be anywhere between its hardest braking and its nominal
-// motion, so a check a cycle later, when it has kept its speed, is no harder than the first: its
-// hardest braking from then on stops it farther ahead, at a higher speed. With a weak lateral
-// brake and a long response time (D_lat reaches across a lane), a merge clear of the next lane at
-// its decision stays clear at every later re-check while the ego follows its plan and the other
-// lane's vehicles keep their speed. (The braking position alone decided "ahead": a vehicle the
-// ego passed once stopped, but not when it kept braking a little later, aborted each merge a
-// second after its decision; smoothness_oscillation.)
-RC_GTEST_PROP(OccupancyClear, AMergeClearOfTheNextLaneStaysClearWhileItsVehiclesKeepTheirSpeed, ()) {
+// motion, so a check a cycle later, when it has kept its acceleration, is no harder than the
+// first: its hardest braking from then on stops it farther ahead, at a higher speed, and its
+// nominal position is where it was predicted. With a weak lateral brake and a long response time
+// (D_lat reaches across a lane), a merge clear of the next lane at its decision stays clear at
+// every later re-check while the ego follows its plan and the other lane's vehicles keep their
+// speed or their acceleration (up to the speed limit). (The braking position alone decided
+// "ahead": a vehicle the ego passed once stopped, but not when it kept braking a little later,
+// aborted each merge a second after its decision; smoothness_oscillation. A vehicle accelerating
+// beside the ego, predicted at constant speed, came out ahead of it a cycle after each decision.)
+RC_GTEST_PROP(OccupancyClear, AMergeClearOfTheNextLaneStaysClearWhileItsVehiclesKeepTheirAcceleration, ()) {
   Scenario s = road_only();
   s.params.rss.response_time_s = *rc::gen::inRange(5, 15) / 10.0;
   s.ego.limits.lat_brake_min_mps2 = *rc::gen::inRange(3, 10) / 10.0;
@@ -142,14 +144,23 @@ RC_GTEST_PROP(OccupancyClear, AMergeClearOfTheNextLaneStaysClearWhileItsVehicles
   const SpeedRamp ego{v0, *rc::gen::inRange(0, 300) / 10.0, 2.0, 4.0};
   const double rho_s = *rc::gen::inRange(20, 100) / 10.0;
   const Sigmoid path{3.5, *rc::gen::inRange(5, 30) / 100.0, ego.distance_at_m(0.5 * rho_s), -3.5};
-  std::vector<MainLaneVehicle> beside;
+  const double cap_mps = 35.0;
+  struct Beside {
+    MainLaneVehicle v;
+    double accel_mps2;
+  };
+  std::vector<Beside> beside;
   for (int i = 0, n = *rc::gen::inRange(1, 3); i < n; ++i)
-    beside.push_back(lane_vehicle(10 + i, *rc::gen::inRange(-300, 1500) / 10.0, *rc::gen::inRange(0, 350) / 10.0));
+    beside.push_back({lane_vehicle(10 + i, *rc::gen::inRange(-300, 1500) / 10.0, *rc::gen::inRange(0, 350) / 10.0),
+                      *rc::gen::element(0, 0, 1, 5, 10, 20) / 10.0});
   const auto tracks_at = [&](double dt_s) {
     GapTracks tracks;
-    for (MainLaneVehicle v : beside) {
-      v.x_m += v.speed_mps * dt_s;
-      tracks.beside.push_back(beside_track(v, 3.5, 0.0));
+    for (Beside b : beside) {
+      const SpeedRamp kept{b.v.speed_mps, std::max(b.v.speed_mps, cap_mps), std::max(b.accel_mps2, 1e-9), 1.0};
+      b.v.x_m += kept.distance_at_m(dt_s);
+      b.v.speed_mps = kept.speed_at_mps(dt_s);
+      const bool accelerating = b.accel_mps2 > 0.0 && b.v.speed_mps < cap_mps;
+      tracks.beside.push_back(beside_track(b.v, 3.5, accelerating ? b.accel_mps2 : 0.0, cap_mps));
     }
     return tracks;
   };
@@ -255,7 +266,7 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswer, ()) {
   const int n_beside = *rc::gen::inRange(0, 3);
   for (int i = 0; i < n_beside; ++i)
     tracks.beside.push_back(beside_track(
-        lane_vehicle(10 + i, *rc::gen::inRange(-800, 1200) / 10.0, *rc::gen::inRange(0, 350) / 10.0), 3.5, 0.0));
+        lane_vehicle(10 + i, *rc::gen::inRange(-800, 1200) / 10.0, *rc::gen::inRange(0, 350) / 10.0), 3.5, 0.0, 0.0));
   const double v0 = *rc::gen::inRange(0, 300) / 10.0;
   OccupancyMemo memo;
   for (int speed = 0; speed < 3; ++speed) {
@@ -289,7 +300,7 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswerWithMixedWidths, ()) {
   const double rho_s = *rc::gen::inRange(20, 120) / 10.0;
   GapTracks tracks = gap_tracks(lane, gap, rho_s, no_accel);
   const int n_beside = *rc::gen::inRange(0, 3);
-  for (int i = 0; i < n_beside; ++i) tracks.beside.push_back(beside_track(vehicle(10 + i), 3.5, 0.0));
+  for (int i = 0; i < n_beside; ++i) tracks.beside.push_back(beside_track(vehicle(10 + i), 3.5, 0.0, 0.0));
   const double ego_y_m = -3.5 + *rc::gen::inRange(0, 15) / 10.0;
   const double step_s = rho_s / kOccupancySamples;
   const OccupancyInstants when{step_s, *rc::gen::inRange(0, 20) * step_s * 0.5, rho_s * *rc::gen::inRange(5, 15) / 10.0};

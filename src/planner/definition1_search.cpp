@@ -36,6 +36,7 @@ constexpr double kNearPcBoundPenalty = 1e4;  // ... or pay this (far above any c
 // Below kNearPcBoundPenalty: a candidate near its P_c bounds is the worse risk.
 constexpr double kPromptStartS = 2.0;
 constexpr double kLateStartPenalty = 1e3;
+constexpr double kLatePlanSearchMaxFactor = 2.0;  // plan_definition1: the longest rho a late plan looks on to
 
 std::string gap_name(const Gap& g) {
   const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
@@ -204,6 +205,8 @@ Def1Plan def1_plan(const Def1Search& f, const Gap& gid, const SpeedInterval& iv,
   d.pc_m = pc;
   d.kappa_per_m = choice.kappa_per_m;
   d.merge_duration_s = f.rho_s;
+  plan.late_start = plan.sigmoid.x_at_fraction_m(kSigmoidEndFraction) >
+                    f.ctx.ego_x_m + f.ctx.ramp_to(plan.ve_star_mps).distance_at_m(kPromptStartS);
   d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fixed_text(iv.lo_mps, 2) + ", " +
              fixed_text(iv.hi_mps, 2) + "] m/s; merging at v_e* = " + fixed_text(plan.ve_star_mps, 2) +
              " m/s, P_c = " + fixed_text(pc, 1) + " m, kappa = " + fixed_text(choice.kappa_per_m, 3) +
@@ -244,13 +247,26 @@ std::optional<Def1Plan> plan_definition1(const WorldSnapshot& w, MergeDurations 
       merge_duration_base_s(planned_rho_m_s(s), s.road.lane_width_m, rcpp_params(s).lat_accel_comfort_mps2);
   const bool flat = durations == MergeDurations::kFlat;
   if (flat && rcpp_params(s).kappa_min_per_m <= kFlatKappaFloorPerM) return std::nullopt;
+  // A longer merge that starts now before a shorter one whose sigmoid starts seconds ahead: the
+  // ego drives on straight toward a late start, which `progress` cannot tell from waiting, while
+  // the longer merge moves it toward the lane at once (the first late plan of 1.5 rho ended the
+  // search, and an ego waiting for a passing vehicle let the gap behind it go; a campaign
+  // finding). Not one of 3 rho: its sigmoid, at least as flat as the floor allows, leaves the
+  // side lane so slowly (0.05 m/s of lateral speed at 8 m/s) that its first seconds look no
+  // different from driving straight, and once begun no sooner merge replaces it.
+  std::optional<Def1Plan> late;
   for (const double factor : kMergeDurationFactors) {
     if (!flat && (factor == 1.0) != (durations == MergeDurations::kRhoM)) continue;
+    if (late && factor > kLatePlanSearchMaxFactor) break;
     std::string this_why;
-    if (auto plan = plan_definition1_rho(w, factor * rho_base_s, flat, &this_why)) return plan;
+    if (auto plan = plan_definition1_rho(w, factor * rho_base_s, flat, &this_why)) {
+      if (!plan->late_start) return plan;
+      if (!late) late = std::move(plan);
+      continue;
+    }
     if (why) *why += (why->empty() ? "" : "; ") + ("rho = " + fixed_text(factor * rho_base_s, 1) + " s: ") + this_why;
   }
-  return std::nullopt;
+  return late;
 }
 
 }  // namespace mg

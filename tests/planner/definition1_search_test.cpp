@@ -62,5 +62,25 @@ TEST(Definition1Search, AMergeThatStartsWithinTwoSecondsIsTakenBeforeACheaperLat
   EXPECT_LT(start_x_m - s.ego.x_m, 2.0 * s.ego.speed_mps) << d.reason;
 }
 
+// The ego at 6.9 m/s in the side lane, a 16.9 m truck 42.5 m behind it at 18.4 m/s: the only gap
+// is behind the truck, and at rho_m (7.9 s) no merge is clear (v_e* <= 4.65 m/s puts P_c inside
+// the truck's wake). At 1.5 rho_m every clear candidate starts its sigmoid after the truck has
+// passed, more than two seconds ahead; at 2 rho_m one starts at once. The first duration with a
+// plan decided it, and the ego drove on straight toward the late start past the grace `progress`
+// gives an offered merge (campaign seed 7101, run 18142). The longer merge that starts now wins.
+TEST(Definition1Search, ALongerMergeThatStartsNowIsTakenBeforeAShorterOneThatStartsLate) {
+  const Scenario s = case_scenario("rcpp__progress__progress__ego-14");
+  const double rho_m_s = s.params.planner.merge_duration_s;
+  ASSERT_DOUBLE_EQ(rho_m_s, 7.9);
+  auto planner = make_planner("rcpp");
+  const RcppDecision d = decision_of(planner->plan(initial_snapshot(s)));
+  ASSERT_EQ(d.mode, DecisionMode::kDef1Merge) << d.reason;
+  ASSERT_TRUE(d.gap.has_value());
+  EXPECT_EQ(d.gap->leader_id, 1);
+  EXPECT_DOUBLE_EQ(d.merge_duration_s, 2.0 * rho_m_s) << d.reason;
+  const double start_x_m = d.pc_m - std::log(49.0) / d.kappa_per_m;  // the sigmoid's 2 % point
+  EXPECT_LT(start_x_m - s.ego.x_m, 2.0 * s.ego.speed_mps) << d.reason;
+}
+
 }  // namespace
 }  // namespace mg

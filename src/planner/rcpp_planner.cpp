@@ -63,6 +63,9 @@ CommittedMerge start_def1_merge(const InSideLane& side, const WorldSnapshot& w, 
   return m;
 }
 
+constexpr double kCentredOffsetM = 0.1;  // keep_main_lane: settled within this of the lane centre
+constexpr double kSettleCreepMps = 0.5;  // ... and crawling at least this fast until then
+
 RcppCycle keep_main_lane(const WorldSnapshot& w) {
   const PlannerSetup& s = *w.setup;
   const double lane_w = s.road.lane_width_m;
@@ -78,6 +81,17 @@ RcppCycle keep_main_lane(const WorldSnapshot& w) {
       target = v;
       reason = "lane keeping, RSS following of vehicle " + std::to_string(o.id);
     }
+  }
+  // After a crawl merge the ego is still turned toward its lane and tracked behind its path (the
+  // crawl's curvature is beyond what the tracker steers at any speed): it first settles at the
+  // lane centre at its crawl speed. Accelerating at once, it overshot the centre by 0.3 m and
+  // came back at speed, a third lateral-speed reversal of one approach (smoothness_oscillation;
+  // a campaign finding).
+  const double v = ego_speed_mps(w);
+  const bool settled = std::abs(w.ego.yaw_rad) <= kSettledYawRad && std::abs(w.ego.y_m - lane_y) <= kCentredOffsetM;
+  if (v <= crawl_speed_mps(s) && !settled && target > v) {
+    target = std::max(v, kSettleCreepMps);
+    reason += ", at a crawl until settled at the lane centre";
   }
   out.target_speed_mps = target;
   out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);

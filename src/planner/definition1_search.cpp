@@ -38,6 +38,11 @@ constexpr double kPromptStartS = 2.0;
 constexpr double kLateStartPenalty = 1e3;
 constexpr double kLatePlanSearchMaxFactor = 2.0;  // plan_definition1: the longest rho a late plan looks on to
 
+// Whether sig's 2 % point lies beyond where the ego's ramp takes it in kPromptStartS.
+bool starts_late(const Def1Context& ctx, const Sigmoid& sig, const SpeedRamp& ramp) {
+  return sig.x_at_fraction_m(kSigmoidEndFraction) > ctx.ego_x_m + ramp.distance_at_m(kPromptStartS);
+}
+
 std::string gap_name(const Gap& g) {
   const auto id = [](int i) { return i < 0 ? std::string("open") : std::to_string(i); };
   return "gap (follower " + id(g.follower_id) + ", leader " + id(g.leader_id) + ")";
@@ -165,7 +170,7 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
     const double pc = b.pc_at(f, v);
     const bool near_bound = pc < b.pc_min_m + pc_margin || pc > b.pc_max_m - pc_margin;
     const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
-    const bool late_start = sig.x_at_fraction_m(kSigmoidEndFraction) > ctx.ego_x_m + ramp.distance_at_m(kPromptStartS);
+    const bool late_start = starts_late(ctx, sig, ramp);
     const double def1_cost = p.cost_time_weight * f.half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
                              p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
                              (near_bound ? kNearPcBoundPenalty : 0.0) + (late_start ? kLateStartPenalty : 0.0) +
@@ -205,8 +210,7 @@ Def1Plan def1_plan(const Def1Search& f, const Gap& gid, const SpeedInterval& iv,
   d.pc_m = pc;
   d.kappa_per_m = choice.kappa_per_m;
   d.merge_duration_s = f.rho_s;
-  plan.late_start = plan.sigmoid.x_at_fraction_m(kSigmoidEndFraction) >
-                    f.ctx.ego_x_m + f.ctx.ramp_to(plan.ve_star_mps).distance_at_m(kPromptStartS);
+  plan.late_start = starts_late(f.ctx, plan.sigmoid, f.ctx.ramp_to(plan.ve_star_mps));
   d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fixed_text(iv.lo_mps, 2) + ", " +
              fixed_text(iv.hi_mps, 2) + "] m/s; merging at v_e* = " + fixed_text(plan.ve_star_mps, 2) +
              " m/s, P_c = " + fixed_text(pc, 1) + " m, kappa = " + fixed_text(choice.kappa_per_m, 3) +

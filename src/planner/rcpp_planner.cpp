@@ -94,7 +94,7 @@ RcppCycle keep_main_lane(const WorldSnapshot& w) {
     reason += ", at a crawl until settled at the lane centre";
   }
   out.target_speed_mps = target;
-  out.accel_limit_mps2 = accel_limit_toward(s, ego_speed_mps(w), target);
+  out.accel_limit_mps2 = accel_limit_toward(s, v, target);
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kMerged;
   out.decision.reason = reason;

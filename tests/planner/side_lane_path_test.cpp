@@ -9,16 +9,28 @@
 namespace mg {
 namespace {
 
+// The default road, the ego offset_m toward the main lane from its side-lane centre at 13 m/s
+// along the road, and the lateral state of a merge aborted there.
+struct AbortedAt {
+  Scenario s;
+  WorldSnapshot w;
+  SideLaneLateral lateral;
+  explicit AbortedAt(double offset_m) {
+    s.ego.y_m = s.road.side_lane_y_m() + offset_m;
+    s.ego.speed_mps = 13.0;
+    w = initial_snapshot(s);
+    lateral = lateral_after_abort(w);
+  }
+};
+
 // The ego 0.095 m off its side-lane centre toward the main lane, at 13 m/s along the road, its
 // lateral speed spent: a merge aborted where it had stalled just short of the judge's start
 // offset (0.1 m). The path holds that Y; a swing back to the centre would be a lateral-speed
 // reversal the smoothness rule counts, with no start it credits (a campaign finding).
 TEST(SideLanePath, AShallowAbortWithItsLateralMotionSpentHoldsTheLateralPosition) {
-  Scenario s;
-  s.ego.y_m = s.road.side_lane_y_m() + 0.095;
-  s.ego.speed_mps = 13.0;
-  const WorldSnapshot w = initial_snapshot(s);
-  SideLaneLateral lateral = lateral_after_abort(w);
+  AbortedAt a(0.095);
+  const WorldSnapshot& w = a.w;
+  SideLaneLateral& lateral = a.lateral;
   ASSERT_TRUE(lateral.hold_pending);
   const std::vector<PathPoint> path = side_lane_path(lateral, w);
   ASSERT_FALSE(path.empty());
@@ -31,16 +43,12 @@ TEST(SideLanePath, AShallowAbortWithItsLateralMotionSpentHoldsTheLateralPosition
 
 // Farther out (0.3 m) an abort returns to the centre: the path ends there.
 TEST(SideLanePath, ADeeperAbortReturnsToTheCentre) {
-  Scenario s;
-  s.ego.y_m = s.road.side_lane_y_m() + 0.3;
-  s.ego.speed_mps = 13.0;
-  const WorldSnapshot w = initial_snapshot(s);
-  SideLaneLateral lateral = lateral_after_abort(w);
-  EXPECT_FALSE(lateral.hold_pending);
-  const std::vector<PathPoint> path = side_lane_path(lateral, w);
+  AbortedAt a(0.3);
+  EXPECT_FALSE(a.lateral.hold_pending);
+  const std::vector<PathPoint> path = side_lane_path(a.lateral, a.w);
   ASSERT_FALSE(path.empty());
-  EXPECT_NEAR(path.back().y_m, s.road.side_lane_y_m(), 1e-9);
-  EXPECT_LT(path.back().y_m, w.ego.y_m);
+  EXPECT_NEAR(path.back().y_m, a.s.road.side_lane_y_m(), 1e-9);
+  EXPECT_LT(path.back().y_m, a.w.ego.y_m);
 }
 
 }  // namespace

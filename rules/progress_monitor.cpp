@@ -28,8 +28,9 @@ enum class Activity {
 };
 
 // The first step of the last rho_b of an approach toward the main lane (v_Y > 0 at every step)
-// still under way at the trace's last step, past the side lane's centre and outside any attempt:
-// the clock pauses from there. Whether the approach leads into a start the trace does not show,
+// still under way at the trace's last step, outside any attempt, past the side lane's centre or
+// below it still moving toward the main lane faster than lat_speed_hysteresis_mps: the clock
+// pauses from there. Whether the approach leads into a start the trace does not show,
 // and the rule does not accuse the ego of letting a gap pass on what the trace does not hold: a
 // merge of any duration the rule offers (up to 3 rho_b) begun within the last rho_b would not yet
 // have reached its midpoint (at rho / 2), and an unbroken approach cannot tell a drift from the
@@ -41,10 +42,13 @@ std::optional<std::size_t> censored_approach_start(const ObservedTrace& t, const
   const std::size_t last = t.steps.size() - 1;
   for (const MergeAttempt& a : attempts.attempts)
     if (!a.end_time_s) return std::nullopt;  // in an attempt at the end: judged as such
-  // Past the side lane's centre at the end: an ego settling on its centre from below moves toward
-  // the main lane too, and would otherwise always have an approach under way. A merge from below
-  // the centre (an ego halted off it) crosses it on its way.
-  if (!(ego_of(t.steps[last]).y_m > t.road.side_lane_y_m())) return std::nullopt;
+  // Past the side lane's centre at the end, or below it and moving toward the main lane beyond
+  // drift: an ego settling on its centre from below moves toward the main lane too, and would
+  // otherwise always have an approach under way, but it slows as it nears the centre. A merge
+  // from below the centre (an ego halted off it) crosses it on its way, and a slow one may not
+  // have reached it when the trace ends.
+  const ObservedState& end = ego_of(t.steps[last]);
+  if (!(end.y_m > t.road.side_lane_y_m()) && !(end.vy_mps > p.lat_speed_hysteresis_mps)) return std::nullopt;
   std::size_t first = last + 1;
   while (first > 0 && ego_of(t.steps[first - 1]).vy_mps > 0.0) --first;
   if (!attempts.attempts.empty()) first = std::max(first, step_at(t, *attempts.attempts.back().end_time_s) + 1);

@@ -44,6 +44,25 @@ TEST(ProgressMonitor, AnApproachTheTraceEndsBeforeItsStartIsNotJudged) {
   EXPECT_EQ(out.result.liable_id, Party::ego());
 }
 
+TEST(ProgressMonitor, AnApproachFromBelowTheSideLaneCentreIsNotJudgedWhileItIsFasterThanDrift) {
+  // As above, but the ego starts 0.5 m below its side lane's centre (beyond the main lane's
+  // side) and moves toward the main lane from t = 2.5 s: at 0.12 m/s it is still below the
+  // centre when the trace ends at 6 s, moving faster than lat_speed_hysteresis_mps, and its
+  // approach pauses the clock. At 0.05 m/s (an ego settling on its centre moves so) the approach
+  // does not, and the 6 s waited fail.
+  Scenario s = base_scenario();
+  const auto from_below = [&](double vy_mps) {
+    Trace t = test::with_lateral_move(constant_accel_trace(s, 6.0), 2.5, vy_mps);
+    for (TraceStep& st : t.steps) st.ego.y_m -= 0.5;
+    return t;
+  };
+  EXPECT_LT(from_below(0.12).steps.back().ego.y_m, -3.5);
+  EXPECT_TRUE(test::run(monitor_progress, s, from_below(0.12)).result.holds);
+  const MonitorOutput out = test::run(monitor_progress, s, from_below(0.05));
+  ASSERT_FALSE(out.result.holds);
+  EXPECT_EQ(out.result.liable_id, Party::ego());
+}
+
 TEST(ProgressMonitor, OnlyTheLastRhoBOfAnApproachThatNeverStartsPausesTheClock) {
   // The same road; the ego drifts toward the main lane at 0.05 m/s from the start of an 8 s
   // trace and never starts a merge: only the last rho_b (4 s) of its approach pauses the clock,

@@ -12,23 +12,7 @@
 #include "rules/monitor.h"
 
 namespace mg {
-namespace {
 
-// Definition 1.1 counts on the gap's follower accelerating at most at its declared a_accel^max. A
-// follower seen accelerating harder (beyond accel_tolerance_mps2: declared_limits holds it liable)
-// voids that: the gap in front of it closes faster than the definition bounds, and an ego that
-// does not merge into it is not letting a right of way pass.
-bool follower_within_limits(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap) {
-  if (gap.follower < 1) return true;
-  const std::size_t f = static_cast<std::size_t>(gap.follower);
-  // Written as "not beyond" so that a NaN acceleration excuses no wait (a loaded trace holds none).
-  return !(t.steps[step].vehicles[f].accel_mps2 > t.vehicles[f].limits.accel_max_mps2 + p.accel_tolerance_mps2);
-}
-
-// Definition 1.2 counts on the gap's leader holding its speed. A leader seen braking harder than
-// progress_leader_braking_mps2 does not, nor one closing on the vehicle ahead of it in its lane so
-// fast that, holding its speed over rho, it would come within that vehicle's D_lon (RCPP eq. (1);
-// RSS Def. 1): it must slow down for it, and the gap behind it shrinks as it does.
 bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap,
                         const GapIndices& ahead, double rho_s) {
   if (gap.leader < 1) return true;
@@ -45,6 +29,20 @@ bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t
                                              t.vehicles[li].limits.brake_min_mps2, t.vehicles[ai].limits.brake_max_mps2});
   return a_end_m - (l.x_m + vl * rho_s) >= d_lon_m;
 }
+
+namespace {
+
+// Definition 1.1 counts on the gap's follower accelerating at most at its declared a_accel^max. A
+// follower seen accelerating harder (beyond accel_tolerance_mps2: declared_limits holds it liable)
+// voids that: the gap in front of it closes faster than the definition bounds, and an ego that
+// does not merge into it is not letting a right of way pass.
+bool follower_within_limits(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap) {
+  if (gap.follower < 1) return true;
+  const std::size_t f = static_cast<std::size_t>(gap.follower);
+  // Written as "not beyond" so that a NaN acceleration excuses no wait (a loaded trace holds none).
+  return !(t.steps[step].vehicles[f].accel_mps2 > t.vehicles[f].limits.accel_max_mps2 + p.accel_tolerance_mps2);
+}
+
 
 // The merge a gap's feasibility is shown with, judged along its whole duration, not only at
 // rho / 2 and rho: the ego's centre follows the paper's sigmoid (RCPP §IV), a logistic in X, from

@@ -9,6 +9,7 @@
 
 #include "core/observed_trace.h"
 #include "core/params.h"
+#include "rules/definition1_gap.h"
 
 namespace mg {
 
@@ -54,6 +55,14 @@ double shortest_turn_in_m(const ObservedTrace& t, const RuleParams& p, double y_
 // along the road again (0 when the centre is at or past the line): a witness's second half.
 double shortest_turn_out_m(const ObservedTrace& t, const RuleParams& p, double y_m);
 std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const RuleParams& p, std::size_t step);
+
+// Definition 1.2 counts on the gap's leader holding its speed. A leader seen braking harder than
+// progress_leader_braking_mps2 does not, nor one closing on the vehicle ahead of it in its lane so
+// fast that, holding its speed over rho, it would come within that vehicle's D_lon (RCPP eq. (1);
+// RSS Def. 1): it must slow down for it, and the gap behind it shrinks as it does. `ahead` is the
+// next gap forward (its follower is `gap`'s leader).
+bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap,
+                        const GapIndices& ahead, double rho_s);
 
 
 }  // namespace mg

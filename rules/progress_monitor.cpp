@@ -129,19 +129,22 @@ struct Offer {
 // one ahead of the partner; 2.2: the one behind it) still leaves room for it: Definition 1 for
 // that pair (ineq. (1.2), resp. (1.1)) holds for a merge of rho begun now at the ego's observed
 // speed (Def. 2.1 and 2.2 keep the ego's speed once the request is answered), and, in 2.1, that
-// vehicle brakes no harder than progress_leader_braking_mps2 (leader_holds_speed's first
-// condition). The check at the request (other_gap_vehicle_clear) says the merge was possible
-// then; a vehicle ahead that braked since has shrunk the gap the request counted on, and an ego
-// that drops the merge is waiting for a reason.
+// vehicle holds its speed as a Definition 1 gap's leader must (leader_holds_speed: braking no
+// harder than progress_leader_braking_mps2, and not closing on the vehicle ahead of it so fast
+// that it must slow down for it). The check at the request (other_gap_vehicle_clear) says the
+// merge was possible then; a vehicle ahead that braked since, or that must brake for a vehicle
+// stopped ahead of it, has shrunk the gap the request counted on, and an ego that drops the merge
+// is waiting for a reason.
 bool other_vehicle_leaves_room(const ObservedTrace& t, const RuleParams& p, const Acceptance& a, std::size_t i,
                                double rho_s) {
   const int partner = t.index_of(a.partner_id);
   const double v_e = std::max(0.0, ego_of(t.steps[i]).vx_mps);
-  for (const GapIndices& g : lane_gaps(t, i)) {
+  const std::vector<GapIndices> gaps = lane_gaps(t, i);
+  for (std::size_t k = 0; k < gaps.size(); ++k) {
+    const GapIndices& g = gaps[k];
     if (a.ego_ahead && g.follower == partner) {
       if (g.leader < 1) return true;
-      if (t.steps[i].vehicles[static_cast<std::size_t>(g.leader)].accel_mps2 < -p.progress_leader_braking_mps2)
-        return false;
+      if (!leader_holds_speed(t, p, i, g, k + 1 < gaps.size() ? gaps[k + 1] : GapIndices{}, rho_s)) return false;
       return def1_2_margin_m(t, i, g.leader, v_e, rho_s) >= 0.0;
     }
     if (!a.ego_ahead && g.leader == partner) return def1_1_margin_m(t, i, g.follower, v_e, rho_s) >= 0.0;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/fixed_text.h"
+#include "core/merge_duration.h"
 #include "core/rss.h"
 #include "planner/field_timeline.h"
 #include "planner/merge_path.h"
@@ -231,7 +232,17 @@ std::optional<Def2Plan> plan_accepted_definition2(const WorldSnapshot& w, const 
   // The answer is in hand: no exchange window, no request in flight.
   c.comm_threshold_s = 0.0;
   c.request_latency_s = 0.0;
-  if (w.time_s + 0.5 * c.merge_duration_s > a.bound_until_s + kHeldAcceptanceTieS) return std::nullopt;
+  // The midpoint while the acceptance binds the partner: at rho_m, or sooner on a shorter merge,
+  // down to the shortest comfortable lane change, when less of the binding is left (an acceptance
+  // taken up again after an abort and the hold that follows it).
+  const double left_s = a.bound_until_s + kHeldAcceptanceTieS - w.time_s;
+  if (left_s < 0.5 * c.merge_duration_s) {
+    const PlannerSetup& s = *w.setup;
+    const double shortest_s = kShortestMergeFactor * shortest_comfortable_merge_s(
+                                                         s.road.lane_width_m, rcpp_params(s).lat_accel_comfort_mps2);
+    if (2.0 * left_s < shortest_s) return std::nullopt;
+    c.merge_duration_s = 2.0 * left_s;
+  }
   const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
   const auto it = std::find_if(lane.begin(), lane.end(), [&](const MainLaneVehicle& v) { return v.id == a.partner_id; });
   if (it == lane.end()) return std::nullopt;

@@ -289,6 +289,19 @@ TEST(ProgressMonitor, AnAcceptanceWhoseOtherVehicleLeftNoRoomOffersNothing) {
   EXPECT_TRUE(out.result.holds) << out.result.detail;
 }
 
+TEST(ProgressMonitor, AnAcceptanceWhoseOtherVehicleMustSlowForTheOneAheadOfItOffersNothing) {
+  // Vehicle 4 yields as promised and vehicle 3, ahead of it, holds 20 m/s, but vehicle 2, 45.5 m
+  // ahead of vehicle 3, drives at 12 m/s: holding its speed over rho vehicle 3 would come within
+  // vehicle 2's D_lon, so it must slow down and the gap the request counted on shrinks, as for a
+  // Definition 1 gap's leader. The acceptance offers no merge (judged by vehicle 3's braking and
+  // ineq. (1.2) alone it offered one for 4.98 s); with vehicle 2 at 20 m/s it does
+  // (AKeptAcceptanceLeftUnusedIsLettingTheRightOfWayPass).
+  Scenario s = coop_offer_scenario();
+  s.vehicles[1].speed_mps = 12.0;
+  const MonitorOutput out = test::run(monitor_progress, s, coop_offer_trace(s, 4, slows(0.1, 12.0, 8.0)));
+  EXPECT_TRUE(out.result.holds) << out.result.detail;
+}
+
 TEST(ProgressMonitor, AnAcceptanceWhoseSenderTheEgoLetCloseInOffersNoMore) {
   // Vehicle 4 yields to 12 m/s as it accepted, but the ego brakes from 15 m/s at 2 m/s2 from 0.1 s
   // to 9 m/s (Def. 2.1 has it hold its speed): vehicle 4 closes in, and from about 1.8 s a merge

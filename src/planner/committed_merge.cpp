@@ -14,6 +14,10 @@
 namespace mg {
 namespace {
 
+// Observed accelerations within this of a declared limit count as within it (the simulation's
+// and a trace's rounding).
+constexpr double kBeyondLimitsToleranceMps2 = 0.05;
+
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
 
 std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSnapshot& w,
@@ -182,6 +186,30 @@ bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) 
   return occupancy_clear(s, w.ego.x_m, w.ego.y_m, m.sigmoid, ramp, when, tracks, 0.0);
 }
 
+// Whether a corner of the ego's body is over the lane line, in the main lane: where the rules
+// judge a merge's entry (docs/spec.md §8).
+bool body_in_main_lane(const WorldSnapshot& w) {
+  const VehicleSize& size = w.setup->ego.size;
+  const double left_y = w.ego.y_m + 0.5 * size.width_m * std::abs(std::cos(w.ego.yaw_rad)) +
+                        0.5 * size.length_m * std::abs(std::sin(w.ego.yaw_rad));
+  return left_y > -0.5 * w.setup->road.lane_width_m;
+}
+
+// Whether a vehicle of the merge's gap is seen beyond its declared limits (braking harder than
+// its b_max or accelerating harder than its a_accel^max): the right of way it left the ego rested
+// on them.
+bool gap_vehicle_beyond_limits(const CommittedMerge& m, const WorldSnapshot& w) {
+  if (!m.decision.gap) return false;
+  for (const ObservedVehicle& o : w.others) {
+    if (o.id != m.decision.gap->follower_id && o.id != m.decision.gap->leader_id) continue;
+    const double a = o.state.accel_mps2;
+    if (a < -(o.limits.brake_max_mps2 + kBeyondLimitsToleranceMps2) ||
+        a > o.limits.accel_max_mps2 + kBeyondLimitsToleranceMps2)
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w) {
@@ -201,8 +229,12 @@ std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_
 
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
   // An abort returns to the side lane, sound only while the ego can still stop before its end
-  // (Def. 1.3); otherwise the merge completes under the RSS override.
-  if (m.committed(w.ego.y_m) || !can_still_halt(w)) return false;
+  // (Def. 1.3); otherwise the merge completes under the RSS override. Nor once the body is in the
+  // main lane: the rules judge the right of way at the entry, and a merge that went back from
+  // there entered without it; unless a vehicle of its gap breaks its declared limits, when going
+  // back is the way out of a collision the right of way no longer protects.
+  if (m.committed(w.ego.y_m) || !can_still_halt(w) || (body_in_main_lane(w) && !gap_vehicle_beyond_limits(m, w)))
+    return false;
   return m.decision.mode == DecisionMode::kDef1Merge
              ? committed_bounds_crossed(m, w) || !committed_occupancy_clear(m, w)
              : committed_bounds_crossed(m, w);

@@ -43,9 +43,9 @@ inline constexpr double kSettledFraction = 0.9;
 inline constexpr double kSettledYawRad = 0.05;
 bool merge_complete(const CommittedMerge& m, const WorldSnapshot& w);
 
-// Abort now: not yet committed, still able to halt before the side lane's end, and the P_c
-// bounds cross at the predicted positions (or, for a Definition 1 merge, the rest of the merge
-// is occupied).
+// Abort now: not yet committed, no corner of the body over the lane line yet, still able to halt
+// before the side lane's end, and the P_c bounds cross at the predicted positions (or, for a
+// Definition 1 merge, the rest of the merge is occupied).
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
 
 // The merge's reference path over [x_from_m, x_to_m]: the sigmoid, but for a merge begun from a

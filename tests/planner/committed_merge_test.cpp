@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "core/scenario.h"
+
 namespace mg {
 namespace {
 
@@ -72,6 +74,40 @@ TEST(CommittedMerge, PastTheSigmoidsEndAMergeCompletesOnlyOnceTheEgoHasSettled) 
   EXPECT_TRUE(complete_at(62.0, -0.3, 0.02));
   EXPECT_FALSE(complete_at(55.0, -0.3, 0.02));  // before the end: by lateral progress only
   EXPECT_TRUE(complete_at(55.0, -0.05, 0.1));
+}
+
+// A Definition 1 merge into the gap ahead of vehicle 1, which has caught up and drives beside
+// the ego 3 m/s faster: the P_c bounds cross. The ego (4.5 m x 1.8 m) is 0.65 m toward the main
+// lane from its side lane's centre (W = 3.5 m), under a quarter of the lane change: not
+// committed. Heading along the road its body is short of the lane line and the merge is aborted;
+// turned 0.1 rad toward the lane its front corner is over the line, in the main lane where the
+// rules judge the merge's entry, and the merge goes on under the RSS override, unless vehicle 1
+// is seen braking beyond its declared b_max: then going back is the way out.
+TEST(CommittedMerge, AMergeIsNotAbortedOnceACornerOfTheBodyIsInTheMainLane) {
+  Scenario s;
+  s.road.lane_width_m = 3.5;
+  s.ego.size.length_m = 4.5;
+  s.ego.size.width_m = 1.8;
+  s.ego.x_m = 100.0;
+  s.ego.y_m = s.road.side_lane_y_m() + 0.65;
+  s.ego.speed_mps = 15.0;
+  MainVehicle beside;
+  beside.id = 1;
+  beside.x_m = 100.0;
+  beside.speed_mps = 18.0;
+  s.vehicles = {beside};
+  CommittedMerge m = merge_from(s.road.side_lane_y_m(), false);
+  m.sigmoid.pc_m = 130.0;
+  m.target_speed_mps = 15.0;
+  m.decision.mode = DecisionMode::kDef1Merge;
+  m.decision.gap = Gap{1, -1};
+  ASSERT_FALSE(m.committed(s.ego.y_m));
+  WorldSnapshot w = initial_snapshot(s);
+  EXPECT_TRUE(merge_should_abort(m, w));
+  w.ego.yaw_rad = 0.1;
+  EXPECT_FALSE(merge_should_abort(m, w));
+  w.others[0].state.accel_mps2 = -(beside.limits.brake_max_mps2 + 1.0);
+  EXPECT_TRUE(merge_should_abort(m, w));
 }
 
 RC_GTEST_PROP(CommittedMerge, APathFromAHoldOnlyEverMovesTowardTheMainLane, ()) {

@@ -183,7 +183,8 @@ bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) 
     tracks.leaders.push_back(predicted_leader(w, lane, *next));
   const double elapsed_s = w.time_s - d.time_s;
   const OccupancyInstants when{OccupancyInstants::over(d.merge_duration_s).step_s, elapsed_s, horizon_s};
-  return occupancy_clear(s, w.ego.x_m, w.ego.y_m, m.sigmoid, ramp, when, tracks, 0.0);
+  return occupancy_clear(s, w.ego.x_m, w.ego.y_m, m.sigmoid, ramp, when, tracks, 0.0, nullptr,
+                         kOccupancyRecheckLateralSlackM);
 }
 
 // Whether a corner of the ego's body is over the lane line, in the main lane: where the rules

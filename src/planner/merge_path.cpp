@@ -324,6 +324,7 @@ struct OccupancyScan {
   const OccupancyInstants& when;
   const GapTracks& tracks;
   double buffer_m;
+  double lateral_slack_m;
   OccupancyMemo* memo;
   double widest_extra = std::numeric_limits<double>::quiet_NaN();  // computed when first needed
 
@@ -346,22 +347,23 @@ struct OccupancyScan {
     // both parts, so a room above it is clear unless over the line); with it, it decides alone.
     if (std::isnan(below.lane_m)) {
       if (std::isnan(widest_extra)) widest_extra = widest_extra_m(s, tracks);
-      if (!lat.over_line && std::min(lat.room_m, lat.centre_room_m) >= widest_extra) return false;
+      if (!lat.over_line && std::min(lat.room_m, lat.centre_room_m) + lateral_slack_m >= widest_extra) return false;
       below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
     }
-    const bool lane_blocked = below.lane_m > kNone && (lat.over_line || lat.room_m < below.lane_m);
+    const bool lane_blocked = below.lane_m > kNone && (lat.over_line || lat.room_m + lateral_slack_m < below.lane_m);
     // A vehicle of another lane is judged by RCPP eq. (2) between centres (rss_lateral), whatever
     // the ego's yaw: the corner, which decides where the ego enters its target lane, would keep a
     // merge from passing a vehicle of the lane beyond at the D_lat and tracking margin the rules
     // and the progress rule's witness keep.
-    return lane_blocked || lat.centre_room_m < below.beside_m;
+    return lane_blocked || lat.centre_room_m + lateral_slack_m < below.beside_m;
   }
 };
 
 }  // namespace
 
 bool occupancy_clear(const PlannerSetup& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
-                     const OccupancyInstants& when, const GapTracks& tracks, double buffer_m, OccupancyMemo* memo) {
+                     const OccupancyInstants& when, const GapTracks& tracks, double buffer_m, OccupancyMemo* memo,
+                     double lateral_slack_m) {
   MG_DEMAND(when.step_s > 0.0);
   // The instants k step - elapsed within [0, horizon]: k from k_first to k_last.
   const int k_first = static_cast<int>(std::ceil(when.elapsed_s / when.step_s - 1e-9));
@@ -370,7 +372,7 @@ bool occupancy_clear(const PlannerSetup& s, double ego_x_m, double ego_y_m, cons
   // (about P_c) back to the first instant, then on to the last. Rejections concentrate just before
   // P_c (the follower), so most come after a few instants.
   const int k_middle = std::clamp(kOccupancySamples / 2, k_first, std::max(k_first, k_last));
-  OccupancyScan scan{s, ego_x_m, ego_y_m, sig, ego, when, tracks, buffer_m, memo};
+  OccupancyScan scan{s, ego_x_m, ego_y_m, sig, ego, when, tracks, buffer_m, lateral_slack_m, memo};
   const int hint = memo && memo->last_blocked_k >= k_first && memo->last_blocked_k <= k_last ? memo->last_blocked_k : -1;
   if (hint >= 0 && scan.blocked_at(hint)) return false;
   for (int j = 0; j <= k_last - k_first; ++j) {

@@ -224,6 +224,11 @@ inline constexpr double kLaneLineMarginM = 0.1;
 // that its re-check every cycle (with none) does not fail at the first small deviation of the
 // ego or the traffic from the prediction and abort a merge that has only just begun.
 inline constexpr double kOccupancyPlanningBufferM = 1.5;
+// lateral_slack_m is lateral room an instant may lack and still be clear: a committed merge's
+// re-check takes kOccupancyRecheckLateralSlackM of the tracking margin (kOccupancyLateralMarginM),
+// so that a lateral deviation of centimetres from the path does not abort a merge the check
+// passed when it was decided (a merge passing a vehicle alongside failed its re-check by 1 cm).
+inline constexpr double kOccupancyRecheckLateralSlackM = 0.1;
 // The instants a check visits: k step_s - elapsed_s (k = 0, 1, ...) that lie in [0, horizon_s],
 // in seconds from now. A new candidate: over(rho), rho / kOccupancySamples apart. A committed
 // merge's re-check keeps its decision's instants (elapsed_s since the decision), so that it agrees
@@ -254,6 +259,7 @@ struct OccupancyMemo {
 };
 bool occupancy_clear(const PlannerSetup& s, double ego_x_m, double ego_y_m, const Sigmoid& sig, const SpeedRamp& ego,
                      const OccupancyInstants& when, const GapTracks& tracks, double buffer_m,
-                     OccupancyMemo* memo = nullptr);
+                     OccupancyMemo* memo = nullptr,
+                     double lateral_slack_m = 0.0);
 
 }  // namespace mg

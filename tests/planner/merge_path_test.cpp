@@ -79,6 +79,37 @@ TEST(OccupancyClear, AnEgoNearerTheLaneThanThePathStartIsCheckedWhereItIs) {
   EXPECT_FALSE(occupancy_clear(s, 0.0, -1.9, path, ego, OccupancyInstants::over(6.0), tracks, 0.0));
 }
 
+// A committed merge's re-check takes kOccupancyRecheckLateralSlackM (0.1 m) of the tracking
+// margin: the nearest a vehicle of the next lane over may drive to the ego's sharp merge of
+// AMergeKeepsDLatFromAVehicleAheadInTheNextLane (its lane's centre, found by bisection) is 0.1 m
+// nearer for the re-check than for a new candidate.
+TEST(OccupancyClear, TheRecheckOfACommittedMergeTakesItsLateralSlackOfTheTrackingMargin) {
+  Scenario s = road_only();
+  s.params.rss.response_time_s = 0.8;
+  s.ego.limits.lat_brake_min_mps2 = 0.8;
+  const SpeedRamp ego{25.0, 25.0, 2.0, 4.0};
+  const Sigmoid sharp{3.5, 0.08, 50.0, -3.5};
+  const auto clear_with = [&](double lane_y_m, double slack_m) {
+    GapTracks tracks;
+    tracks.beside = {beside_track(lane_vehicle(2, 90.0, 20.0), lane_y_m, 0.0, 0.0)};
+    return occupancy_clear(s, 0.0, -3.5, sharp, ego, OccupancyInstants::over(4.0), tracks, 0.0, nullptr, slack_m);
+  };
+  const auto nearest_clear_m = [&](double slack_m) {
+    double blocked = 3.5, clear = 10.0;
+    EXPECT_FALSE(clear_with(blocked, slack_m));
+    EXPECT_TRUE(clear_with(clear, slack_m));
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (blocked + clear);
+      (clear_with(mid, slack_m) ? clear : blocked) = mid;
+    }
+    return clear;
+  };
+  const double planned_m = nearest_clear_m(0.0), rechecked_m = nearest_clear_m(kOccupancyRecheckLateralSlackM);
+  EXPECT_NEAR(planned_m - rechecked_m, 0.1, 1e-9);
+  EXPECT_FALSE(clear_with(planned_m - 0.05, 0.0));
+  EXPECT_TRUE(clear_with(planned_m - 0.05, kOccupancyRecheckLateralSlackM));
+}
+
 
 // Ego at 25 m/s, P_c at X = 50 m (t = 2 s, rho = 4 s); a vehicle in the next lane over (centre
 // Y = 3.5) starts 90 m ahead at 20 m/s, so at P_c it is 80 m ahead, not D_lon (88.9 m with

@@ -58,6 +58,18 @@ std::optional<std::size_t> censored_approach_start(const ObservedTrace& t, const
   return first;
 }
 
+// Whether a vehicle other than the ego is seen beyond its declared limits at step i (as
+// declared_limits judges it, within accel_tolerance_mps2).
+bool other_beyond_limits(const ObservedTrace& t, const RuleParams& p, std::size_t i) {
+  for (std::size_t k = 1; k < t.vehicles.size(); ++k) {
+    const Limits& lim = limits_of(t, k);
+    const double a = t.steps[i].vehicles[k].accel_mps2;
+    if (a > lim.accel_max_mps2 + p.accel_tolerance_mps2 || a < -(lim.brake_max_mps2 + p.accel_tolerance_mps2))
+      return true;
+  }
+  return false;
+}
+
 // An attempt is a merge once the ego's body reaches into the main lane (its entry): from its start
 // to its end, the ego is merging, and an offer it lets pass after that begins a new run. Before
 // the entry, and in an attempt that never enters, the clock pauses while the ego moves toward the
@@ -67,7 +79,12 @@ std::optional<std::size_t> censored_approach_start(const ObservedTrace& t, const
 // approach that led into a start (v_Y > 0, however slow: a long sigmoid leaves its lane centre
 // gently) pauses the clock too: the merge began there. An approach still unbroken at the trace's
 // last step, outside an attempt, may lead into a start the trace ended before: its last rho_b
-// pauses the clock (censored_approach_start).
+// pauses the clock (censored_approach_start). So does the part past the side lane's centre of an
+// approach under way when another vehicle is seen beyond its declared limits, up to that step:
+// the merge it may have led into rested on those limits, and the ego that drops it then is
+// responding to the breach (declared_limits holds that vehicle liable), not letting a gap pass.
+// (Past the centre, as for the censored approach: an ego settling on its centre from below moves
+// toward the main lane too, for as long as it likes.)
 std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, const MergeAttempts& attempts) {
   std::vector<Activity> out(t.steps.size(), Activity::kWaiting);
   const double line_y = -0.5 * t.road.lane_width_m;
@@ -81,6 +98,14 @@ std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, co
       if (a.entry_step) out[i] = Activity::kMerging;
       else if (ego_of(t.steps[i]).vy_mps > p.lat_speed_hysteresis_mps) out[i] = Activity::kPaused;
     }
+  }
+  const auto approaching = [&](std::size_t i) {
+    return ego_of(t.steps[i]).vy_mps > 0.0 && ego_of(t.steps[i]).y_m > t.road.side_lane_y_m();
+  };
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (!approaching(i) || !other_beyond_limits(t, p, i)) continue;
+    for (std::size_t j = i + 1; j > 0 && approaching(j - 1); --j)
+      if (out[j - 1] == Activity::kWaiting) out[j - 1] = Activity::kPaused;
   }
   for (std::size_t i = 0; i < out.size(); ++i)
     if (!(ego_of(t.steps[i]).y_m < line_y)) out[i] = Activity::kMerging;

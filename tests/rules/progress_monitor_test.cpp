@@ -2,6 +2,7 @@
 #include "rules/definition2_inequalities.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -61,6 +62,29 @@ TEST(ProgressMonitor, AnApproachFromBelowTheSideLaneCentreIsNotJudgedWhileItIsFa
   const MonitorOutput out = test::run(monitor_progress, s, from_below(0.05));
   ASSERT_FALSE(out.result.holds);
   EXPECT_EQ(out.result.liable_id, Party::ego());
+}
+
+TEST(ProgressMonitor, AnApproachUnderWayWhenAVehicleBreaksItsLimitsIsNotJudgedUpToThatStep) {
+  // An empty target lane at 20 m/s (every gap open from t = 0); vehicle 1 drives in the lane
+  // beyond, 300 m ahead. The ego moves toward the main lane at 0.05 m/s (no start an observer
+  // sees) from 0.5 s to 4.5 s, then back. At 4.4 s vehicle 1 is seen braking at 9 m/s2, beyond
+  // its declared 8: the approach up to then pauses the clock (the ego dropping a merge that
+  // rested on the declared limits is responding to the breach), and the 0.5 s before it and the
+  // 1.6 s after it stay within the grace. Without the breach the approach leads into no start and
+  // the clock runs from t = 0: it fails at 3.02 s.
+  Scenario s = base_scenario();
+  MainVehicle beyond = vehicle(1, 300.0, 20.0);
+  beyond.lane = 1;
+  s.road.main_lanes = 2;
+  s.vehicles = {beyond};
+  const Trace steady = test::with_aborted_move(constant_accel_trace(s, 6.0), 0.5, 0.05, 4.0);
+  const MonitorOutput waited = test::run(monitor_progress, s, steady);
+  ASSERT_FALSE(waited.result.holds);
+  EXPECT_NEAR(*waited.result.first_violation_time_s, 3.02, 1e-9);
+  Trace breach = steady;
+  for (TraceStep& st : breach.steps)
+    if (std::abs(st.time_s - 4.4) < 1e-9) st.others[0].accel_mps2 = -9.0;
+  EXPECT_TRUE(test::run(monitor_progress, s, breach).result.holds);
 }
 
 TEST(ProgressMonitor, OnlyTheLastRhoBOfAnApproachThatNeverStartsPausesTheClock) {

@@ -43,7 +43,6 @@ bool follower_within_limits(const ObservedTrace& t, const RuleParams& p, std::si
   return !(t.steps[step].vehicles[f].accel_mps2 > t.vehicles[f].limits.accel_max_mps2 + p.accel_tolerance_mps2);
 }
 
-
 // The merge a gap's feasibility is shown with, judged along its whole duration, not only at
 // rho / 2 and rho: the ego's centre follows the paper's sigmoid (RCPP §IV), a logistic in X, from
 // its observed position to the target lane's centre, through its middle at the X the ego reaches

@@ -64,5 +64,4 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
 bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap,
                         const GapIndices& ahead, double rho_s);
 
-
 }  // namespace mg

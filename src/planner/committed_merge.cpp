@@ -14,10 +14,6 @@
 namespace mg {
 namespace {
 
-// Observed accelerations within this of a declared limit count as within it (the simulation's
-// and a trace's rounding).
-constexpr double kBeyondLimitsToleranceMps2 = 0.05;
-
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
 
 std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSnapshot& w,
@@ -197,16 +193,15 @@ bool body_in_main_lane(const WorldSnapshot& w) {
 }
 
 // Whether a vehicle of the merge's gap is seen beyond its declared limits (braking harder than
-// its b_max or accelerating harder than its a_accel^max): the right of way it left the ego rested
-// on them.
+// its b_max or accelerating harder than its a_accel^max, beyond the tolerance the rules read
+// them with, accel_tolerance_mps2): the right of way it left the ego rested on them.
 bool gap_vehicle_beyond_limits(const CommittedMerge& m, const WorldSnapshot& w) {
   if (!m.decision.gap) return false;
+  const double tol = w.setup->params.rules.accel_tolerance_mps2;
   for (const ObservedVehicle& o : w.others) {
     if (o.id != m.decision.gap->follower_id && o.id != m.decision.gap->leader_id) continue;
     const double a = o.state.accel_mps2;
-    if (a < -(o.limits.brake_max_mps2 + kBeyondLimitsToleranceMps2) ||
-        a > o.limits.accel_max_mps2 + kBeyondLimitsToleranceMps2)
-      return true;
+    if (a < -(o.limits.brake_max_mps2 + tol) || a > o.limits.accel_max_mps2 + tol) return true;
   }
   return false;
 }

@@ -15,7 +15,7 @@
 namespace mg {
 namespace {
 
-Scenario load(const std::string& name) {
+Scenario fig2_scenario(const std::string& name) {
   return load_scenario(std::string(MG_SOURCE_DIR) + "/corpus/scenarios/" + name + ".json");
 }
 
@@ -41,7 +41,7 @@ TEST(Fig2, Situation1EgoAheadMergesAheadOfTheFollower) {
   // 3v^2 - 56v - 138.8 >= 0 -> v >= 20.882. Both must hold: v_e* >= 20.916. No leader: upper = limit.
   // P_c lower bound = X(2 s) at 20.916 = 100 + 41.832 + (1.084)^2/8 = 141.979 m; upper: accelerating at
   // 2 to the limit gives 100 + 44 + 4 = 148 m.
-  const PlanOutput out = plan_initial(load("fig2_s1_ahead_noncoop"), "rcpp");
+  const PlanOutput out = plan_initial(fig2_scenario("fig2_s1_ahead_noncoop"), "rcpp");
   const RcppDecision d = decision_of(out);
   EXPECT_EQ(d.mode, DecisionMode::kDef1Merge);
   ASSERT_TRUE(d.gap);
@@ -65,7 +65,7 @@ TEST(Fig2, Situation2EgoBehindMergesBehindTheLeader) {
   //   at 2 s: leader 104: 99.2 - 2.5v - [(v+1)^2 + (20-v)^2]/8 >= 0 <=> v^2 - 9v - 196.3 <= 0
   //   -> v <= (9 + sqrt(81 + 785.2))/2 = 19.216 (literal at 2 s: v <= 19.226). Binding: 19.216.
   // No follower: lower end 0. P_c lower bound: X(2 s) at v_e* = 0 is 30 + 40 - 8 = 62 m.
-  const PlanOutput out = plan_initial(load("fig2_s2_behind_noncoop"), "rcpp");
+  const PlanOutput out = plan_initial(fig2_scenario("fig2_s2_behind_noncoop"), "rcpp");
   const RcppDecision d = decision_of(out);
   EXPECT_EQ(d.mode, DecisionMode::kDef1Merge);
   ASSERT_TRUE(d.gap);
@@ -85,7 +85,7 @@ TEST(Fig2, Situation3EgoAheadWithoutV2vDropsBackAndWithV2vAsksToSlowDown) {
   // 65 - D_lon(12, 20) < 82: the P_c bounds cross. So at rho_m no Def. 1 gap exists; the paper
   // halts (Def. 1.3). "rcpp" then tries the longer merges of its extension (docs/planner.md): it
   // drops back behind vehicle 1 in a merge longer than rho_m.
-  const Scenario s = load("fig2_s3_ahead_coop");
+  const Scenario s = fig2_scenario("fig2_s3_ahead_coop");
   const RcppDecision halt_or_longer = decision_of(plan_initial(s, "rcpp"));
   EXPECT_EQ(halt_or_longer.mode, DecisionMode::kDef1Merge);
   ASSERT_TRUE(halt_or_longer.gap);
@@ -124,7 +124,7 @@ TEST(Fig2, Situation4EgoBehindAsksToSpeedUpWithV2vAndOtherwiseDropsBack) {
   // with V2V the ego asks vehicle 1 to speed up (Def. 2.2, as in the paper's Fig. 2); without it,
   // the longer-merge extension drops back behind vehicle 1 with rho = 1.5 rho_m. (The Def. 2.2
   // request itself is computed in definition2_test.cpp, HandComputedEgoBehindSpeed.)
-  const Scenario s = load("fig2_s4_behind_coop");
+  const Scenario s = fig2_scenario("fig2_s4_behind_coop");
   const RcppDecision coop = decision_of(plan_initial(s, "rcpp-coop"));
   EXPECT_EQ(coop.mode, DecisionMode::kDef2Request);
   EXPECT_EQ(coop.coop_partner_id, 1);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/fixed_text.h"
+#include "core/merge_phase_detector.h"
 #include "core/rss.h"
 #include "planner/merge_path.h"
 #include "planner/rcpp_world.h"
@@ -186,10 +187,8 @@ bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) 
 // Whether a corner of the ego's body is over the lane line, in the main lane: where the rules
 // judge a merge's entry (docs/spec.md §8).
 bool body_in_main_lane(const WorldSnapshot& w) {
-  const VehicleSize& size = w.setup->ego.size;
-  const double left_y = w.ego.y_m + 0.5 * size.width_m * std::abs(std::cos(w.ego.yaw_rad)) +
-                        0.5 * size.length_m * std::abs(std::sin(w.ego.yaw_rad));
-  return left_y > -0.5 * w.setup->road.lane_width_m;
+  return MergePhaseDetector::left_edge_y_m(w.setup->ego.size, w.ego.y_m, w.ego.yaw_rad) >
+         -0.5 * w.setup->road.lane_width_m;
 }
 
 // Whether a vehicle of the merge's gap is seen beyond its declared limits (braking harder than

@@ -38,9 +38,16 @@ constexpr double kPromptStartS = 2.0;
 constexpr double kLateStartPenalty = 1e3;
 constexpr double kLatePlanSearchMaxFactor = 2.0;  // plan_definition1: the longest rho a late plan looks on to
 
-// Whether sig's 2 % point lies beyond where the ego's ramp takes it in kPromptStartS.
-bool starts_late(const Def1Context& ctx, const Sigmoid& sig, const SpeedRamp& ramp) {
-  return sig.x_at_fraction_m(kSigmoidEndFraction) > ctx.ego_x_m + ramp.distance_at_m(kPromptStartS);
+// Where the ego's ramp takes it in kPromptStartS: a sigmoid whose 2 % point lies beyond starts late.
+double late_start_x_m(const Def1Context& ctx, const SpeedRamp& ramp) {
+  return ctx.ego_x_m + ramp.distance_at_m(kPromptStartS);
+}
+
+// Whether a sigmoid with midpoint pc_m and slope kappa_per_m starts beyond late_x_m: its 2 %
+// point as Sigmoid::x_at_fraction_m computes it, with the logarithm taken once.
+bool starts_late(double pc_m, double kappa_per_m, double late_x_m) {
+  static const double kEndLogit = std::log(kSigmoidEndFraction / (1.0 - kSigmoidEndFraction));
+  return pc_m + kEndLogit / kappa_per_m > late_x_m;
 }
 
 std::string gap_name(const Gap& g) {
@@ -126,9 +133,40 @@ std::vector<double> def1_candidate_speeds(const Def1Search& f, double lo_mps, do
   return speeds;
 }
 
-// The cheapest comfortable sigmoid into `gap` whose merge stays clear of the lane's vehicles.
+// What the candidates of one v_e* share (def1_choose).
+struct Def1Speed {
+  SpeedRamp ramp;
+  double pc_m = 0.0;
+  double kappa_cap_per_m = 0.0;
+  double late_x_m = 0.0;   // late_start_x_m of the ramp
+  double base_cost = 0.0;  // the Definition 1 cost before the penalties that depend on kappa
+  OccupancyMemo memo;      // shared by the kappa candidates
+};
+
+// The candidates of v_e* = v. They keep pc_margin_m (kPcMarginM, or less in a narrow interval) from
+// both P_c bounds when they can (path-tracking error): one
+// nearer a bound pays kNearPcBoundPenalty, so it wins only when nothing else is admissible.
+Def1Speed def1_speed(const Def1Search& f, const PcBounds& b, double pc_margin_m, double v_traffic_mps, double v) {
+  const RcppParams p = rcpp_params(f.s);
+  const Def1Context& ctx = f.ctx;
+  const double pc = b.pc_at(f, v);
+  const bool near_bound = pc < b.pc_min_m + pc_margin_m || pc > b.pc_max_m - pc_margin_m;
+  const SpeedRamp ramp = ctx.ramp_to(v);
+  const double base = p.cost_time_weight * f.half_s + p.cost_speed_change_weight * std::abs(v - ctx.ego_speed_mps) +
+                      p.cost_traffic_speed_weight * std::abs(v - v_traffic_mps) + (near_bound ? kNearPcBoundPenalty : 0.0);
+  return Def1Speed{ramp, pc, kappa_cap_per_m(f.s, ramp), late_start_x_m(ctx, ramp), base, {}};
+}
+
+// RCPP's Definition 1 cost of a candidate (docs/planner.md), without the potential field.
+double def1_cost(const Def1Speed& a, double kappa_per_m) {
+  return a.base_cost + (starts_late(a.pc_m, kappa_per_m, a.late_x_m) ? kLateStartPenalty : 0.0) +
+         sharp_sigmoid_penalty(kappa_per_m, a.kappa_cap_per_m);
+}
+
+// The cheapest comfortable sigmoid into `gap` whose merge stays clear of the lane's vehicles;
+// nullopt when none is, or none costs less than `incumbent` (the cheapest plan into another gap).
 std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, const SpeedInterval& iv,
-                                         const PcBounds& b) {
+                                         const PcBounds& b, double incumbent) {
   const PlannerSetup& s = f.s;
   const RcppParams p = rcpp_params(s);
   const Def1Context& ctx = f.ctx;
@@ -139,57 +177,46 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
   // The ego's own lateral progress toward the main lane, where a merge from a crawl may start its
   // sigmoid (kappa_range_for).
   const double start_fraction = (f.w.ego.y_m - s.road.side_lane_y_m()) / s.road.lane_width_m;
-  const auto range_from = [&](double v, double floor_per_m) {
-    const SpeedRamp ramp = ctx.ramp_to(v);
-    return kappa_range_for(s, b.pc_at(f, v), ctx.ego_x_m, ctx.ego_x_m + ramp.distance_at_m(f.rho_s), ramp, ctx.ego_x_m,
+  const std::vector<double> speeds = def1_candidate_speeds(f, iv.lo_mps, b.v_hi_mps);
+  const double pc_margin = std::min(kPcMarginM, 0.25 * (b.pc_max_m - b.pc_min_m));
+  std::vector<std::optional<Def1Speed>> at_speed(speeds.size());  // made when the search first reaches each
+  int last_blocked_k = -1;  // the instant that blocked the last occupancy check, at any speed
+  const auto speed = [&](std::size_t i) -> Def1Speed& {
+    if (!at_speed[i]) at_speed[i].emplace(def1_speed(f, b, pc_margin, v_traffic, speeds[i]));
+    return *at_speed[i];
+  };
+  const double field_floor = field_cost_floor(p);
+  // Every term the kappa adds to the Definition 1 cost is >= 0 and the field is never below its
+  // floor (PotentialField.TheFloorIsNeverAboveTheField), so both bounds hold in floating point.
+  const auto floor_of = [&](std::size_t i) { return speed(i).base_cost + field_floor; };
+  const auto bound = [&](std::size_t i, double kappa) { return def1_cost(speed(i), kappa) + field_floor; };
+  const auto cost = [&](std::size_t i, double kappa) {
+    Def1Speed& a = speed(i);
+    const Sigmoid sig{s.road.lane_width_m, kappa, a.pc_m, -s.road.lane_width_m};
+    a.memo.last_blocked_k = last_blocked_k;
+    const bool clear = occupancy_clear(s, ctx.ego_x_m, f.w.ego.y_m, sig, a.ramp, OccupancyInstants::over(f.rho_s),
+                                       tracks, kOccupancyPlanningBufferM, &a.memo);
+    last_blocked_k = a.memo.last_blocked_k;
+    if (!clear) return std::numeric_limits<double>::infinity();
+    if (!f.field_at_rho) f.field_at_rho = field_timeline(f.w, f.rho_s, constant_speed_x);
+    return def1_cost(a, kappa) + field_cost(p, *f.field_at_rho, sig,
+                                            [&](double t) { return ctx.ego_x_m + a.ramp.distance_at_m(t); });
+  };
+  const auto range_from = [&](std::size_t i, double floor_per_m) {
+    const Def1Speed& a = speed(i);
+    return kappa_range_for(s, a.pc_m, ctx.ego_x_m, ctx.ego_x_m + a.ramp.distance_at_m(f.rho_s), a.ramp, ctx.ego_x_m,
                            floor_per_m, start_fraction);
   };
-  const auto kappa_range = [&](double v) { return range_from(v, 0.0); };
+  const auto kappa_range = [&](std::size_t i) { return range_from(i, 0.0); };
   // The flat fallback: the slopes below the configured floor, down to kFlatKappaFloorPerM, of a
   // v_e* whose range starts at that floor.
-  const auto flatter_range = [&](double v) -> KappaRange {
-    const KappaRange r = range_from(v, kFlatKappaFloorPerM);
+  const auto flatter_range = [&](std::size_t i) -> KappaRange {
+    const KappaRange r = range_from(i, kFlatKappaFloorPerM);
     if (!r || r->first >= p.kappa_min_per_m) return std::nullopt;
     return std::make_pair(r->first, std::min(r->second, p.kappa_min_per_m));
   };
-  // Candidates keep kPcMarginM from both P_c bounds when they can (path-tracking error): one
-  // nearer a bound pays kNearPcBoundPenalty, so it wins only when nothing else is admissible.
-  const double pc_margin = std::min(kPcMarginM, 0.25 * (b.pc_max_m - b.pc_min_m));
-  OccupancyMemo memo;  // shared by the kappa candidates of one v_e* (choose_sigmoid's inner loop)
-  double memo_v = std::numeric_limits<double>::quiet_NaN();
-  double kappa_cap = 0.0;  // kappa_cap_per_m of memo_v's ramp
-  double best_seen = std::numeric_limits<double>::infinity();  // the lowest cost choose_sigmoid holds
-  const double field_floor = field_cost_floor(p);
-  const auto cost = [&](double v, double kappa) {
-    const SpeedRamp ramp = ctx.ramp_to(v);
-    if (v != memo_v) {
-      memo.forget_ramp();
-      memo_v = v;
-      kappa_cap = kappa_cap_per_m(s, ramp);
-    }
-    const double pc = b.pc_at(f, v);
-    const bool near_bound = pc < b.pc_min_m + pc_margin || pc > b.pc_max_m - pc_margin;
-    const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
-    const bool late_start = starts_late(ctx, sig, ramp);
-    const double def1_cost = p.cost_time_weight * f.half_s + p.cost_speed_change_weight * std::abs(v - v_e) +
-                             p.cost_traffic_speed_weight * std::abs(v - v_traffic) +
-                             (near_bound ? kNearPcBoundPenalty : 0.0) + (late_start ? kLateStartPenalty : 0.0) +
-                             sharp_sigmoid_penalty(kappa, kappa_cap);
-    // Not below the best so far even with the field at its floor: not chosen (a tie keeps the
-    // first), so neither its occupancy nor its field is evaluated.
-    if (def1_cost + field_floor >= best_seen) return std::numeric_limits<double>::infinity();
-    if (!occupancy_clear(s, ctx.ego_x_m, f.w.ego.y_m, sig, ramp, OccupancyInstants::over(f.rho_s), tracks,
-                         kOccupancyPlanningBufferM, &memo))
-      return std::numeric_limits<double>::infinity();
-    if (!f.field_at_rho) f.field_at_rho = field_timeline(f.w, f.rho_s, constant_speed_x);
-    const double c = def1_cost + field_cost(p, *f.field_at_rho, sig,
-                                            [&](double t) { return ctx.ego_x_m + ramp.distance_at_m(t); });
-    best_seen = std::min(best_seen, c);
-    return c;
-  };
-  const std::vector<double> speeds = def1_candidate_speeds(f, iv.lo_mps, b.v_hi_mps);
-  if (f.flat) return choose_sigmoid(speeds, flatter_range, p.kappa_candidates, cost);
-  return choose_sigmoid(speeds, kappa_range, p.kappa_candidates, cost);
+  if (f.flat) return choose_sigmoid_best_first(speeds, floor_of, flatter_range, p.kappa_candidates, bound, cost, incumbent);
+  return choose_sigmoid_best_first(speeds, floor_of, kappa_range, p.kappa_candidates, bound, cost, incumbent);
 }
 
 Def1Plan def1_plan(const Def1Search& f, const Gap& gid, const SpeedInterval& iv, const PcBounds& b,
@@ -210,7 +237,7 @@ Def1Plan def1_plan(const Def1Search& f, const Gap& gid, const SpeedInterval& iv,
   d.pc_m = pc;
   d.kappa_per_m = choice.kappa_per_m;
   d.merge_duration_s = f.rho_s;
-  plan.late_start = starts_late(f.ctx, plan.sigmoid, f.ctx.ramp_to(plan.ve_star_mps));
+  plan.late_start = starts_late(pc, choice.kappa_per_m, late_start_x_m(f.ctx, f.ctx.ramp_to(plan.ve_star_mps)));
   d.reason = "Def. 1: " + gap_name(gid) + " feasible for v_e* in [" + fixed_text(iv.lo_mps, 2) + ", " +
              fixed_text(iv.hi_mps, 2) + "] m/s; merging at v_e* = " + fixed_text(plan.ve_star_mps, 2) +
              " m/s, P_c = " + fixed_text(pc, 1) + " m, kappa = " + fixed_text(choice.kappa_per_m, 3) +
@@ -230,9 +257,8 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
     if (!iv.feasible) { ++n_def1; continue; }
     const auto bounds = def1_pc_bounds(f, gap, iv);
     if (!bounds) { ++n_cross; continue; }
-    const auto choice = def1_choose(f, gap, iv, *bounds);
+    const auto choice = def1_choose(f, gap, iv, *bounds, best_cost);
     if (!choice) { ++n_sigmoid; continue; }
-    if (choice->cost >= best_cost) continue;
     best_cost = choice->cost;
     const Gap gid{gap.follower ? gap.follower->id : -1, gap.leader ? gap.leader->id : -1};
     best = def1_plan(f, gid, iv, *bounds, *choice);

@@ -110,4 +110,32 @@ std::optional<SigmoidChoice> choose_sigmoid(const std::vector<double>& params,
   return best;
 }
 
+namespace sigmoid_detail {
+
+std::optional<SigmoidChoice> visit_cheapest_first(const std::vector<double>& params, std::vector<Candidate>& candidates,
+                                                  const std::function<double(std::size_t, double)>& cost,
+                                                  double incumbent) {
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.key < b.key || (a.key == b.key && a.order < b.order);
+  });
+  // The incumbent wins every tie: order -1 lies before every candidate.
+  SigmoidChoice best{0.0, 0.0, incumbent};
+  int best_order = -1;
+  for (const Candidate& c : candidates) {
+    // Keys ascend, so no candidate left can beat the best once one key exceeds its cost.
+    if (c.key > best.cost) break;
+    if (c.key == best.cost && c.order > best_order) continue;  // at best a tie, and later
+    const double cost_c = cost(static_cast<std::size_t>(c.param_index), c.kappa_per_m);
+    if (!std::isfinite(cost_c)) continue;  // inadmissible candidate
+    if (cost_c < best.cost || (cost_c == best.cost && c.order < best_order)) {
+      best = SigmoidChoice{params[static_cast<std::size_t>(c.param_index)], c.kappa_per_m, cost_c};
+      best_order = c.order;
+    }
+  }
+  if (best_order < 0) return std::nullopt;
+  return best;
+}
+
+}  // namespace sigmoid_detail
+
 }  // namespace mg

@@ -4,7 +4,11 @@
 // (the potential field along the path plus the Definition 1 cost; docs/planner.md).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -79,5 +83,61 @@ using KappaRange = std::optional<std::pair<double, double>>;
 std::optional<SigmoidChoice> choose_sigmoid(const std::vector<double>& params,
                                             const std::function<KappaRange(double)>& kappa_range, int n_kappa,
                                             const std::function<double(double, double)>& cost);
+
+// The same choice as choose_sigmoid (the cheapest admissible candidate, the first in its order on
+// ties), found by visiting the candidates cheapest lower bound first and stopping once no bound
+// left lies below the cheapest cost found: a search whose cost is mostly an expensive admissibility
+// test evaluates few candidates beyond the chosen one. Candidates are named by the index of their
+// parameter. The bounds must hold in floating point:
+//   param_floor(i) <= bound(i, kappa) <= cost(i, kappa) for every kappa of i's range
+// (a NaN bound counts as no bound). kappa_range(i) is asked only of parameters whose floor lies
+// below the cheapest cost found. `incumbent` is the cost of a choice made before this search (a
+// candidate at that cost or above loses to it): nullopt is returned when nothing beats it.
+template <class Floor, class Range, class Bound, class Cost>
+std::optional<SigmoidChoice> choose_sigmoid_best_first(const std::vector<double>& params, const Floor& param_floor,
+                                                       const Range& kappa_range, int n_kappa, const Bound& bound,
+                                                       const Cost& cost,
+                                                       double incumbent = std::numeric_limits<double>::infinity());
+
+// choose_sigmoid_best_first's implementation.
+namespace sigmoid_detail {
+
+// One candidate of the best-first search: `order` is its place in choose_sigmoid's order.
+struct Candidate {
+  double key = 0.0;  // a lower bound on its cost
+  int order = 0;
+  int param_index = 0;
+  double kappa_per_m = 0.0;
+};
+
+inline double as_lower_bound(double b) { return std::isnan(b) ? -std::numeric_limits<double>::infinity() : b; }
+
+// Sorts the candidates by key, then by order; returns the choice of the visit of
+// choose_sigmoid_best_first.
+std::optional<SigmoidChoice> visit_cheapest_first(const std::vector<double>& params, std::vector<Candidate>& candidates,
+                                                  const std::function<double(std::size_t, double)>& cost,
+                                                  double incumbent);
+
+}  // namespace sigmoid_detail
+
+template <class Floor, class Range, class Bound, class Cost>
+std::optional<SigmoidChoice> choose_sigmoid_best_first(const std::vector<double>& params, const Floor& param_floor,
+                                                       const Range& kappa_range, int n_kappa, const Bound& bound,
+                                                       const Cost& cost, double incumbent) {
+  using sigmoid_detail::as_lower_bound;
+  std::vector<sigmoid_detail::Candidate> candidates;
+  candidates.reserve(params.size() * static_cast<std::size_t>(std::max(n_kappa, 1)));
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    // A parameter none of whose candidates can beat the incumbent is not expanded.
+    if (as_lower_bound(param_floor(i)) >= incumbent) continue;
+    const KappaRange range = kappa_range(i);
+    if (!range || range->first > range->second) continue;
+    for (int k = 0; k < even_grid_size(range->first, range->second, n_kappa); ++k) {
+      const double kappa = even_grid_at(range->first, range->second, n_kappa, k);
+      candidates.push_back({as_lower_bound(bound(i, kappa)), static_cast<int>(candidates.size()), static_cast<int>(i), kappa});
+    }
+  }
+  return sigmoid_detail::visit_cheapest_first(params, candidates, cost, incumbent);
+}
 
 }  // namespace mg

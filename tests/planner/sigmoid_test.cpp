@@ -92,6 +92,59 @@ RC_GTEST_PROP(Sigmoid, ChosenCandidateLiesWithinBounds, ()) {
   RC_ASSERT(choice->kappa_per_m >= k_lo && choice->kappa_per_m <= k_hi);
 }
 
+// The best-first search returns exactly choose_sigmoid's choice, ties and inadmissible
+// candidates included, whatever valid lower bounds it is given, and nothing that does not beat an
+// incumbent.
+RC_GTEST_PROP(Sigmoid, TheBestFirstSearchChoosesWhatTheGridSearchChooses, ()) {
+  const int n_params = *rc::gen::inRange(1, 12);
+  const int n_kappa = *rc::gen::inRange(1, 6);
+  std::vector<double> params;
+  std::vector<KappaRange> ranges;
+  for (int i = 0; i < n_params; ++i) {
+    params.push_back(static_cast<double>(i));
+    const int lo = *rc::gen::inRange(1, 20);
+    if (*rc::gen::inRange(0, 5) == 0) ranges.push_back(std::nullopt);
+    else ranges.push_back(std::make_pair(lo / 100.0, (lo + *rc::gen::inRange(-2, 10)) / 100.0));
+  }
+  // Few distinct costs, so that ties are common; -1 marks an inadmissible candidate.
+  const auto cost_table = *rc::gen::container<std::vector<int>>(static_cast<std::size_t>(n_params * n_kappa),
+                                                                rc::gen::inRange(-1, 6));
+  const auto slack = *rc::gen::container<std::vector<int>>(cost_table.size(), rc::gen::inRange(0, 4));
+  const auto slot = [&](std::size_t i, double kappa) {
+    const auto& r = *ranges[i];
+    int k = 0;
+    while (k + 1 < even_grid_size(r.first, r.second, n_kappa) && even_grid_at(r.first, r.second, n_kappa, k) != kappa) ++k;
+    return i * static_cast<std::size_t>(n_kappa) + static_cast<std::size_t>(k);
+  };
+  const auto cost = [&](std::size_t i, double kappa) {
+    const int c = cost_table[slot(i, kappa)];
+    return c < 0 ? std::numeric_limits<double>::infinity() : static_cast<double>(c);
+  };
+  // A bound at most the cost (an inadmissible candidate's bound is anything up to +inf) and a
+  // parameter floor at most every bound of its candidates.
+  const auto bound = [&](std::size_t i, double kappa) {
+    const std::size_t at = slot(i, kappa);
+    return cost_table[at] < 0 ? 10.0 - slack[at] : cost_table[at] - slack[at] * 0.5;
+  };
+  const auto floor_of = [&](std::size_t i) { return -1.0 - static_cast<double>(i % 3); };
+  const auto range_of = [&](std::size_t i) { return ranges[i]; };
+  // The parameters are their own indices, so that the grid search's callbacks can name them.
+  const auto expected = choose_sigmoid(
+      params, [&](double v) { return range_of(static_cast<std::size_t>(v)); }, n_kappa,
+      [&](double v, double kappa) { return cost(static_cast<std::size_t>(v), kappa); });
+  const auto best_first = choose_sigmoid_best_first(params, floor_of, range_of, n_kappa, bound, cost);
+  RC_ASSERT(best_first.has_value() == expected.has_value());
+  if (expected) {
+    RC_ASSERT(best_first->cost == expected->cost);
+    RC_ASSERT(best_first->kappa_per_m == expected->kappa_per_m);
+    RC_ASSERT(best_first->param == expected->param);
+  }
+  const double incumbent = *rc::gen::inRange(0, 7);
+  const auto beaten = choose_sigmoid_best_first(params, floor_of, range_of, n_kappa, bound, cost, incumbent);
+  RC_ASSERT(beaten.has_value() == (expected && expected->cost < incumbent));
+  if (beaten) RC_ASSERT(beaten->cost == expected->cost && beaten->kappa_per_m == expected->kappa_per_m);
+}
+
 TEST(Sigmoid, NoAdmissibleKappaMeansNoChoice) {
   const auto choice = choose_sigmoid(
       even_grid(0, 10, 5), [](double) -> KappaRange { return std::nullopt; }, 5, [](double, double) { return 0.0; });

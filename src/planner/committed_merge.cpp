@@ -224,11 +224,16 @@ std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_
 
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
   // An abort returns to the side lane, sound only while the ego can still stop before its end
-  // (Def. 1.3); otherwise the merge completes under the RSS override. Nor once the body is in the
-  // main lane: the rules judge the right of way at the entry, and a merge that went back from
-  // there entered without it; unless a vehicle of its gap breaks its declared limits, when going
-  // back is the way out of a collision the right of way no longer protects.
-  if (m.committed(w.ego.y_m) || !can_still_halt(w) || (body_in_main_lane(w) && !gap_vehicle_beyond_limits(m, w)))
+  // (Def. 1.3) at b_min; otherwise the merge completes under the RSS override. Nor once the body
+  // is in the main lane: the rules judge the right of way at the entry, and a merge that went back
+  // from there entered without it. Unless a vehicle of its gap breaks its declared limits: then
+  // going back is the way out of a collision the right of way no longer protects, and a halt at
+  // b_max (the halt profile's emergency braking) the way to keep Def. 1.3 for a merge into a gap
+  // the breach has closed (a vehicle the ego meant to overtake, accelerating at four times its
+  // a_accel^max, left no gap while the ego could still stop at b_max but no longer at b_min).
+  const bool breach = gap_vehicle_beyond_limits(m, w);
+  const double halt_brake_mps2 = breach ? w.setup->ego.limits.brake_max_mps2 : w.setup->ego.limits.brake_min_mps2;
+  if (m.committed(w.ego.y_m) || !can_still_halt(w, halt_brake_mps2) || (body_in_main_lane(w) && !breach))
     return false;
   return m.decision.mode == DecisionMode::kDef1Merge
              ? committed_bounds_crossed(m, w) || !committed_occupancy_clear(m, w)

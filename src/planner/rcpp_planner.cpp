@@ -139,7 +139,10 @@ RcppCycle hold_after_abort(const InSideLane& side, const WorldSnapshot& w, const
   RcppCycle out;
   out.path = std::move(path);
   out.target_speed_mps = std::min(ego_speed_mps(w), h.halt_cap_mps);
-  out.accel_limit_mps2 = w.setup->ego.limits.brake_min_mps2;
+  // b_max only when b_min could no longer stop the ego before the side lane's end (an abort at
+  // b_max's halt distance, merge_should_abort).
+  const Limits& el = w.setup->ego.limits;
+  out.accel_limit_mps2 = h.needed_mps2 > el.brake_min_mps2 ? el.brake_max_mps2 : el.brake_min_mps2;
   out.decision.time_s = w.time_s;
   out.decision.mode = DecisionMode::kDef1Halt;
   out.decision.reason = note + "holding the side lane after an aborted merge until t = " +

@@ -62,12 +62,14 @@ std::optional<double> time_to_reach_s(const WorldSnapshot& w, const SpeedRamp& r
   return lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_m; }, 0.0, 600.0, 1e-4);
 }
 
-bool can_still_halt(const WorldSnapshot& w) {
+bool can_still_halt(const WorldSnapshot& w) { return can_still_halt(w, w.setup->ego.limits.brake_min_mps2); }
+
+bool can_still_halt(const WorldSnapshot& w, double brake_mps2) {
   const PlannerSetup& s = *w.setup;
   const double v = ego_speed_mps(w);
   const double room_m =
       s.road.side_lane_end_x_m - 0.5 * s.ego.size.length_m - w.ego.x_m - v * s.params.sim.planner_cycle_s;
-  return room_m > 0.0 && v * v / (2.0 * s.ego.limits.brake_min_mps2) < room_m;
+  return room_m > 0.0 && v * v / (2.0 * brake_mps2) < room_m;
 }
 
 std::vector<BesideTrack> beside_tracks(const WorldSnapshot& w) {

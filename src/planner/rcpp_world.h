@@ -37,11 +37,12 @@ Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle
 double leader_bound_margin_m(const PlannerSetup& s, const MainLaneVehicle& o, double x_o_m, double v_o_mps, double v_at_mps,
                              double pc_m);
 
-// Whether braking at b_min still stops the ego before the side lane's end, with one planner cycle
-// of travel in hand for the speed controller, whose proportional tail stops the ego a little later
-// than constant braking would (by centimetres with weak brakes at speed: an abort decided with
-// less to spare halted past the end).
+// Whether braking at b_min (or at brake_mps2) still stops the ego before the side lane's end, with
+// one planner cycle of travel in hand for the speed controller, whose proportional tail stops the
+// ego a little later than constant braking would (by centimetres with weak brakes at speed: an
+// abort decided with less to spare halted past the end).
 bool can_still_halt(const WorldSnapshot& w);
+bool can_still_halt(const WorldSnapshot& w, double brake_mps2);
 
 // When the ego on `ramp` reaches X = x_m from where it is now (nullopt: never).
 std::optional<double> time_to_reach_s(const WorldSnapshot& w, const SpeedRamp& ramp, double x_m);

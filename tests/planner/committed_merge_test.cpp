@@ -8,6 +8,7 @@
 #include <rapidcheck/gtest.h>
 
 #include "core/scenario.h"
+#include "planner/rcpp_world.h"
 
 namespace mg {
 namespace {
@@ -108,6 +109,44 @@ TEST(CommittedMerge, AMergeIsNotAbortedOnceACornerOfTheBodyIsInTheMainLane) {
   EXPECT_FALSE(merge_should_abort(m, w));
   w.others[0].state.accel_mps2 = -(beside.limits.brake_max_mps2 + 1.0);
   EXPECT_TRUE(merge_should_abort(m, w));
+}
+
+// A merge decided to overtake vehicle 1, slow ahead in the main lane, and to merge ahead of it
+// (gap: follower 1). Vehicle 1 then accelerates at four times its a_accel^max: the gap is gone.
+// The ego (b_min 2.4, b_max 3.0 m/s2) can no longer stop before the side lane's end at b_min, but
+// still at b_max: the merge is aborted, and Def. 1.3's halt is the halt profile's at b_max. A few
+// metres on, where b_max cannot stop it either, the merge goes on under the RSS override.
+TEST(CommittedMerge, AMergeIntoAGapABreachClosedIsAbortedWhileTheEgoCanStillHaltAtBMax) {
+  Scenario s;
+  s.road.lane_width_m = 3.5;
+  s.road.side_lane_end_x_m = 170.0;
+  s.ego.size.length_m = 5.4;
+  s.ego.limits.brake_min_mps2 = 2.4;
+  s.ego.limits.brake_max_mps2 = 3.0;
+  s.ego.x_m = 37.0;
+  s.ego.y_m = s.road.side_lane_y_m();
+  s.ego.speed_mps = 24.9;
+  MainVehicle ahead;
+  ahead.id = 1;
+  ahead.x_m = 58.0;
+  ahead.speed_mps = 9.5;
+  ahead.limits.accel_max_mps2 = 1.9;
+  s.vehicles = {ahead};
+  CommittedMerge m;
+  m.sigmoid = Sigmoid{3.5, 0.055, 134.5, -3.5};
+  m.start_y_m = s.ego.y_m;
+  m.target_speed_mps = 24.9;
+  m.decision.mode = DecisionMode::kDef1Merge;
+  m.decision.gap = Gap{1, -1};
+  m.decision.merge_duration_s = 11.0;
+  WorldSnapshot w = initial_snapshot(s);
+  w.others[0].state.accel_mps2 = 7.9;
+  ASSERT_FALSE(can_still_halt(w));
+  ASSERT_TRUE(can_still_halt(w, s.ego.limits.brake_max_mps2));
+  EXPECT_TRUE(merge_should_abort(m, w));
+  w.ego.x_m = 65.0;
+  ASSERT_FALSE(can_still_halt(w, s.ego.limits.brake_max_mps2));
+  EXPECT_FALSE(merge_should_abort(m, w));
 }
 
 RC_GTEST_PROP(CommittedMerge, APathFromAHoldOnlyEverMovesTowardTheMainLane, ()) {

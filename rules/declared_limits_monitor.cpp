@@ -6,6 +6,12 @@
 
 namespace mg {
 
+bool beyond_declared_limits(const ObservedTrace& t, const RuleParams& p, std::size_t i, std::size_t k) {
+  const Limits& lim = limits_of(t, k);
+  const double a = state_of(t.steps[i], k).accel_mps2;
+  return a > lim.accel_max_mps2 + p.accel_tolerance_mps2 || a < -(lim.brake_max_mps2 + p.accel_tolerance_mps2);
+}
+
 MonitorOutput monitor_declared_limits(const MonitorContext& ctx) {
   const ObservedTrace& t = ctx.trace;
   const auto& steps = t.steps;

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "rules/declared_limits_monitor.h"
 #include "rules/definition1_gap.h"
 
 namespace mg {
@@ -121,10 +122,27 @@ MonitorOutput monitor_window_limit(const MonitorContext& ctx, LimitKind kind) {
   return acc.finish();
 }
 
-bool any_def1_gap_feasible(const ObservedTrace& t, std::size_t step, double rho_s) {
-  for (const GapIndices& gap : lane_gaps(t, step))
-    if (def1_feasible(t, step, gap, rho_s)) return true;
-  return false;
+// The vehicles bounding the gaps feasible at step i at rho_s (ineq. (1.1)/(1.2)); empty when
+// none is.
+std::vector<std::size_t> def1_feasible_gap_vehicles(const ObservedTrace& t, std::size_t step, double rho_s) {
+  std::vector<std::size_t> out;
+  for (const GapIndices& gap : lane_gaps(t, step)) {
+    if (!def1_feasible(t, step, gap, rho_s)) continue;
+    for (const int k : {gap.follower, gap.leader})
+      if (k >= 1) out.push_back(static_cast<std::size_t>(k));
+    if (gap.follower < 1 && gap.leader < 1) out.push_back(0);  // an empty lane: feasible, bounded by none
+  }
+  return out;
+}
+
+// Of the vehicles bounding the gaps the ego went on toward, the first seen beyond its declared
+// limits at a step of [from, to].
+std::optional<std::size_t> breach_among(const MonitorContext& ctx, const std::vector<std::size_t>& vehicles,
+                                        std::size_t from, std::size_t to) {
+  for (std::size_t i = from; i <= to; ++i)
+    for (const std::size_t k : vehicles)
+      if (k >= 1 && beyond_declared_limits(ctx.trace, ctx.params, i, k)) return k;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -135,27 +153,62 @@ MonitorOutput monitor_def1_1_follower(const MonitorContext& ctx) { return monito
 MonitorOutput monitor_def1_2_leader(const MonitorContext& ctx) { return monitor_window_limit(ctx, LimitKind::kBrake); }
 
 // RCPP Def. 1.3: without the right of way, the ego in the side lane must stay able to halt
-// before the side lane ends (braking at its a_brake^max).
+// before the side lane ends (braking at its a_brake^max). It binds only while no gap satisfies
+// ineq. (1.1)/(1.2): with one, the ego may go on toward it (whether it then enters with the right
+// of way is the gap rules' question). When the gaps it went on toward, no longer able to halt,
+// are lost while one of their vehicles is seen beyond its declared limits, the ego could not
+// have foreseen it: that vehicle is liable (docs/spec_rules.md, Definition 1.3). Such steps are
+// recorded after the ego's own, so that a breach never hides a violation the ego is liable for.
 MonitorOutput monitor_def1_3_halt(const MonitorContext& ctx) {
   const ObservedTrace& s = ctx.trace;
   const auto& steps = ctx.trace.steps;
   MarginAccumulator acc("def1_3_halt", steps.size());
   const double boundary_y = -s.road.lane_width_m / 2.0;
+  std::vector<std::size_t> relied_on;  // the vehicles of the gaps that last relieved the ego
+  std::size_t breach = 0;              // one of them seen beyond its limits since they did (0: none)
+  std::size_t unscanned = 0;           // the first step not yet looked at for that
+  struct Excused {
+    std::size_t step;
+    double margin_m, stop_x_m;
+    std::size_t vehicle;
+  };
+  std::vector<Excused> excused;
+  const auto detail = [&](double stop_x) {
+    std::ostringstream os;
+    os << "ego in the side lane without a gap can no longer halt before its end at x = " << s.road.side_lane_end_x_m
+       << " m (front would stop at x = " << stop_x << " m)";
+    return os.str();
+  };
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const ObservedState& e = ego_of(steps[i]);
     if (e.y_m >= boundary_y || ctx.row.ego_holds_at(steps[i].time_s)) continue;
     const double v = std::max(speed_of(e), 0.0);
     const double stop_x = e.x_m + size_of(s, 0).length_m / 2.0 + v * v / (2.0 * limits_of(s, 0).brake_max_mps2);
     const double m = s.road.side_lane_end_x_m - stop_x;
-    // Def. 1.3 binds only while no gap satisfies ineq. (1.1)/(1.2): with one, the ego may go on
-    // toward it (whether it then enters with the right of way is the gap rules' question).
-    if (m < 0.0 && any_def1_gap_feasible(s, i, ctx.params.merge_duration_s)) continue;
-    if (acc.record(i, steps[i].time_s, m, Party::ego(), s.road.side_lane_end_x_m, stop_x)) {
-      std::ostringstream os;
-      os << "ego in the side lane without a gap can no longer halt before its end at x = "
-         << s.road.side_lane_end_x_m << " m (front would stop at x = " << stop_x << " m)";
-      acc.set_detail(os.str());
+    if (!(m < 0.0)) {
+      relied_on.clear();
+      breach = 0;
+    } else if (std::vector<std::size_t> gaps = def1_feasible_gap_vehicles(s, i, ctx.params.merge_duration_s);
+               !gaps.empty()) {
+      relied_on = std::move(gaps);
+      breach = 0;
+      unscanned = i;
+      continue;
+    } else {
+      if (breach == 0) breach = breach_among(ctx, relied_on, unscanned, i).value_or(0);
+      unscanned = i + 1;
+      if (breach != 0) {
+        excused.push_back({i, m, stop_x, breach});
+        continue;
+      }
     }
+    if (acc.record(i, steps[i].time_s, m, Party::ego(), s.road.side_lane_end_x_m, stop_x)) acc.set_detail(detail(stop_x));
+  }
+  for (const Excused& x : excused) {
+    const Party party = party_of(s, x.vehicle);
+    if (acc.record(x.step, steps[x.step].time_s, x.margin_m, party, s.road.side_lane_end_x_m, x.stop_x_m))
+      acc.set_detail(detail(x.stop_x_m) + "; the gaps it went on toward were lost while " + party_name(party) +
+                     " was beyond its declared limits");
   }
   return acc.finish();
 }

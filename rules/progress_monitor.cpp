@@ -9,6 +9,7 @@
 
 #include "core/merge_duration.h"
 #include "rules/acceptance_cover.h"
+#include "rules/declared_limits_monitor.h"
 #include "rules/coop_exchange.h"
 #include "rules/definition2_inequalities.h"
 #include "rules/definition1_gap.h"
@@ -58,15 +59,10 @@ std::optional<std::size_t> censored_approach_start(const ObservedTrace& t, const
   return first;
 }
 
-// Whether a vehicle other than the ego is seen beyond its declared limits at step i (as
-// declared_limits judges it, within accel_tolerance_mps2).
+// Whether a vehicle other than the ego is seen beyond its declared limits at step i.
 bool other_beyond_limits(const ObservedTrace& t, const RuleParams& p, std::size_t i) {
-  for (std::size_t k = 1; k < t.vehicles.size(); ++k) {
-    const Limits& lim = limits_of(t, k);
-    const double a = t.steps[i].vehicles[k].accel_mps2;
-    if (a > lim.accel_max_mps2 + p.accel_tolerance_mps2 || a < -(lim.brake_max_mps2 + p.accel_tolerance_mps2))
-      return true;
-  }
+  for (std::size_t k = 1; k < t.vehicles.size(); ++k)
+    if (beyond_declared_limits(t, p, i, k)) return true;
   return false;
 }
 

@@ -162,6 +162,65 @@ TEST(Def1Monitor, HaltRuleDoesNotBindWhileSomeGapIsFeasible) {
   EXPECT_FALSE(test::run(monitor_def1_3_halt, s, constant_accel_trace(s, 0.0)).result.holds);
 }
 
+// A trace of segments, each (duration, the accelerations of the ego and of every vehicle), the
+// vehicles in the side lane and the main lane as constant_accel_trace starts them.
+Trace piecewise_trace(Scenario s, const std::vector<std::pair<double, std::vector<double>>>& segments) {
+  Trace t;
+  double t0 = 0.0;
+  for (const auto& [duration_s, accel] : segments) {
+    const Trace part = constant_accel_trace(s, duration_s, accel);
+    for (std::size_t i = t.steps.empty() ? 0 : 1; i < part.steps.size(); ++i) {
+      TraceStep st = part.steps[i];
+      st.time_s += t0;
+      t.steps.push_back(st);
+    }
+    t.planner = part.planner;
+    t0 += duration_s;
+    s.ego.x_m = t.steps.back().ego.x_m;
+    s.ego.speed_mps = t.steps.back().ego.vx_mps;
+    for (std::size_t k = 0; k < s.vehicles.size(); ++k) {
+      s.vehicles[k].x_m = t.steps.back().others[k].x_m;
+      s.vehicles[k].speed_mps = t.steps.back().others[k].vx_mps;
+    }
+  }
+  return t;
+}
+
+// The too-fast ego of HaltRuleMarginIsDistanceFromStopPointToSideLaneEnd (X = 250 m at 30 m/s,
+// no longer able to halt before the side lane's end) goes on toward the gap ahead of vehicle 1,
+// slow ahead of it (X = 255 m at 5 m/s): feasible, Definition 1.3 does not bind. From t = 0.5 s
+// vehicle 1 accelerates at 12 m/s2, six times its a_accel^max: the gap is gone, and so is every
+// other. The ego could not have foreseen the breach: vehicle 1 is liable. Declared able to
+// accelerate at 12 m/s2, the same vehicle leaves no gap the ego could go on toward from the start,
+// and the ego is liable. And an ego that then brakes until it can halt again, and speeds up once
+// more with no gap, is liable for that, whatever the breach before.
+TEST(Def1Monitor, HaltRuleBlamesTheVehicleWhoseBreachClosedTheGapTheEgoWentOnToward) {
+  Scenario s = base_scenario();
+  s.ego.x_m = 250.0;
+  s.ego.speed_mps = 30.0;
+  s.vehicles = {vehicle(1, 255.0, 5.0)};
+  const std::vector<std::pair<double, std::vector<double>>> breach_at_half_a_second{{0.5, {0.0, 0.0}},
+                                                                                     {2.0, {0.0, 12.0}}};
+  const MonitorOutput breach = test::run(monitor_def1_3_halt, s, piecewise_trace(s, breach_at_half_a_second));
+  ASSERT_FALSE(breach.result.holds);
+  EXPECT_EQ(breach.result.liable_id, Party::vehicle(1));
+  EXPECT_GT(*breach.result.first_violation_time_s, 0.5);
+  // Vehicle 1 at 40 m/s2 from t = 0.1 s closes the gap by t = 0.5 s; the ego, braking at 25 m/s2
+  // (harder than its b_max of 8), can halt again from t = 1 s, then speeds up at 25 m/s2 past
+  // vehicle 1 and again can no longer halt, this time with no gap lost to a breach.
+  const std::vector<std::pair<double, std::vector<double>>> then_halt_and_go_on{
+      {0.1, {0.0, 0.0}}, {0.4, {0.0, 40.0}}, {1.0, {-25.0, 0.0}}, {1.0, {25.0, 0.0}}};
+  const MonitorOutput later = test::run(monitor_def1_3_halt, s, piecewise_trace(s, then_halt_and_go_on));
+  ASSERT_FALSE(later.result.holds);
+  EXPECT_EQ(later.result.liable_id, Party::ego());
+  EXPECT_GT(*later.result.first_violation_time_s, 1.5);
+  EXPECT_LT(later.margin[25], 0.0);  // the breach's steps still count (t = 0.5 s)
+  s.vehicles[0].limits.accel_max_mps2 = 12.0;
+  const MonitorOutput declared = test::run(monitor_def1_3_halt, s, piecewise_trace(s, breach_at_half_a_second));
+  ASSERT_FALSE(declared.result.holds);
+  EXPECT_EQ(declared.result.liable_id, Party::ego());
+}
+
 TEST(Def1Monitor, HaltRuleDoesNotApplyWhileTheEgoHoldsTheRightOfWay) {
   // The ego of the previous test (too fast to halt before the side lane's end), with vehicle 1
   // 450 m behind: seen merging from t = 0, it holds the right of way by Definition 1 from then

@@ -13,8 +13,9 @@
 namespace mg {
 namespace {
 
-// The decision window is read every kScanStride steps (0.1 s at 50 Hz): a Definition 1 reading
-// costs two bisections, and a gap's feasibility does not come and go within a tenth of a second.
+// The decision window is read every kScanStride steps (0.1 s at 50 Hz) first: a Definition 1
+// reading costs two bisections, and most gaps stay feasible for longer (try_def1 reads the steps
+// between when no stride finds one).
 constexpr std::size_t kScanStride = 5;
 
 // `around` and, after it, the lane gaps just behind and just ahead of it at `step`.
@@ -75,6 +76,8 @@ class AttemptJudge {
   bool covers_rest(const Def1Reading& r) const;
   void cover_by_reading(const Def1Reading& r);
   bool try_def1();
+  // One step of the decision window: whether a good Definition 1 reading was found there (and kept).
+  bool read_window_step(std::size_t i, bool keep_worse = true);
   void keep_if_best(const Def1Reading& r, bool covers);
   void extend_back(std::size_t first);
   void earliest_run(std::size_t first);
@@ -269,42 +272,58 @@ void AttemptJudge::keep_if_best(const Def1Reading& r, bool covers) {
 bool AttemptJudge::try_def1() {
   const ObservedTrace& t = in_.t;
   const std::size_t first = step_at_or_after(t, window_from_s_);
-  // Latest first, every kScanStride steps; the step of the entry and the window's first step are
-  // always read (a gap feasible only at the first instant the ego saw it is still a gap).
   const std::size_t last = std::max(a_.entry_step.value_or(a_.start_step), a_.start_step);
-  for (std::size_t i = last + kScanStride; first <= last && i > first;) {
+  if (first > last) return false;
+  // Latest first, every kScanStride steps; the step of the entry and the window's first step are
+  // always read (a gap feasible only at the first instant the ego saw it is still a gap). When no
+  // stride finds a good reading, the steps between are read too: a gap can be feasible at one
+  // step alone (a follower at rest that starts to move the next step), and a planner may decide
+  // at exactly that step (a campaign finding: the strides missed it by 0.04 s).
+  const auto strided = [&](std::size_t i) { return i == first || (last - i) % kScanStride == 0; };
+  for (std::size_t i = last + kScanStride; i > first;) {
     i = i >= first + kScanStride ? i - kScanStride : first;
-    // The gap the ego entered, then the one around it at i (a follower may have raced past it
-    // since, changing the gap it entered). Never a gap the ego was neither in nor entered, except
-    // for an attempt whose body has not entered the main lane yet (gaps_at): the gap it will enter
-    // is not known, and it may be the one behind the vehicle just behind the ego, which it lets
-    // pass, or ahead of the vehicle just ahead, which it overtakes (a planner that decided either
-    // was otherwise never credited when its visible start came while that vehicle was alongside);
-    // or for a gap a vehicle changed by breaking its declared limits.
-    // Each inequality must hold under the bounded-rate model too, so "behind a vehicle alongside
-    // at v_e* = 0 at once" is not granted (docs/spec.md §8).
-    std::vector<GapIndices> gaps = {a_.entered_gap};
-    const GapIndices around = in_.around[i];
-    for (const GapIndices& g : gaps_at(in_, a_, i))
-      if (std::find(gaps.begin(), gaps.end(), g) == gaps.end()) gaps.push_back(g);
-    for (const GapIndices& gap : gaps) {
-      const Def1Reading r = read_def1(t, in_.p, span(), gap, i);
-      // A neighbouring gap is a hypothesis about where the ego is going: it counts only when
-      // feasible at a v_e* the ego's observed speed fits (a stop "behind the vehicle alongside"
-      // over a duration stretched to the trace's end fits any gap; an ego still at 20 m/s was
-      // not doing that).
-      const bool neighbour = !(gap == a_.entered_gap) && !(gap == around);
-      if (neighbour && (!r.interval.feasible() || std::abs(r.ve_star_mps - r.observed_mps) > in_.p.speed_tolerance_mps))
-        continue;
-      const bool covers = covers_rest(r);
-      keep_if_best(r, covers);
-      if (r.interval.feasible() && covers) {
-        a_.basis = RowBasis::kDef1;
-        extend_back(step_at_or_after(t, credit_from_s_));
-        earliest_run(first);
-        cover_by_reading(a_.def1);
-        return true;
-      }
+    if (read_window_step(i)) return true;
+  }
+  // Those steps only grant what they find; the best reading that is not good stays the strides'.
+  for (std::size_t i = last + 1; i > first;)
+    if (!strided(--i) && read_window_step(i, false)) return true;
+  return false;
+}
+
+bool AttemptJudge::read_window_step(std::size_t i, bool keep_worse) {
+  const ObservedTrace& t = in_.t;
+  const std::size_t first = step_at_or_after(t, window_from_s_);
+  // The gap the ego entered, then the one around it at i (a follower may have raced past it
+  // since, changing the gap it entered). Never a gap the ego was neither in nor entered, except
+  // for an attempt whose body has not entered the main lane yet (gaps_at): the gap it will enter
+  // is not known, and it may be the one behind the vehicle just behind the ego, which it lets
+  // pass, or ahead of the vehicle just ahead, which it overtakes (a planner that decided either
+  // was otherwise never credited when its visible start came while that vehicle was alongside);
+  // or for a gap a vehicle changed by breaking its declared limits.
+  // Each inequality must hold under the bounded-rate model too, so "behind a vehicle alongside
+  // at v_e* = 0 at once" is not granted (docs/spec.md §8).
+  std::vector<GapIndices> gaps = {a_.entered_gap};
+  const GapIndices around = in_.around[i];
+  for (const GapIndices& g : gaps_at(in_, a_, i))
+    if (std::find(gaps.begin(), gaps.end(), g) == gaps.end()) gaps.push_back(g);
+  for (const GapIndices& gap : gaps) {
+    const Def1Reading r = read_def1(t, in_.p, span(), gap, i);
+    // A neighbouring gap is a hypothesis about where the ego is going: it counts only when
+    // feasible at a v_e* the ego's observed speed fits (a stop "behind the vehicle alongside"
+    // over a duration stretched to the trace's end fits any gap; an ego still at 20 m/s was
+    // not doing that).
+    const bool neighbour = !(gap == a_.entered_gap) && !(gap == around);
+    if (neighbour && (!r.interval.feasible() || std::abs(r.ve_star_mps - r.observed_mps) > in_.p.speed_tolerance_mps))
+      continue;
+    const bool covers = covers_rest(r);
+    const bool good = r.interval.feasible() && covers;
+    if (keep_worse || good) keep_if_best(r, covers);
+    if (good) {
+      a_.basis = RowBasis::kDef1;
+      extend_back(step_at_or_after(t, credit_from_s_));
+      earliest_run(first);
+      cover_by_reading(a_.def1);
+      return true;
     }
   }
   return false;

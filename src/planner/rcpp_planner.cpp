@@ -371,9 +371,12 @@ void RcppPlanner::send_request(InSideLane& side, const WorldSnapshot& w, RcppCyc
   // A 2.1 request (ego ahead, v_e held) whose profile the ego could not keep and still halt would
   // have it brake while it waits, behind the P_c it asked for: such a merge ended inside the
   // partner's safe distance at the midpoint (sigmoid_pc_bounds; a campaign finding). The ego halts
-  // instead. (A 2.2 request's profile brakes at b_min from the start.)
+  // instead. A 2.2 request's profile brakes at b_min from the start, and binds the ego to b_min
+  // (Def. 2.2A): none is sent once b_min could no longer stop it before the side lane's end (after
+  // an abort at b_max's halt distance, merge_should_abort, the halt braked harder: def2_2a_ego_brake).
   const double deadline_s = w.time_s + w.setup->params.planner.comm_threshold_s;
   if (plan->vo.coop_case == CoopCase::kEgoAhead && !request_profile_can_halt(w, deadline_s)) return;
+  if (plan->vo.coop_case == CoopCase::kEgoBehind && !can_still_halt(w)) return;
   V2vMessage req;
   req.type = MessageType::kRequest;
   req.from_id = 0;

@@ -91,8 +91,8 @@ std::optional<SigmoidChoice> choose_sigmoid(const std::vector<double>& params,
 // parameter. The bounds must hold in floating point:
 //   param_floor(i) <= bound(i, kappa) <= cost(i, kappa) for every kappa of i's range
 // (a NaN bound counts as no bound). kappa_range(i) is asked only of parameters whose floor lies
-// below the cheapest cost found. `incumbent` is the cost of a choice made before this search (a
-// candidate at that cost or above loses to it): nullopt is returned when nothing beats it.
+// below `incumbent`, the cost of a choice made before this search (a candidate at that cost or
+// above loses to it): nullopt is returned when nothing beats it.
 template <class Floor, class Range, class Bound, class Cost>
 std::optional<SigmoidChoice> choose_sigmoid_best_first(const std::vector<double>& params, const Floor& param_floor,
                                                        const Range& kappa_range, int n_kappa, const Bound& bound,

@@ -76,8 +76,9 @@ class AttemptJudge {
   bool covers_rest(const Def1Reading& r) const;
   void cover_by_reading(const Def1Reading& r);
   bool try_def1();
-  // One step of the decision window: whether a good Definition 1 reading was found there (and kept).
-  bool read_window_step(std::size_t i, bool keep_worse = true);
+  // Step i of the decision window whose first step is `first`: whether a good Definition 1 reading
+  // was found there (and kept).
+  bool read_window_step(std::size_t i, std::size_t first, bool keep_worse = true);
   void keep_if_best(const Def1Reading& r, bool covers);
   void extend_back(std::size_t first);
   void earliest_run(std::size_t first);
@@ -282,17 +283,16 @@ bool AttemptJudge::try_def1() {
   const auto strided = [&](std::size_t i) { return i == first || (last - i) % kScanStride == 0; };
   for (std::size_t i = last + kScanStride; i > first;) {
     i = i >= first + kScanStride ? i - kScanStride : first;
-    if (read_window_step(i)) return true;
+    if (read_window_step(i, first)) return true;
   }
   // Those steps only grant what they find; the best reading that is not good stays the strides'.
   for (std::size_t i = last + 1; i > first;)
-    if (!strided(--i) && read_window_step(i, false)) return true;
+    if (!strided(--i) && read_window_step(i, first, false)) return true;
   return false;
 }
 
-bool AttemptJudge::read_window_step(std::size_t i, bool keep_worse) {
+bool AttemptJudge::read_window_step(std::size_t i, std::size_t first, bool keep_worse) {
   const ObservedTrace& t = in_.t;
-  const std::size_t first = step_at_or_after(t, window_from_s_);
   // The gap the ego entered, then the one around it at i (a follower may have raced past it
   // since, changing the gap it entered). Never a gap the ego was neither in nor entered, except
   // for an attempt whose body has not entered the main lane yet (gaps_at): the gap it will enter

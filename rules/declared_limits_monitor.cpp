@@ -6,17 +6,20 @@
 
 namespace mg {
 
-bool beyond_declared_limits(const ObservedTrace& t, const RuleParams& p, std::size_t i, std::size_t k) {
+double declared_limits_margin_mps2(const ObservedTrace& t, const RuleParams& p, std::size_t i, std::size_t k) {
   const Limits& lim = limits_of(t, k);
   const double a = state_of(t.steps[i], k).accel_mps2;
-  return a > lim.accel_max_mps2 + p.accel_tolerance_mps2 || a < -(lim.brake_max_mps2 + p.accel_tolerance_mps2);
+  return std::min(lim.accel_max_mps2 + p.accel_tolerance_mps2 - a, lim.brake_max_mps2 + p.accel_tolerance_mps2 + a);
+}
+
+bool beyond_declared_limits(const ObservedTrace& t, const RuleParams& p, std::size_t i, std::size_t k) {
+  return declared_limits_margin_mps2(t, p, i, k) < 0.0;
 }
 
 MonitorOutput monitor_declared_limits(const MonitorContext& ctx) {
   const ObservedTrace& t = ctx.trace;
   const auto& steps = t.steps;
   MarginAccumulator acc("declared_limits", steps.size());
-  const double tol = ctx.params.accel_tolerance_mps2;
   if (t.vehicles.empty()) return acc.finish();
   for (std::size_t i = 0; i < steps.size(); ++i) {
     // The earliest breach is the one that counts; at one step the vehicle furthest beyond its
@@ -24,9 +27,7 @@ MonitorOutput monitor_declared_limits(const MonitorContext& ctx) {
     double worst = std::numeric_limits<double>::infinity();
     std::size_t who = 0;
     for (std::size_t k = 0; k < t.vehicles.size(); ++k) {
-      const Limits& lim = limits_of(t, k);
-      const double a = state_of(steps[i], k).accel_mps2;
-      const double m = std::min(lim.accel_max_mps2 + tol - a, lim.brake_max_mps2 + tol + a);
+      const double m = declared_limits_margin_mps2(t, ctx.params, i, k);
       if (m < worst) {
         worst = m;
         who = k;

@@ -145,6 +145,19 @@ std::optional<std::size_t> breach_among(const MonitorContext& ctx, const std::ve
   return std::nullopt;
 }
 
+// The latest step within the RSS response time before step i at which the ego, in the side lane
+// and still able to halt, had a feasible gap (Def. 1.3 did not bind), if any.
+std::optional<std::size_t> last_gap_within_response(const MonitorContext& ctx, std::size_t i) {
+  const ObservedTrace& t = ctx.trace;
+  const double from_s = t.steps[i].time_s - t.params.rss.response_time_s - kTieS;
+  for (std::size_t j = i; j > 0 && t.steps[j - 1].time_s >= from_s;) {
+    --j;
+    if (ego_of(t.steps[j]).y_m >= -0.5 * t.road.lane_width_m) return std::nullopt;
+    if (!def1_feasible_gap_vehicles(t, j, ctx.params.merge_duration_s).empty()) return j;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 MonitorOutput monitor_def1_1_gap(const MonitorContext& ctx) { return monitor_gap_inequality(ctx, GapSide::kFollower); }
@@ -167,6 +180,7 @@ MonitorOutput monitor_def1_3_halt(const MonitorContext& ctx) {
   std::vector<std::size_t> relied_on;  // the vehicles of the gaps that last relieved the ego
   std::size_t breach = 0;              // one of them seen beyond its limits since they did (0: none)
   std::size_t unscanned = 0;           // the first step not yet looked at for that
+  bool looked_back = false;            // for a gap within the response time, since the halt was lost
   struct Excused {
     std::size_t step;
     double margin_m, stop_x_m;
@@ -188,6 +202,7 @@ MonitorOutput monitor_def1_3_halt(const MonitorContext& ctx) {
     if (!(m < 0.0)) {
       relied_on.clear();
       breach = 0;
+      looked_back = false;
     } else if (std::vector<std::size_t> gaps = def1_feasible_gap_vehicles(s, i, ctx.params.merge_duration_s);
                !gaps.empty()) {
       relied_on = std::move(gaps);
@@ -195,6 +210,14 @@ MonitorOutput monitor_def1_3_halt(const MonitorContext& ctx) {
       unscanned = i;
       continue;
     } else {
+      // The halt ability lost within the response time of the last gap: the ego could not have
+      // answered that gap's loss, and went on toward it as if unable to halt.
+      if (relied_on.empty() && !looked_back)
+        if (const std::optional<std::size_t> j = last_gap_within_response(ctx, i)) {
+          relied_on = def1_feasible_gap_vehicles(s, *j, ctx.params.merge_duration_s);
+          unscanned = *j;
+        }
+      looked_back = true;
       if (breach == 0) breach = breach_among(ctx, relied_on, unscanned, i).value_or(0);
       unscanned = i + 1;
       if (breach != 0) {

@@ -209,6 +209,28 @@ Offer offer_at(const MonitorContext& ctx, const std::vector<Acceptance>& accepte
   return o;
 }
 
+// An approach toward the main lane (v_Y > 0 at every step, outside any attempt) that reached past
+// merge_start_offset_m off the side lane's centre and then stopped short of a start, at a step at
+// which nothing was offered any more, pauses the clock over its length: a long merge leaves its
+// lane centre more slowly than lat_speed_hysteresis_mps at first, and one dropped because its gap
+// closed (a leader braking harder than Def. 1.2 assumes) was a merge under way, not a wait. One
+// dropped while a merge is still offered is not: the clock runs over it, so that an ego that
+// drifts out and back never merging gains nothing from the drift.
+void pause_dropped_approaches(const MonitorContext& ctx, const std::vector<Acceptance>& accepted,
+                              std::vector<Activity>& doing) {
+  const ObservedTrace& t = ctx.trace;
+  const double past_y = t.road.side_lane_y_m() + ctx.params.merge_start_offset_m;
+  std::size_t from = 0;  // the first step of the approach under way
+  for (std::size_t i = 0; i < t.steps.size(); ++i) {
+    const ObservedState& e = ego_of(t.steps[i]);
+    if (e.vy_mps > 0.0 && doing[i] == Activity::kWaiting) continue;
+    const bool dropped = i > from && doing[i] == Activity::kWaiting && ego_of(t.steps[i - 1]).y_m > past_y;
+    if (dropped && !offer_at(ctx, accepted, i).any())
+      for (std::size_t j = from; j < i; ++j) doing[j] = Activity::kPaused;
+    from = i + 1;
+  }
+}
+
 // A merge into the main lane that the ego did not abort: an attempt whose body entered the main
 // lane and that completed or was under way when the trace ended. One that never entered does not
 // count, or an ego drifting out and back would always have an attempt under way at the end. The
@@ -336,8 +358,9 @@ MonitorOutput monitor_progress(const MonitorContext& ctx) {
   const ObservedTrace& t = ctx.trace;
   MarginAccumulator acc("progress", t.steps.size());
   const double grace = ctx.params.progress_grace_s;
-  const std::vector<Activity> doing = activities(t, ctx.params, ctx.attempts);
+  std::vector<Activity> doing = activities(t, ctx.params, ctx.attempts);
   const std::vector<Acceptance> accepted = acceptances(t, ctx.params, ctx.exchanges);
+  pause_dropped_approaches(ctx, accepted, doing);
   const std::vector<LaterMerge> merges = merges_taken(t, ctx.attempts);
   Tally tally;
   Stretch passing, taking;  // offers let pass; offers waited for and taken later

@@ -221,6 +221,31 @@ TEST(Def1Monitor, HaltRuleBlamesTheVehicleWhoseBreachClosedTheGapTheEgoWentOnTow
   EXPECT_EQ(declared.result.liable_id, Party::ego());
 }
 
+// The ego of the previous test at 30 m/s, vehicle 1 5 m ahead of it at 5 m/s and beyond its
+// declared a_accel^max (12 m/s2) from t = 0.5 s: the gap ahead of vehicle 1 is lost at t = 2 s.
+// An ego still able to halt then, that loses its halt ability within the response time
+// (T = 0.5 s) of the gap's last feasible step, could not have answered the loss: vehicle 1 is
+// liable. One that goes on for longer without a gap is.
+TEST(Def1Monitor, HaltRuleBlamesTheBreachThatClosedTheGapWithinTheResponseTimeOfTheHaltLost) {
+  Scenario s = base_scenario();
+  s.ego.speed_mps = 30.0;
+  const std::vector<std::pair<double, std::vector<double>>> breach{{0.5, {0.0, 0.0}}, {3.5, {0.0, 12.0}}};
+  // The front stops at x + 2.4 + 30^2/16: the halt is lost at t when x(0) = 300 - 58.65 - 30 t.
+  const auto halt_lost_at = [&](double t_s) {
+    s.ego.x_m = 241.35 - 30.0 * t_s;
+    s.vehicles = {vehicle(1, s.ego.x_m + 5.0, 5.0)};
+    return test::run(monitor_def1_3_halt, s, piecewise_trace(s, breach));
+  };
+  const MonitorOutput within = halt_lost_at(2.3);
+  ASSERT_FALSE(within.result.holds);
+  EXPECT_EQ(within.result.liable_id, Party::vehicle(1));
+  EXPECT_NEAR(*within.result.first_violation_time_s, 2.3, 0.021);
+  const MonitorOutput later = halt_lost_at(3.0);
+  ASSERT_FALSE(later.result.holds);
+  EXPECT_EQ(later.result.liable_id, Party::ego());
+  EXPECT_NEAR(*later.result.first_violation_time_s, 3.0, 0.021);
+}
+
 TEST(Def1Monitor, HaltRuleDoesNotApplyWhileTheEgoHoldsTheRightOfWay) {
   // The ego of the previous test (too fast to halt before the side lane's end), with vehicle 1
   // 450 m behind: seen merging from t = 0, it holds the right of way by Definition 1 from then

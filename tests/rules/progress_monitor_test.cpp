@@ -87,6 +87,35 @@ TEST(ProgressMonitor, AnApproachUnderWayWhenAVehicleBreaksItsLimitsIsNotJudgedUp
   EXPECT_TRUE(test::run(monitor_progress, s, breach).result.holds);
 }
 
+TEST(ProgressMonitor, AnApproachDroppedOnceNoMergeIsOfferedIsNotJudged) {
+  // The ego stands at X = 100 with vehicle 1 driving away ahead at 20 m/s (merging behind it is
+  // offered from t = 0) and moves toward the main lane at 0.05 m/s (no start an observer sees)
+  // from 0.5 s to 4.5 s, then back. Vehicle 1 holding its speed, the approach is dropped while the
+  // merge is still offered, and the clock runs over it: it fails at 3.02 s. Vehicle 1 braking at
+  // 1 m/s2 from 4.4 s (harder than Def. 1.2 assumes) has withdrawn the offer by the drop: the
+  // approach was a merge dropped for that reason and pauses the clock; the 0.5 s before it are
+  // within the grace, and nothing is offered after it.
+  Scenario s = base_scenario();
+  s.ego.x_m = 100.0;
+  s.ego.speed_mps = 0.0;
+  s.vehicles = {vehicle(1, 160.0, 20.0)};
+  const Trace steady = test::with_aborted_move(constant_accel_trace(s, 6.0), 0.5, 0.05, 4.0);
+  const MonitorOutput kept = test::run(monitor_progress, s, steady);
+  ASSERT_FALSE(kept.result.holds);
+  EXPECT_EQ(kept.result.liable_id, Party::ego());
+  EXPECT_NEAR(*kept.result.first_violation_time_s, 3.02, 1e-9);
+  Trace braking = steady;
+  for (TraceStep& st : braking.steps) {
+    const double dt = st.time_s - 4.4;
+    if (dt < -1e-9) continue;
+    st.others[0].x_m -= 0.5 * dt * dt;
+    st.others[0].vx_mps -= dt;
+    st.others[0].accel_mps2 = -1.0;
+  }
+  const MonitorOutput dropped = test::run(monitor_progress, s, braking);
+  EXPECT_TRUE(dropped.result.holds) << dropped.result.detail;
+}
+
 TEST(ProgressMonitor, OnlyTheLastRhoBOfAnApproachThatNeverStartsPausesTheClock) {
   // The same road; the ego drifts toward the main lane at 0.05 m/s from the start of an 8 s
   // trace and never starts a merge: only the last rho_b (4 s) of its approach pauses the clock,

@@ -11,6 +11,10 @@ WorldSnapshot BrakingMemory::apply(const WorldSnapshot& w) {
     const auto it = seen_.find(o.id);
     if (it == seen_.end() || accel <= it->second.accel_mps2 || w.time_s - it->second.time_s > kBrakingMemoryS)
       seen_[o.id] = Seen{accel, w.time_s};
+    // A vehicle accelerating beyond its declared a_accel^max is not between braking bursts: what
+    // it does now is the breach the planner must see (a remembered -0.0002 m/s2 hid a follower
+    // racing at 2.5 times its limit for 2 s).
+    if (o.state.accel_mps2 > o.limits.accel_max_mps2 + w.setup->params.rules.accel_tolerance_mps2) continue;
     const double remembered_mps2 = seen_[o.id].accel_mps2;
     if (remembered_mps2 < 0.0) o.state.accel_mps2 = std::min(o.state.accel_mps2, remembered_mps2);
   }

@@ -191,18 +191,11 @@ bool body_in_main_lane(const WorldSnapshot& w) {
          -0.5 * w.setup->road.lane_width_m;
 }
 
-// Whether a vehicle of the merge's gap is seen beyond its declared limits (braking harder than
-// its b_max or accelerating harder than its a_accel^max, beyond the tolerance the rules read
-// them with, accel_tolerance_mps2): the right of way it left the ego rested on them.
+// Whether a vehicle of the merge's gap is seen beyond its declared limits: the right of way it
+// left the ego rested on them.
 bool gap_vehicle_beyond_limits(const CommittedMerge& m, const WorldSnapshot& w) {
   if (!m.decision.gap) return false;
-  const double tol = w.setup->params.rules.accel_tolerance_mps2;
-  for (const ObservedVehicle& o : w.others) {
-    if (o.id != m.decision.gap->follower_id && o.id != m.decision.gap->leader_id) continue;
-    const double a = o.state.accel_mps2;
-    if (a < -(o.limits.brake_max_mps2 + tol) || a > o.limits.accel_max_mps2 + tol) return true;
-  }
-  return false;
+  return beyond_declared_limits(w, m.decision.gap->follower_id) || beyond_declared_limits(w, m.decision.gap->leader_id);
 }
 
 }  // namespace

@@ -251,8 +251,23 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
                flat};
   std::optional<Def1Plan> best;
   double best_cost = std::numeric_limits<double>::infinity();
-  int n_def1 = 0, n_cross = 0, n_sigmoid = 0;
+  int n_def1 = 0, n_cross = 0, n_sigmoid = 0, n_breach = 0;
+  // A gap whose follower is seen accelerating beyond its declared a_accel^max, or whose leader
+  // braking beyond its b_max, is no gap while the ego can still halt: Definition 1 rests on those
+  // limits, the prediction of that vehicle at the rate seen is one it need not keep, and a merge
+  // decided on it was aborted the next cycle, again and again, until smoothness_oscillation failed
+  // (a campaign finding: a follower racing at 2.5 times its a_accel^max). The progress rule offers
+  // no such gap either. A breach that does not close the gap (a leader racing away) leaves it.
+  const bool can_halt = can_still_halt(w);
+  const double tol = w.setup->params.rules.accel_tolerance_mps2;
+  const auto racing = [&](const std::optional<MainLaneVehicle>& v) {
+    return v && observed_accel_mps2(w, v->id) > v->limits.accel_max_mps2 + tol;
+  };
+  const auto stopping = [&](const std::optional<MainLaneVehicle>& v) {
+    return v && observed_accel_mps2(w, v->id) < -(v->limits.brake_max_mps2 + tol);
+  };
   for (const LaneGap& gap : enumerate_gaps(f.lane)) {
+    if (can_halt && (racing(gap.follower) || stopping(gap.leader))) { ++n_breach; continue; }
     const SpeedInterval iv = solve_def1_interval(f.ctx, gap);
     if (!iv.feasible) { ++n_def1; continue; }
     const auto bounds = def1_pc_bounds(f, gap, iv);
@@ -265,7 +280,8 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
   }
   if (!best && why)
     *why = std::to_string(n_def1) + " gap(s) violate ineq. 1.1/1.2, " + std::to_string(n_cross) +
-           " with crossing P_c bounds, " + std::to_string(n_sigmoid) + " without a comfortable sigmoid";
+           " with crossing P_c bounds, " + std::to_string(n_sigmoid) + " without a comfortable sigmoid" +
+           (n_breach > 0 ? ", " + std::to_string(n_breach) + " closing beyond a vehicle's declared limits" : "");
   return best;
 }
 

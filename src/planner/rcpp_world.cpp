@@ -62,6 +62,16 @@ std::optional<double> time_to_reach_s(const WorldSnapshot& w, const SpeedRamp& r
   return lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_m; }, 0.0, 600.0, 1e-4);
 }
 
+bool beyond_declared_limits(const WorldSnapshot& w, int id) {
+  const double tol = w.setup->params.rules.accel_tolerance_mps2;
+  for (const ObservedVehicle& o : w.others) {
+    if (o.id != id) continue;
+    const double a = o.state.accel_mps2;
+    return a < -(o.limits.brake_max_mps2 + tol) || a > o.limits.accel_max_mps2 + tol;
+  }
+  return false;
+}
+
 bool can_still_halt(const WorldSnapshot& w) { return can_still_halt(w, w.setup->ego.limits.brake_min_mps2); }
 
 bool can_still_halt(const WorldSnapshot& w, double brake_mps2) {

@@ -82,5 +82,35 @@ TEST(Definition1Search, ALongerMergeThatStartsNowIsTakenBeforeAShorterOneThatSta
   EXPECT_LT(start_x_m - s.ego.x_m, 2.0 * s.ego.speed_mps) << d.reason;
 }
 
+// Vehicle 1, 80 m behind the ego and 5 m/s slower, seen accelerating at 2.5 m/s2, beyond its
+// declared a_accel^max of 2: the gap ahead of it rests on the limit it is breaking, and the
+// prediction of it at the rate seen is one it need not keep. While the ego can still halt, that
+// is no gap (a merge decided on one was aborted the next cycle, again and again, until
+// smoothness_oscillation failed), and the gap behind vehicle 1 needs the ego to drop back 80 m;
+// once the ego cannot halt, the gap ahead of vehicle 1 is taken as before.
+TEST(Definition1Search, AGapBoundedByAVehicleBeyondItsDeclaredLimitsIsNoGapWhileTheEgoCanHalt) {
+  Scenario s;
+  s.ego.y_m = -3.5;
+  MainVehicle v;
+  v.id = 1;
+  s.vehicles = {v};
+  const auto decide = [&](double ego_x_m, double accel_mps2) {
+    s.ego.x_m = ego_x_m;
+    s.ego.speed_mps = ego_x_m > 0.0 ? 30.0 : 20.0;
+    s.vehicles[0].speed_mps = s.ego.speed_mps - 5.0;
+    s.vehicles[0].x_m = ego_x_m - 80.0;
+    WorldSnapshot w = initial_snapshot(s);
+    w.others[0].state.accel_mps2 = accel_mps2;
+    return decision_of(make_planner("rcpp")->plan(w));
+  };
+  EXPECT_EQ(decide(0.0, 1.0).mode, DecisionMode::kDef1Merge);
+  const RcppDecision breach = decide(0.0, 2.5);
+  EXPECT_EQ(breach.mode, DecisionMode::kDef1Halt) << breach.reason;
+  EXPECT_NE(breach.reason.find("1 closing beyond a vehicle's declared limits"), std::string::npos) << breach.reason;
+  // At X = 185 and 30 m/s, b_min = 4 m/s2 no longer stops the ego before the end at 300 m.
+  const RcppDecision late = decide(185.0, 2.5);
+  EXPECT_EQ(late.mode, DecisionMode::kDef1Merge) << late.reason;
+}
+
 }  // namespace
 }  // namespace mg

@@ -29,8 +29,8 @@ constexpr std::array<Column, 6> kColumns = {{
     {"x_m", 1e6},
     {"y_m", 1e6},
     {"yaw_rad", 2.0 * std::numbers::pi},
-    {"vx_mps", 150.0},
-    {"vy_mps", 150.0},
+    {"vx_mps", kMaxTraceSpeedMps},
+    {"vy_mps", kMaxTraceSpeedMps},
     {"accel_mps2", 100.0},
 }};
 
@@ -175,7 +175,7 @@ V2vMessage read_message(const ObjectReader& r, const ObservedTrace& t) {
   m.coop_case = read_enum(r, "coop_case", kCoopCases, "coop_case");
   m.pc_m = nullable_number(r, "pc_m", 1e6, true);
   m.d_lon_star_m = nullable_number(r, "d_lon_star_m", 1e6, true);
-  m.target_speed_mps = nullable_number(r, "target_speed_mps", 150.0, true);
+  m.target_speed_mps = nullable_number(r, "target_speed_mps", kMaxTraceSpeedMps, true);
   // A request is what Definition 2 judges and what an acceptance grants on: every number of it
   // must be there (null stands for "no value" only in an answer, which repeats or omits them).
   if (m.type == MessageType::kRequest)

@@ -19,6 +19,9 @@ inline constexpr const char* kTraceFormatName = "mergeguard-trace";
 inline constexpr std::size_t kMaxTraceSteps = 1000000;          // as the simulator's step bound
 inline constexpr std::size_t kMaxTraceStates = 20000000;        // steps x vehicles
 inline constexpr std::size_t kMaxChannelEvents = 1000000;
+// The largest speed (either axis, and a request's v_o*) a trace may hold: no road vehicle's is
+// higher, and a trace that holds one is broken. The simulator keeps below it (sim/behaviour.h).
+inline constexpr double kMaxTraceSpeedMps = 150.0;
 
 // Serialises every field; NaN message fields (e.g. the pc_m of an accept, the delivered_time_s
 // of a message not delivered) are written as null. Doubles round-trip bit-exactly.

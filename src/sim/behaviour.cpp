@@ -301,7 +301,8 @@ double MainLaneDriver::behaviour_accel(const DriverInput& in) {
 double MainLaneDriver::accel_mps2(const DriverInput& in) {
   const Limits& lim = spec_.limits;
   const NonCompliance& n = spec_.noncompliance;
-  if (n.type == NonComplianceType::kExceedAccel && in_window(in.time_s)) return n.accel_mps2;
+  if (n.type == NonComplianceType::kExceedAccel && in_window(in.time_s))
+    return in.speed_mps < kMaxScriptedSpeedMps ? n.accel_mps2 : 0.0;
   if (n.type == NonComplianceType::kExceedBrake && in_window(in.time_s)) return -n.accel_mps2;
 
   const double release_s = params_.planner.comm_threshold_s + params_.planner.merge_duration_s + kCoopReleaseExtraS;

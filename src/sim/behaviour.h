@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "core/observed_trace_json.h"
 #include "core/params.h"
 #include "core/scenario.h"
 #include "core/v2v_message.h"
@@ -11,6 +12,12 @@
 #include "sim/splitmix64.h"
 
 namespace mg {
+
+// A vehicle scripted to exceed its a_accel^max (NonComplianceType::kExceedAccel) stops
+// accelerating at this speed (360 km/h): a breach held for 20 s at 10 m/s2 would otherwise reach
+// speeds no road vehicle drives, and a saved trace no reader accepts (kMaxTraceSpeedMps).
+inline constexpr double kMaxScriptedSpeedMps = 100.0;
+static_assert(kMaxScriptedSpeedMps + 20.0 < kMaxTraceSpeedMps, "one step of the harshest breach stays in the trace's range");
 
 // The vehicle directly ahead in the same lane (centre-to-centre distance, its speed and what
 // it declares), as seen by one main-lane vehicle.

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/behaviour.h"
 #include "sim/single_track.h"
 #include "test_planners.h"
 
@@ -156,6 +157,22 @@ TEST(Simulator, NonComplianceStartIsAnEvent) {
   EXPECT_EQ(nc[0]->vehicle_id, 1);
   const auto at = [&](double time) { return t.steps[static_cast<std::size_t>(std::llround(time / 0.02))]; };
   EXPECT_DOUBLE_EQ(at(2.5).others[0].accel_mps2, 5.0);
+}
+
+TEST(Simulator, AScriptedBreachStopsAcceleratingAtTheScriptedSpeedCap) {
+  // 10 m/s2 for 20 s from 30 m/s would reach 230 m/s, beyond any trace's range.
+  Scenario s = test::empty_scenario();
+  s.params.sim.horizon_s = 25.0;
+  MainVehicle v = test::vehicle(1, 50.0, 30.0, BehaviourType::kConstantSpeed);
+  v.noncompliance = {NonComplianceType::kExceedAccel, 1.0, 20.0, 10.0};
+  s.vehicles.push_back(v);
+  test::LaneKeepPlanner planner(-3.5, 20.0, 2.0);
+  const Trace t = simulate(s, planner);
+  double top_mps = 0.0;
+  for (const TraceStep& st : t.steps) top_mps = std::max(top_mps, st.others[0].vx_mps);
+  EXPECT_GE(top_mps, kMaxScriptedSpeedMps);
+  EXPECT_LE(top_mps, kMaxScriptedSpeedMps + 10.0 * s.params.sim.step_s + 1e-9);
+  EXPECT_DOUBLE_EQ(t.steps[static_cast<std::size_t>(std::llround(15.0 / s.params.sim.step_s))].others[0].accel_mps2, 0.0);
 }
 
 TEST(Simulator, TraceJsonCarriesStepsDecisionsEventsAndHexDigest) {

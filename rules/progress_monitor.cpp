@@ -67,7 +67,9 @@ bool other_beyond_limits(const ObservedTrace& t, const RuleParams& p, std::size_
 }
 
 // An attempt is a merge once the ego's body reaches into the main lane (its entry): from its start
-// to its end, the ego is merging, and an offer it lets pass after that begins a new run. Before
+// to its end, the ego is merging (until the attempt is overdue: 1.5 rho_b after its start, where
+// the longest merge offered has its midpoint, it is judged as one that never entered), and an
+// offer it lets pass after that begins a new run. Before
 // the entry, and in an attempt that never enters, the clock pauses while the ego moves toward the
 // main lane (v_Y > lat_speed_hysteresis_mps) and runs otherwise: a planner that aborts and tries
 // again loses no credit for its outward motion, one that drifts out and back, or stalls off its
@@ -84,6 +86,12 @@ bool other_beyond_limits(const ObservedTrace& t, const RuleParams& p, std::size_
 std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, const MergeAttempts& attempts) {
   std::vector<Activity> out(t.steps.size(), Activity::kWaiting);
   const double line_y = -0.5 * t.road.lane_width_m;
+  // The longest merge the rule offers (3 rho_b) reaches its midpoint 1.5 rho_b after it begins: an
+  // attempt whose centre is still in the side lane later than that is overdue, and from then on
+  // its entry no longer makes it a merge (an ego straddling the lane line with a corner of its
+  // body, never going on, would otherwise be merging for ever).
+  const double overdue_after_s =
+      1.5 * merge_duration_base_s(p.merge_duration_s, t.road.lane_width_m, p.progress_lat_accel_max_mps2);
   if (const auto from = censored_approach_start(t, p, attempts))
     for (std::size_t i = *from; i < out.size(); ++i) out[i] = Activity::kPaused;
   for (const MergeAttempt& a : attempts.attempts) {
@@ -91,7 +99,8 @@ std::vector<Activity> activities(const ObservedTrace& t, const RuleParams& p, co
       if (out[i - 1] == Activity::kWaiting) out[i - 1] = Activity::kPaused;
     const std::size_t end = a.end_time_s ? step_at(t, *a.end_time_s) : t.steps.size() - 1;
     for (std::size_t i = a.start_step; i <= end && i < out.size(); ++i) {
-      if (a.entry_step) out[i] = Activity::kMerging;
+      const bool overdue = t.steps[i].time_s > a.start_time_s + overdue_after_s + kTieS;
+      if (a.entry_step && !overdue) out[i] = Activity::kMerging;
       else if (ego_of(t.steps[i]).vy_mps > p.lat_speed_hysteresis_mps) out[i] = Activity::kPaused;
     }
   }

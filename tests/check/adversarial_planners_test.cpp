@@ -2,8 +2,9 @@
 // right rule and the right party (the ego). Liveness: a creeper at 0.06 m/s, an early stopper 39 m
 // before the side lane's end, a weaver that approaches the main lane and turns back again and
 // again, a slow drifter that enters the main lane at 0.09 m/s lateral, a drifter that never
-// starts a merge and ends its run still on its way, and a planner that
-// pretends to merge by drifting out and back. A RapidCheck property: a planner that never merges
+// starts a merge and ends its run still on its way, a planner that
+// pretends to merge by drifting out and back, and a straddler that puts a corner of its body over
+// the lane line and stays there. A RapidCheck property: a planner that never merges
 // fails `progress` on every generated scenario in which a gap stayed feasible longer than the
 // grace (feasibility sampled independently of the monitor's own run bookkeeping).
 #include <algorithm>
@@ -201,6 +202,23 @@ TEST(AdversarialPlanners, PretendingToMergeByDriftingOutAndBackIsWaiting) {
   ASSERT_FALSE(progress.holds) << progress.detail;
   EXPECT_EQ(progress.liable_id, Party::ego());
   EXPECT_LT(*progress.first_violation_time_s, 6.2);  // while still at 20 m/s (it brakes from 6.25 s)
+}
+
+TEST(AdversarialPlanners, AStraddlerWithItsBodyOverTheLaneLineLetsTheRightOfWayPass) {
+  // On an empty road, out of the side lane until the body is 0.3 m over the lane line (centre at
+  // Y = -2.4), then straight on there, never reaching the midpoint, stopping 39 m before the side
+  // lane's end. An attempt whose body entered the main lane is a merge, but not for ever: 1.5 rho_b
+  // after its start (6 s at rho_b = 4 s) the longest merge the rule offers would have reached its
+  // midpoint, and from then the straddler waits while every gap is open. It broke no rule before.
+  auto p = follower("straddler", [](double x) { return std::min(-2.4, -3.5 + 0.02 * std::max(0.0, x)); }, 20.0, 39.0);
+  Scenario s;
+  s.name = "empty_road";
+  const CheckResult r = check_scenario(s, p);
+  ASSERT_GE(observe_merge_phases(r.trace, r.rule_params).count(MergePhaseKind::kStart), 1);
+  const RuleResult& progress = rule(r, "progress");
+  ASSERT_FALSE(progress.holds) << progress.detail;
+  EXPECT_EQ(progress.liable_id, Party::ego());
+  EXPECT_NEAR(*progress.first_violation_time_s, r.trace.steps.front().time_s + 0.48 + 6.0 + 3.0, 0.5);
 }
 
 TEST(AdversarialPlanners, AnNanMarginFailsTheRuleInsteadOfPassing) {

@@ -280,6 +280,28 @@ void RcppPlanner::take_sooner_merge(Merging& merging, const WorldSnapshot& w) co
   }
 }
 
+// A Definition 1 merge the re-check would abort is re-planned in place when a new decision now
+// merges into the same gap: its path keeps the ego's lateral offset until the new sigmoid passes
+// it (from_hold), so nothing is reversed, while an abort's hold let the gap go (a campaign
+// finding: a 16 s merge behind a vehicle overtaking the ego, aborted when that vehicle's braking
+// at 0.25 m/s2, below what Def. 1.2's constant speed is taken to allow, moved its bound 8 s ahead;
+// the gap was still there, and the progress rule failed the wait).
+bool RcppPlanner::replan_in_place(Merging& merging, const WorldSnapshot& w) const {
+  const CommittedMerge& m = merging.merge;
+  if (m.decision.mode != DecisionMode::kDef1Merge || !m.decision.gap) return false;
+  for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
+    auto plan = plan_definition1(w, durations, nullptr);
+    if (!plan || plan->decision.gap != m.decision.gap) continue;
+    plan->decision.reason = "the merge decided at t = " + fixed_text(m.decision.time_s, 2) +
+                            " s no longer fits (P_c bounds crossed or lane occupied); re-planned into its gap: " +
+                            plan->decision.reason;
+    merging.merge = CommittedMerge{plan->sigmoid, plan->ve_star_mps, plan->decision,
+                                   std::max(w.ego.y_m, plan->sigmoid.offset_m), true};
+    return true;
+  }
+  return false;
+}
+
 std::string RcppPlanner::advance_phase(const WorldSnapshot& w) {
   // Already in the main lane (a start there); not an ego on its way back after an abort.
   if (const auto* side = std::get_if<InSideLane>(&phase_);
@@ -287,13 +309,13 @@ std::string RcppPlanner::advance_phase(const WorldSnapshot& w) {
     phase_ = InMainLane{};
     return "";
   }
-  const auto* merging = std::get_if<Merging>(&phase_);
+  auto* merging = std::get_if<Merging>(&phase_);
   if (!merging) return "";
   if (merge_complete(merging->merge, w)) {
     phase_ = InMainLane{};
     return "";
   }
-  if (!merge_should_abort(merging->merge, w)) return "";
+  if (!merge_should_abort(merging->merge, w) || replan_in_place(*merging, w)) return "";
   InSideLane side;
   side.lateral = lateral_after_abort(w);
   // A Definition 1 merge aborted before the ego moved toward the lane leaves nothing to weave: it

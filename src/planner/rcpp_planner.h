@@ -62,6 +62,7 @@ class RcppPlanner : public Planner {
   std::string advance_phase(const WorldSnapshot& w);  // completion, abort, a start in the main lane
   SideLaneStep decide_in_side_lane(InSideLane& side, const WorldSnapshot& w);
   void take_sooner_merge(Merging& merging, const WorldSnapshot& w) const;
+  bool replan_in_place(Merging& merging, const WorldSnapshot& w) const;
   bool defers_merge(const InSideLane& side, const WorldSnapshot& w, bool turns_away) const;
   void forget_broken_acceptance(const CommittedMerge& aborted, const WorldSnapshot& w);
   std::optional<CommittedMerge> read_reply(InSideLane& side, const WorldSnapshot& w, std::string& note);

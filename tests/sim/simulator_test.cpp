@@ -218,6 +218,33 @@ TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLin
   EXPECT_LT(peak_sideslip, 0.05);
 }
 
+// An RCPP merge of 16 s behind a vehicle overtaking the ego, whose braking at 0.25 m/s2 (less than
+// Definition 1.2's constant speed is taken to allow) moves its P_c bound: the re-check at 2.9 s
+// finds the bounds crossed, and a new decision merges into the same gap. It is re-planned in place,
+// from the ego's lateral offset: no abort, no hold letting the gap go (the progress rule failed
+// the wait), no lateral reversal.
+TEST(Simulator, AMergeThatNoLongerFitsItsGapIsReplannedInPlaceWhenTheGapStillTakesOne) {
+  const std::string path = std::string(MG_SOURCE_DIR) + "/corpus/cases/rcpp-coop__progress__progress__ego-19.json";
+  std::ifstream in(path);
+  const Scenario s = scenario_from_json(nlohmann::json::parse(in).at("scenario"), path);
+  const auto planner = make_planner("rcpp-coop");
+  const Trace t = simulate(s, *planner);
+  bool merging = false, merged = false, replanned = false;
+  double lowest_vy = 0.0;
+  for (const TraceStep& st : t.steps) {
+    merging |= st.ego_mode == "def1_merge";
+    merged |= st.ego_mode == "merged";
+    if (!merging || merged) continue;
+    EXPECT_EQ(st.ego_mode, "def1_merge") << "t = " << st.time_s;
+    lowest_vy = std::min(lowest_vy, st.ego.road_vy_mps());
+  }
+  for (const auto& d : t.decisions) replanned |= d.reason.find("re-planned into its gap") != std::string::npos;
+  EXPECT_TRUE(replanned);
+  EXPECT_TRUE(merging);
+  EXPECT_GT(lowest_vy, -s.params.rules.lat_speed_hysteresis_mps);
+  EXPECT_GT(t.steps.back().ego.y_m, s.ego.y_m + 0.5);  // on its way into the lane when the run ends
+}
+
 // An RCPP crawl merge (v_e* 1 m/s, kappa 0.54/m, sharper than the path tracker steers) completes
 // by lateral progress still turned about 0.15 rad toward the lane. Lane keeping holds the crawl
 // until the ego is along the road and centred: it overshoots the centre by about 0.3 m and comes

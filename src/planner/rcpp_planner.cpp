@@ -281,8 +281,9 @@ void RcppPlanner::take_sooner_merge(Merging& merging, const WorldSnapshot& w) co
 }
 
 // A Definition 1 merge the re-check would abort is re-planned in place when a new decision now
-// merges into the same gap: its path keeps the ego's lateral offset until the new sigmoid passes
-// it (from_hold), so nothing is reversed, while an abort's hold let the gap go (a campaign
+// merges into the same gap along a sigmoid the ego is already on (within kTurnAwayM; its path
+// keeps the ego's offset over those centimetres, from_hold), so nothing is reversed, while an
+// abort's hold let the gap go (a campaign
 // finding: a 16 s merge behind a vehicle overtaking the ego, aborted when that vehicle's braking
 // at 0.25 m/s2, below what Def. 1.2's constant speed is taken to allow, moved its bound 8 s ahead;
 // the gap was still there, and the progress rule failed the wait).
@@ -292,6 +293,12 @@ bool RcppPlanner::replan_in_place(Merging& merging, const WorldSnapshot& w) cons
   for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
     auto plan = plan_definition1(w, durations, nullptr);
     if (!plan || plan->decision.gap != m.decision.gap) continue;
+    // Only a sigmoid the ego is already on: one that starts farther ahead would hold the ego at its
+    // offset first, its midpoint would come later than planned, and the judge reads the right of
+    // way over the longer merge the ego then drove (def1_1_gap failed by 7 m where the abort had
+    // held; a campaign finding).
+    const CommittedMerge on_path{plan->sigmoid, plan->ve_star_mps, plan->decision, plan->sigmoid.offset_m, false};
+    if (turns_away_first(on_path, w)) return false;
     plan->decision.reason = "the merge decided at t = " + fixed_text(m.decision.time_s, 2) +
                             " s no longer fits (P_c bounds crossed or lane occupied); re-planned into its gap: " +
                             plan->decision.reason;

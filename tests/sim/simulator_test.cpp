@@ -220,9 +220,10 @@ TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLin
 
 // An RCPP merge of 16 s behind a vehicle overtaking the ego, whose braking at 0.25 m/s2 (less than
 // Definition 1.2's constant speed is taken to allow) moves its P_c bound: the re-check at 2.9 s
-// finds the bounds crossed, and a new decision merges into the same gap. It is re-planned in place,
-// from the ego's lateral offset: no abort, no hold letting the gap go (the progress rule failed
-// the wait), no lateral reversal.
+// finds the bounds crossed, and a new decision merges into the same gap along a sigmoid the ego is
+// already on. It is re-planned in place: no abort, no hold letting the gap go (the progress rule
+// failed the wait), no lateral reversal. (Onto a sigmoid starting farther ahead it is not:
+// rcpp__ego_never_liable__def1_1_gap__ego-8, whose replay holds only so.)
 TEST(Simulator, AMergeThatNoLongerFitsItsGapIsReplannedInPlaceWhenTheGapStillTakesOne) {
   const std::string path = std::string(MG_SOURCE_DIR) + "/corpus/cases/rcpp-coop__progress__progress__ego-19.json";
   std::ifstream in(path);

@@ -252,8 +252,8 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
   std::optional<Def1Plan> best;
   double best_cost = std::numeric_limits<double>::infinity();
   int n_def1 = 0, n_cross = 0, n_sigmoid = 0, n_breach = 0;
-  // A gap whose follower is seen accelerating beyond its declared a_accel^max, or whose leader
-  // braking beyond its b_max, is no gap while the ego can still halt: Definition 1 rests on those
+  // A gap whose follower is seen accelerating beyond its declared a_accel^max, or whose leader is
+  // seen braking beyond its b_max, is no gap while the ego can still halt: Definition 1 rests on those
   // limits, the prediction of that vehicle at the rate seen is one it need not keep, and a merge
   // decided on it was aborted the next cycle, again and again, until smoothness_oscillation failed
   // (a campaign finding: a follower racing at 2.5 times its a_accel^max). The progress rule offers

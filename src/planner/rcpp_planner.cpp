@@ -283,10 +283,10 @@ void RcppPlanner::take_sooner_merge(Merging& merging, const WorldSnapshot& w) co
 // A Definition 1 merge the re-check would abort is re-planned in place when a new decision now
 // merges into the same gap along a sigmoid the ego is already on (within kTurnAwayM; its path
 // keeps the ego's offset over those centimetres, from_hold), so nothing is reversed, while an
-// abort's hold let the gap go (a campaign
-// finding: a 16 s merge behind a vehicle overtaking the ego, aborted when that vehicle's braking
-// at 0.25 m/s2, below what Def. 1.2's constant speed is taken to allow, moved its bound 8 s ahead;
-// the gap was still there, and the progress rule failed the wait).
+// abort's hold let the gap go (a campaign finding: a 16 s merge behind a vehicle overtaking the
+// ego, aborted when that vehicle's braking at 0.25 m/s2, below what Def. 1.2's constant speed is
+// taken to allow, moved its bound 8 s ahead; the gap was still there, and the progress rule
+// failed the wait).
 bool RcppPlanner::replan_in_place(Merging& merging, const WorldSnapshot& w) const {
   const CommittedMerge& m = merging.merge;
   if (m.decision.mode != DecisionMode::kDef1Merge || !m.decision.gap) return false;

@@ -146,14 +146,20 @@ std::optional<std::size_t> breach_among(const MonitorContext& ctx, const std::ve
 }
 
 // The latest step within the RSS response time before step i at which the ego, in the side lane
-// and still able to halt, had a feasible gap (Def. 1.3 did not bind), if any.
-std::optional<std::size_t> last_gap_within_response(const MonitorContext& ctx, std::size_t i) {
+// and still able to halt, had a feasible gap (Def. 1.3 did not bind), with the vehicles bounding
+// the gaps feasible then; nullopt when there is none.
+struct GapsAt {
+  std::size_t step;
+  std::vector<std::size_t> vehicles;
+};
+std::optional<GapsAt> last_gap_within_response(const MonitorContext& ctx, std::size_t i) {
   const ObservedTrace& t = ctx.trace;
   const double from_s = t.steps[i].time_s - t.params.rss.response_time_s - kTieS;
   for (std::size_t j = i; j > 0 && t.steps[j - 1].time_s >= from_s;) {
     --j;
     if (ego_of(t.steps[j]).y_m >= -0.5 * t.road.lane_width_m) return std::nullopt;
-    if (!def1_feasible_gap_vehicles(t, j, ctx.params.merge_duration_s).empty()) return j;
+    if (std::vector<std::size_t> v = def1_feasible_gap_vehicles(t, j, ctx.params.merge_duration_s); !v.empty())
+      return GapsAt{j, std::move(v)};
   }
   return std::nullopt;
 }
@@ -213,9 +219,9 @@ MonitorOutput monitor_def1_3_halt(const MonitorContext& ctx) {
       // The halt ability lost within the response time of the last gap: the ego could not have
       // answered that gap's loss, and went on toward it as if unable to halt.
       if (relied_on.empty() && !looked_back)
-        if (const std::optional<std::size_t> j = last_gap_within_response(ctx, i)) {
-          relied_on = def1_feasible_gap_vehicles(s, *j, ctx.params.merge_duration_s);
-          unscanned = *j;
+        if (std::optional<GapsAt> last = last_gap_within_response(ctx, i)) {
+          relied_on = std::move(last->vehicles);
+          unscanned = last->step;
         }
       looked_back = true;
       if (breach == 0) breach = breach_among(ctx, relied_on, unscanned, i).value_or(0);

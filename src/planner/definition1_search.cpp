@@ -259,15 +259,11 @@ std::optional<Def1Plan> plan_definition1_rho(const WorldSnapshot& w, double rho_
   // (a campaign finding: a follower racing at 2.5 times its a_accel^max). The progress rule offers
   // no such gap either. A breach that does not close the gap (a leader racing away) leaves it.
   const bool can_halt = can_still_halt(w);
-  const double tol = w.setup->params.rules.accel_tolerance_mps2;
-  const auto racing = [&](const std::optional<MainLaneVehicle>& v) {
-    return v && observed_accel_mps2(w, v->id) > v->limits.accel_max_mps2 + tol;
-  };
-  const auto stopping = [&](const std::optional<MainLaneVehicle>& v) {
-    return v && observed_accel_mps2(w, v->id) < -(v->limits.brake_max_mps2 + tol);
+  const auto closing = [&](const LaneGap& g) {
+    return (g.follower && accelerating_beyond_limit(w, g.follower->id)) || (g.leader && braking_beyond_limit(w, g.leader->id));
   };
   for (const LaneGap& gap : enumerate_gaps(f.lane)) {
-    if (can_halt && (racing(gap.follower) || stopping(gap.leader))) { ++n_breach; continue; }
+    if (can_halt && closing(gap)) { ++n_breach; continue; }
     const SpeedInterval iv = solve_def1_interval(f.ctx, gap);
     if (!iv.feasible) { ++n_def1; continue; }
     const auto bounds = def1_pc_bounds(f, gap, iv);

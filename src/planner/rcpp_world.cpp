@@ -62,14 +62,26 @@ std::optional<double> time_to_reach_s(const WorldSnapshot& w, const SpeedRamp& r
   return lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_m; }, 0.0, 600.0, 1e-4);
 }
 
+namespace {
+const ObservedVehicle* observed(const WorldSnapshot& w, int id) {
+  for (const ObservedVehicle& o : w.others)
+    if (o.id == id) return &o;
+  return nullptr;
+}
+}  // namespace
+
+bool accelerating_beyond_limit(const WorldSnapshot& w, int id) {
+  const ObservedVehicle* o = observed(w, id);
+  return o && o->state.accel_mps2 > o->limits.accel_max_mps2 + w.setup->params.rules.accel_tolerance_mps2;
+}
+
+bool braking_beyond_limit(const WorldSnapshot& w, int id) {
+  const ObservedVehicle* o = observed(w, id);
+  return o && o->state.accel_mps2 < -(o->limits.brake_max_mps2 + w.setup->params.rules.accel_tolerance_mps2);
+}
+
 bool beyond_declared_limits(const WorldSnapshot& w, int id) {
-  const double tol = w.setup->params.rules.accel_tolerance_mps2;
-  for (const ObservedVehicle& o : w.others) {
-    if (o.id != id) continue;
-    const double a = o.state.accel_mps2;
-    return a < -(o.limits.brake_max_mps2 + tol) || a > o.limits.accel_max_mps2 + tol;
-  }
-  return false;
+  return accelerating_beyond_limit(w, id) || braking_beyond_limit(w, id);
 }
 
 bool can_still_halt(const WorldSnapshot& w) { return can_still_halt(w, w.setup->ego.limits.brake_min_mps2); }

@@ -28,9 +28,11 @@ CoopContext coop_context(const WorldSnapshot& w);
 
 // The observed acceleration of vehicle `id` (0 when it is not observed).
 double observed_accel_mps2(const WorldSnapshot& w, int id);
-// Whether vehicle `id` is seen beyond its declared limits: braking harder than its b_max or
-// accelerating harder than its a_accel^max, beyond the tolerance the rules read them with
-// (accel_tolerance_mps2). Definition 1 rests on those limits.
+// Whether vehicle `id` is seen accelerating harder than its declared a_accel^max, or braking
+// harder than its b_max, beyond the tolerance the rules read them with (accel_tolerance_mps2),
+// and whether either: Definition 1 rests on those limits.
+bool accelerating_beyond_limit(const WorldSnapshot& w, int id);
+bool braking_beyond_limit(const WorldSnapshot& w, int id);
 bool beyond_declared_limits(const WorldSnapshot& w, int id);
 
 // A target-lane leader as leader_track predicts it, behind the vehicle ahead of it in `lane`.

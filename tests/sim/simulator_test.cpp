@@ -24,6 +24,13 @@ std::vector<const TraceEvent*> events_of(const Trace& t, EventKind k) {
 }
 
 // Busy scenario: bounded-random, cooperative and IDM traffic, lossy V2V, a merge.
+// The scenario of corpus case `name` (corpus/cases/<name>.json).
+Scenario corpus_case_scenario(const std::string& name) {
+  const std::string path = std::string(MG_SOURCE_DIR) + "/corpus/cases/" + name + ".json";
+  std::ifstream in(path);
+  return scenario_from_json(nlohmann::json::parse(in).at("scenario"), path);
+}
+
 Scenario busy_scenario() {
   Scenario s = test::empty_scenario();
   s.ego.v2v = {true, 0.1, 0.3};
@@ -194,9 +201,7 @@ TEST(Simulator, TraceJsonCarriesStepsDecisionsEventsAndHexDigest) {
 // inside the rule's bound. Case -3 shows the return over the line (case -4, the same situation,
 // is now aborted at once at a small offset and held).
 TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLine) {
-  const std::string path = std::string(MG_SOURCE_DIR) + "/corpus/cases/rcpp__ego_never_liable__sideslip__ego-3.json";
-  std::ifstream in(path);
-  const Scenario s = scenario_from_json(nlohmann::json::parse(in).at("scenario"), path);
+  const Scenario s = corpus_case_scenario("rcpp__ego_never_liable__sideslip__ego-3");
   const auto planner = make_planner("rcpp");
   const Trace t = simulate(s, *planner);
   bool merging = false, aborted = false, crossed_while_returning = false;
@@ -225,9 +230,7 @@ TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLin
 // failed the wait), no lateral reversal. (Onto a sigmoid starting farther ahead it is not:
 // rcpp__ego_never_liable__def1_1_gap__ego-8, whose replay holds only so.)
 TEST(Simulator, AMergeThatNoLongerFitsItsGapIsReplannedInPlaceWhenTheGapStillTakesOne) {
-  const std::string path = std::string(MG_SOURCE_DIR) + "/corpus/cases/rcpp-coop__progress__progress__ego-19.json";
-  std::ifstream in(path);
-  const Scenario s = scenario_from_json(nlohmann::json::parse(in).at("scenario"), path);
+  const Scenario s = corpus_case_scenario("rcpp-coop__progress__progress__ego-19");
   const auto planner = make_planner("rcpp-coop");
   const Trace t = simulate(s, *planner);
   bool merging = false, merged = false, replanned = false;
@@ -254,10 +257,7 @@ TEST(Simulator, AMergeThatNoLongerFitsItsGapIsReplannedInPlaceWhenTheGapStillTak
 // once it came back from the overshoot at 3-6 m/s, at -0.1 m/s laterally: the third reversal of
 // one approach.) Horizon extended past the settling.
 TEST(Simulator, AfterACrawlMergeTheEgoSettlesAtTheLaneCentreBeforeItAccelerates) {
-  const std::string path =
-      std::string(MG_SOURCE_DIR) + "/corpus/cases/rcpp__ego_never_liable__smoothness_oscillation__ego-8.json";
-  std::ifstream in(path);
-  Scenario s = scenario_from_json(nlohmann::json::parse(in).at("scenario"), path);
+  Scenario s = corpus_case_scenario("rcpp__ego_never_liable__smoothness_oscillation__ego-8");
   s.params.sim.horizon_s = 45.0;
   const auto planner = make_planner("rcpp");
   const Trace t = simulate(s, *planner);

@@ -63,7 +63,7 @@ std::optional<double> time_to_reach_s(const WorldSnapshot& w, const SpeedRamp& r
 }
 
 namespace {
-const ObservedVehicle* observed(const WorldSnapshot& w, int id) {
+const ObservedVehicle* observed_vehicle(const WorldSnapshot& w, int id) {
   for (const ObservedVehicle& o : w.others)
     if (o.id == id) return &o;
   return nullptr;
@@ -71,12 +71,12 @@ const ObservedVehicle* observed(const WorldSnapshot& w, int id) {
 }  // namespace
 
 bool accelerating_beyond_limit(const WorldSnapshot& w, int id) {
-  const ObservedVehicle* o = observed(w, id);
+  const ObservedVehicle* o = observed_vehicle(w, id);
   return o && o->state.accel_mps2 > o->limits.accel_max_mps2 + w.setup->params.rules.accel_tolerance_mps2;
 }
 
 bool braking_beyond_limit(const WorldSnapshot& w, int id) {
-  const ObservedVehicle* o = observed(w, id);
+  const ObservedVehicle* o = observed_vehicle(w, id);
   return o && o->state.accel_mps2 < -(o->limits.brake_max_mps2 + w.setup->params.rules.accel_tolerance_mps2);
 }
 

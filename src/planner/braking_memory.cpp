@@ -15,7 +15,11 @@ WorldSnapshot BrakingMemory::apply(const WorldSnapshot& w) {
     // it does now is the breach the planner must see (a remembered -0.0002 m/s2 hid a follower
     // racing at 2.5 times its limit for 2 s).
     if (o.state.accel_mps2 > o.limits.accel_max_mps2 + w.setup->params.rules.accel_tolerance_mps2) continue;
-    const double remembered_mps2 = seen_[o.id].accel_mps2;
+    // A breach of b_max is seen while it lasts and not remembered beyond the declared limit: the
+    // planner skips a gap whose leader brakes beyond its b_max, and a breach that had ended kept
+    // that gap closed for kBrakingMemoryS while the progress rule, which reads what is observed,
+    // offered it.
+    const double remembered_mps2 = std::max(seen_[o.id].accel_mps2, -o.limits.brake_max_mps2);
     if (remembered_mps2 < 0.0) o.state.accel_mps2 = std::min(o.state.accel_mps2, remembered_mps2);
   }
   return out;

@@ -15,8 +15,8 @@ inline constexpr double kBrakingMemoryS = 2.0;
 class BrakingMemory {
  public:
   // `w` with each other vehicle's acceleration replaced by the harshest braking seen from it in
-  // the last kBrakingMemoryS, after remembering this cycle's; not for a vehicle seen accelerating
-  // beyond its declared a_accel^max.
+  // the last kBrakingMemoryS (at most its declared b_max), after remembering this cycle's; not for
+  // a vehicle seen accelerating beyond its declared a_accel^max.
   WorldSnapshot apply(const WorldSnapshot& w);
 
  private:

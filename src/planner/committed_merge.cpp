@@ -8,6 +8,7 @@
 #include "core/fixed_text.h"
 #include "core/merge_phase_detector.h"
 #include "core/rss.h"
+#include "planner/definition2_search.h"
 #include "planner/merge_path.h"
 #include "planner/rcpp_world.h"
 #include "planner/world_view.h"
@@ -21,25 +22,17 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
                                          const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& o,
                                          double t_s);
 
-// When a Def. 2 partner is to be at v_o* by the plan's responder model (coop_candidate: rho_c after
-// the request arrives).
-double partner_yield_deadline_s(const CommittedMerge& m, const WorldSnapshot& w) {
-  const PlannerSetup& s = *w.setup;
-  return m.decision.time_s + s.ego.v2v.latency_s + s.params.planner.comm_threshold_s;
-}
-
-// Whether the Def. 2 partner `o` has broken the acceptance the merge rests on: past its yield
-// deadline and slower than v_o* (2.2: it was to lead the ego at v_o*) or faster (2.1: it was to
-// fall back to v_o*) by more than the rules' yield tolerance. Such a partner is predicted as it is
-// seen, as a Def. 1 gap vehicle is, and counts as a breach: predicted on the profile it had
-// accepted, a 2.2 partner that braked to a stop in front of the merge was expected to drive on at
-// v_o*, and the ego, its body over the lane line, merged into it.
+// Whether the Def. 2 partner `o` has broken the acceptance the merge rests on (breaks_promise: past
+// its yield deadline, 2.2: slower than v_o*, it was to lead the ego at v_o*; 2.1: faster, it was to
+// fall back to v_o*). Such a partner is predicted as it is seen, as a Def. 1 gap vehicle is, and
+// counts as a breach: predicted on the profile it had accepted, a 2.2 partner that braked to a stop
+// in front of the merge was expected to drive on at v_o*, and the ego, its body over the lane line,
+// merged into it.
 bool partner_reneged(const CommittedMerge& m, const WorldSnapshot& w, const MainLaneVehicle& o) {
   const RcppDecision& d = m.decision;
   if (d.mode != DecisionMode::kDef2Merge || o.id != d.coop_partner_id || !d.gap) return false;
-  if (w.time_s <= partner_yield_deadline_s(m, w)) return false;
-  const double tol_mps = w.setup->params.rules.yield_speed_tolerance_mps;
-  return o.id == d.gap->leader_id ? o.speed_mps < d.vo_star_mps - tol_mps : o.speed_mps > d.vo_star_mps + tol_mps;
+  const CoopCase coop_case = o.id == d.gap->leader_id ? CoopCase::kEgoBehind : CoopCase::kEgoAhead;
+  return breaks_promise(w.time_s, yield_deadline_s(*w.setup, d.time_s), coop_case, d.vo_star_mps, o.speed_mps);
 }
 
 // Before P_c behind a braking leader: the fastest speed up to target_mps at which the ego reaches
@@ -122,7 +115,7 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
   if (d.mode == DecisionMode::kDef2Merge && o.id == d.coop_partner_id && !partner_reneged(m, w, o)) {
     // From its speed now linearly to v_o* by the yield deadline, then v_o*. A partner slower to
     // yield is predicted farther along (2.1) or behind (2.2): a reneging one is seen early.
-    const double to_deadline_s = std::max(0.0, partner_yield_deadline_s(m, w) - w.time_s);
+    const double to_deadline_s = std::max(0.0, yield_deadline_s(*w.setup, m.decision.time_s) - w.time_s);
     const double rate = to_deadline_s > 0.0 ? std::abs(d.vo_star_mps - o.speed_mps) / to_deadline_s + 1e-9
                                             : 1e9;  // past the deadline: at v_o* from now
     const SpeedRamp accepted{o.speed_mps, d.vo_star_mps, rate, rate};

@@ -220,10 +220,14 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
   return best;
 }
 
+bool breaks_promise(double time_s, double yield_by_s, CoopCase coop_case, double vo_star_mps, double speed_mps) {
+  if (time_s < yield_by_s) return false;
+  const double over_mps = speed_mps - vo_star_mps;
+  return (coop_case == CoopCase::kEgoAhead ? over_mps : -over_mps) > kBrokenPromiseMps;
+}
+
 bool responder_breaks_acceptance(const WorldSnapshot& w, const HeldAcceptance& a, const MainLaneVehicle& o) {
-  if (w.time_s < a.yield_by_s) return false;
-  const double over_mps = o.speed_mps - a.vo_star_mps;
-  return (a.coop_case == CoopCase::kEgoAhead ? over_mps : -over_mps) > kBrokenPromiseMps;
+  return breaks_promise(w.time_s, a.yield_by_s, a.coop_case, a.vo_star_mps, o.speed_mps);
 }
 
 std::optional<Def2Plan> plan_accepted_definition2(const WorldSnapshot& w, const HeldAcceptance& a) {

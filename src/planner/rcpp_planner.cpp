@@ -365,8 +365,7 @@ std::optional<CommittedMerge> RcppPlanner::read_reply(InSideLane& side, const Wo
       const Def2Plan& asked = pending.plan;
       const double bound_until_s =
           asked.decision.time_s + w.setup->params.planner.comm_threshold_s + w.setup->params.planner.merge_duration_s;
-      const double yield_by_s =
-          asked.decision.time_s + w.setup->ego.v2v.latency_s + w.setup->params.planner.comm_threshold_s;
+      const double yield_by_s = yield_deadline_s(*w.setup, asked.decision.time_s);
       held_ = HeldAcceptance{partner,     asked.vo.coop_case, asked.vo.vo_star_mps, asked.vo.d_lon_star_m, asked.vo.pc_m,
                              delivered_s, yield_by_s,         bound_until_s};
       // The partner now cooperates and refuses any new request while bound (a merge aborted on its

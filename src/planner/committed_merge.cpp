@@ -22,19 +22,6 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
                                          const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& o,
                                          double t_s);
 
-// Whether the Def. 2 partner `o` has broken the acceptance the merge rests on (breaks_promise: past
-// its yield deadline, 2.2: slower than v_o*, it was to lead the ego at v_o*; 2.1: faster, it was to
-// fall back to v_o*). Such a partner is predicted as it is seen, as a Def. 1 gap vehicle is, and
-// counts as a breach: predicted on the profile it had accepted, a 2.2 partner that braked to a stop
-// in front of the merge was expected to drive on at v_o*, and the ego, its body over the lane line,
-// merged into it.
-bool partner_reneged(const CommittedMerge& m, const WorldSnapshot& w, const MainLaneVehicle& o) {
-  const RcppDecision& d = m.decision;
-  if (d.mode != DecisionMode::kDef2Merge || o.id != d.coop_partner_id || !d.gap) return false;
-  const CoopCase coop_case = o.id == d.gap->leader_id ? CoopCase::kEgoBehind : CoopCase::kEgoAhead;
-  return breaks_promise(w.time_s, yield_deadline_s(*w.setup, d.time_s), coop_case, d.vo_star_mps, o.speed_mps);
-}
-
 // Before P_c behind a braking leader: the fastest speed up to target_mps at which the ego reaches
 // P_c at D_lon behind the leader as predicted. A Def. 2 partner is predicted on the profile it
 // accepted (gap_vehicle_at): its braking toward v_o* is the yield it promised, not a threat to
@@ -112,10 +99,12 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
                                          const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& o,
                                          double t_s) {
   const RcppDecision& d = m.decision;
-  if (d.mode == DecisionMode::kDef2Merge && o.id == d.coop_partner_id && !partner_reneged(m, w, o)) {
-    // From its speed now linearly to v_o* by the yield deadline, then v_o*. A partner slower to
-    // yield is predicted farther along (2.1) or behind (2.2): a reneging one is seen early.
-    const double to_deadline_s = std::max(0.0, yield_deadline_s(*w.setup, m.decision.time_s) - w.time_s);
+  const PlannerSetup& s = *w.setup;
+  if (d.mode == DecisionMode::kDef2Merge && o.id == d.coop_partner_id) {
+    // From its speed now linearly to v_o* by the yield deadline of the plan's responder model
+    // (coop_candidate: rho_c after the request arrives), then v_o*. A partner slower to yield
+    // is predicted farther along (2.1) or behind (2.2): a reneging one is seen early.
+    const double to_deadline_s = std::max(0.0, yield_deadline_s(s, d.time_s) - w.time_s);
     const double rate = to_deadline_s > 0.0 ? std::abs(d.vo_star_mps - o.speed_mps) / to_deadline_s + 1e-9
                                             : 1e9;  // past the deadline: at v_o* from now
     const SpeedRamp accepted{o.speed_mps, d.vo_star_mps, rate, rate};
@@ -202,15 +191,11 @@ bool body_in_main_lane(const WorldSnapshot& w) {
          -0.5 * w.setup->road.lane_width_m;
 }
 
-// Whether a vehicle of the merge's gap is seen beyond its declared limits, or the Def. 2 partner
-// has broken its acceptance: the right of way it left the ego rested on them.
+// Whether a vehicle of the merge's gap is seen beyond its declared limits: the right of way it
+// left the ego rested on them.
 bool gap_vehicle_beyond_limits(const CommittedMerge& m, const WorldSnapshot& w) {
   if (!m.decision.gap) return false;
-  if (beyond_declared_limits(w, m.decision.gap->follower_id) || beyond_declared_limits(w, m.decision.gap->leader_id))
-    return true;
-  for (const ObservedVehicle& ov : w.others)
-    if (ov.id == m.decision.coop_partner_id) return partner_reneged(m, w, to_lane_vehicle(ov));
-  return false;
+  return beyond_declared_limits(w, m.decision.gap->follower_id) || beyond_declared_limits(w, m.decision.gap->leader_id);
 }
 
 }  // namespace

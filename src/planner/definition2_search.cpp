@@ -206,6 +206,11 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
     const auto obs = std::find_if(w.others.begin(), w.others.end(),
                                   [&](const ObservedVehicle& o) { return o.id == lane[i].id; });
     if (obs == w.others.end() || !obs->v2v_capable) continue;
+    // Ineq. (3) and (4) rest on the partner's declared limits: a vehicle seen beyond them is not
+    // asked (asked while it braked at 1.25 times its b_max, a partner accepted, went on braking,
+    // and the merge on its acceptance was aborted, the ego's third lateral reversal of one
+    // approach: smoothness_oscillation, a campaign finding).
+    if (beyond_declared_limits(w, lane[i].id)) continue;
     const auto retry = retry_after_s.find(lane[i].id);
     if (retry != retry_after_s.end() && w.time_s < retry->second) continue;
     for (const CoopCase k : cases_by_order(w, lane[i])) {
@@ -220,14 +225,10 @@ std::optional<Def2Plan> plan_definition2(const WorldSnapshot& w, const std::map<
   return best;
 }
 
-bool breaks_promise(double time_s, double yield_by_s, CoopCase coop_case, double vo_star_mps, double speed_mps) {
-  if (time_s < yield_by_s) return false;
-  const double over_mps = speed_mps - vo_star_mps;
-  return (coop_case == CoopCase::kEgoAhead ? over_mps : -over_mps) > kBrokenPromiseMps;
-}
-
 bool responder_breaks_acceptance(const WorldSnapshot& w, const HeldAcceptance& a, const MainLaneVehicle& o) {
-  return breaks_promise(w.time_s, a.yield_by_s, a.coop_case, a.vo_star_mps, o.speed_mps);
+  if (w.time_s < a.yield_by_s) return false;
+  const double over_mps = o.speed_mps - a.vo_star_mps;
+  return (a.coop_case == CoopCase::kEgoAhead ? over_mps : -over_mps) > kBrokenPromiseMps;
 }
 
 std::optional<Def2Plan> plan_accepted_definition2(const WorldSnapshot& w, const HeldAcceptance& a) {

@@ -47,10 +47,7 @@ inline double yield_deadline_s(const PlannerSetup& s, double request_time_s) {
 // How far on the wrong side of the v_o* it accepted (2.1: faster; 2.2: slower) a responder past
 // its yield deadline may drive before the ego takes its acceptance as broken.
 inline constexpr double kBrokenPromiseMps = 0.5;
-// Whether a responder at speed_mps, past yield_by_s, drives on the wrong side of the v_o* it
-// accepted by more than that.
-bool breaks_promise(double time_s, double yield_by_s, CoopCase coop_case, double vo_star_mps, double speed_mps);
-// breaks_promise for responder o of a held acceptance.
+// Whether responder o, past a.yield_by_s, drives on the wrong side of v_o* by more than that.
 bool responder_breaks_acceptance(const WorldSnapshot& w, const HeldAcceptance& a, const MainLaneVehicle& o);
 
 // A merge on an acceptance still in force after the merge it was given for was aborted (the

@@ -249,6 +249,7 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
     }
   } else if (auto* merging = std::get_if<Merging>(&phase_)) {
     take_sooner_merge(*merging, w);
+    take_faster_merge(*merging, w);
     out = follow_merge(merging->merge, w);
   } else {
     out = keep_main_lane(w);
@@ -276,6 +277,32 @@ void RcppPlanner::take_sooner_merge(Merging& merging, const WorldSnapshot& w) co
                             " s: " + plan->decision.reason;
     merging.merge = CommittedMerge{plan->sigmoid, plan->ve_star_mps, plan->decision,
                                    std::max(w.ego.y_m, plan->sigmoid.offset_m), m.from_hold};
+    return;
+  }
+}
+
+// A crawl (a Definition 1 merge at a v_e* below the slowest merge the progress rule offers, decided
+// when nothing faster was feasible) is replaced, until it can no longer be aborted, by a new
+// decision into the same gap at a speed the rule offers once one exists; its path keeps the ego's
+// offset (from_hold) so nothing is reversed. A crawl at 1.1 m/s decided behind a leader starting
+// from rest went on, 5 cm of lateral speed a second, after the leader had pulled away and a merge
+// at 5 m/s was feasible, and the progress rule failed the wait (a campaign finding). Not into
+// another gap: a crawl behind a stopped vehicle replaced by a 23 s merge ahead of it held the
+// ego at its offset while that merge's sigmoid lay far ahead (progress).
+void RcppPlanner::take_faster_merge(Merging& merging, const WorldSnapshot& w) const {
+  const CommittedMerge& m = merging.merge;
+  const double slowest_mps = w.setup->params.rules.progress_min_merge_speed_mps;
+  if (m.decision.mode != DecisionMode::kDef1Merge || m.target_speed_mps >= slowest_mps || m.committed(w.ego.y_m))
+    return;
+  if (w.time_s + 1e-9 < merging.next_sooner_search_s) return;
+  merging.next_sooner_search_s = w.time_s + kSoonerMergeEveryS;
+  for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
+    auto plan = plan_definition1(w, durations, nullptr);
+    if (!plan || plan->ve_star_mps < slowest_mps || plan->decision.gap != m.decision.gap) continue;
+    plan->decision.reason = "a faster merge replaces the crawl decided at t = " + fixed_text(m.decision.time_s, 2) +
+                            " s: " + plan->decision.reason;
+    merging.merge = CommittedMerge{plan->sigmoid, plan->ve_star_mps, plan->decision,
+                                   std::max(w.ego.y_m, plan->sigmoid.offset_m), true};
     return;
   }
 }

@@ -38,7 +38,8 @@ struct InSideLane {
   double next_longer_merge_s = -1.0;  // next time the longer merge durations are searched
 };
 // Merging; until the lateral move begins, a Definition 1 merge that begins it sooner may replace
-// the committed one (searched for every kSoonerMergeEveryS, from next_sooner_search_s).
+// the committed one, and a faster one a crawl (searched for every kSoonerMergeEveryS, from
+// next_sooner_search_s).
 struct Merging {
   CommittedMerge merge;
   double next_sooner_search_s = -1.0;
@@ -62,6 +63,7 @@ class RcppPlanner : public Planner {
   std::string advance_phase(const WorldSnapshot& w);  // completion, abort, a start in the main lane
   SideLaneStep decide_in_side_lane(InSideLane& side, const WorldSnapshot& w);
   void take_sooner_merge(Merging& merging, const WorldSnapshot& w) const;
+  void take_faster_merge(Merging& merging, const WorldSnapshot& w) const;
   bool replan_in_place(Merging& merging, const WorldSnapshot& w) const;
   bool defers_merge(const InSideLane& side, const WorldSnapshot& w, bool turns_away) const;
   void forget_broken_acceptance(const CommittedMerge& aborted, const WorldSnapshot& w);

@@ -149,47 +149,6 @@ TEST(CommittedMerge, AMergeIntoAGapABreachClosedIsAbortedWhileTheEgoCanStillHalt
   EXPECT_FALSE(merge_should_abort(m, w));
 }
 
-// A Def. 2.2 merge behind vehicle 1, which accepted to lead the ego at v_o* = 20 m/s and has
-// braked to a stop in front of P_c instead. Within its yield deadline it is predicted on the profile
-// it accepted, and the merge goes on; past the deadline it has reneged: it is predicted as it is
-// seen (P_c is no longer D_lon behind it) and counts as a breach, so the merge is aborted even with
-// a corner of the ego's body over the lane line.
-TEST(CommittedMerge, AMergeOnAnAcceptanceThePartnerBrokeIsAbortedPastItsYieldDeadline) {
-  Scenario s;
-  s.road.lane_width_m = 3.5;
-  s.ego.size.length_m = 4.5;
-  s.ego.size.width_m = 1.8;
-  s.ego.x_m = 60.0;
-  s.ego.y_m = s.road.side_lane_y_m() + 0.8;
-  s.ego.speed_mps = 10.0;
-  s.ego.v2v.latency_s = 0.1;
-  s.params.planner.comm_threshold_s = 1.0;
-  MainVehicle partner;
-  partner.id = 1;
-  partner.x_m = 75.0;
-  partner.speed_mps = 0.0;
-  s.vehicles = {partner};
-  CommittedMerge m;
-  m.sigmoid = Sigmoid{3.5, 0.15, 84.0, -3.5};
-  m.start_y_m = s.road.side_lane_y_m();
-  m.target_speed_mps = 10.0;
-  m.decision.mode = DecisionMode::kDef2Merge;
-  m.decision.gap = Gap{-1, 1};
-  m.decision.coop_partner_id = 1;
-  m.decision.vo_star_mps = 20.0;
-  m.decision.time_s = 2.0;
-  m.decision.merge_duration_s = 4.8;
-  WorldSnapshot w = initial_snapshot(s);
-  w.ego.yaw_rad = 0.05;  // a front corner over the lane line
-  ASSERT_FALSE(m.committed(w.ego.y_m));
-  w.time_s = 3.0;  // within the deadline (2.0 + 0.1 + 1.0 s)
-  EXPECT_FALSE(merge_should_abort(m, w));
-  w.time_s = 3.2;
-  EXPECT_TRUE(merge_should_abort(m, w));
-  w.others[0].state.vx_mps = 20.0;  // at v_o*, as accepted
-  EXPECT_FALSE(merge_should_abort(m, w));
-}
-
 RC_GTEST_PROP(CommittedMerge, APathFromAHoldOnlyEverMovesTowardTheMainLane, ()) {
   const double start_y_m = -3.5 + *rc::gen::inRange(0, 175) / 100.0;  // up to the lane line
   const double kappa_per_m = *rc::gen::inRange(2, 50) / 100.0;

@@ -72,5 +72,20 @@ TEST(Definition2Search, AnAcceptanceTakenUpLateMergesSoonerDownToTheShortestComf
   EXPECT_FALSE(plan_accepted_definition2(HeldAt(0.5 * shortest_s - 0.01).w, HeldAt(0.5 * shortest_s - 0.01).a));
 }
 
+// Ineq. (3) and (4) rest on the partner's declared limits: the truck above is asked while it keeps
+// them, and not while it is seen braking or accelerating beyond them.
+TEST(Definition2Search, AVehicleSeenBeyondItsDeclaredLimitsIsNotAsked) {
+  HeldAt h(3.0);
+  const auto asked = plan_definition2(h.w, {});
+  ASSERT_TRUE(asked.has_value());
+  EXPECT_EQ(asked->partner.id, 1);
+  h.w.others[0].state.accel_mps2 = -(h.s.vehicles[0].limits.brake_max_mps2 + 1.0);
+  EXPECT_FALSE(plan_definition2(h.w, {}).has_value());
+  h.w.others[0].state.accel_mps2 = h.s.vehicles[0].limits.accel_max_mps2 + 1.0;
+  EXPECT_FALSE(plan_definition2(h.w, {}).has_value());
+  h.w.others[0].state.accel_mps2 = -h.s.vehicles[0].limits.brake_max_mps2;  // at the limit
+  EXPECT_TRUE(plan_definition2(h.w, {}).has_value());
+}
+
 }  // namespace
 }  // namespace mg

@@ -223,14 +223,12 @@ TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLin
   EXPECT_LT(peak_sideslip, 0.05);
 }
 
-// An RCPP merge of 16 s behind a vehicle overtaking the ego, whose braking at 0.25 m/s2 (less than
-// Definition 1.2's constant speed is taken to allow) moves its P_c bound: the re-check at 2.9 s
-// finds the bounds crossed, and a new decision merges into the same gap along a sigmoid the ego is
-// already on. It is re-planned in place: no abort, no hold letting the gap go (the progress rule
-// failed the wait), no lateral reversal. (Onto a sigmoid starting farther ahead it is not:
-// rcpp__ego_never_liable__def1_1_gap__ego-8, whose replay holds only so.)
+// An RCPP merge whose re-check finds it no longer fits its gap, while a new decision merges into
+// the same gap along a sigmoid the ego is already on: it is re-planned in place, with no abort, no
+// hold letting the gap go and no lateral reversal. (Onto a sigmoid starting farther ahead it is
+// not: the ego would hold its offset first and reach its midpoint later than planned.)
 TEST(Simulator, AMergeThatNoLongerFitsItsGapIsReplannedInPlaceWhenTheGapStillTakesOne) {
-  const Scenario s = corpus_case_scenario("rcpp-coop__progress__progress__ego-19");
+  const Scenario s = corpus_case_scenario("rcpp-coop__progress__progress__ego-14");
   const auto planner = make_planner("rcpp-coop");
   const Trace t = simulate(s, *planner);
   bool merging = false, merged = false, replanned = false;
@@ -247,6 +245,27 @@ TEST(Simulator, AMergeThatNoLongerFitsItsGapIsReplannedInPlaceWhenTheGapStillTak
   EXPECT_TRUE(merging);
   EXPECT_GT(lowest_vy, -s.params.rules.lat_speed_hysteresis_mps);
   EXPECT_GT(t.steps.back().ego.y_m, s.ego.y_m + 0.5);  // on its way into the lane when the run ends
+}
+
+// A crawl at v_e* = 1.1 m/s decided at 7 s behind a leader starting from rest (it had braked to a
+// stop beyond its b_max): once the leader has pulled away and a merge at 5 m/s or more is feasible,
+// a faster merge replaces the crawl, from the ego's offset, with no lateral reversal; the ego's
+// centre crosses the lane line by 12 s (the crawl had not crossed it when the run ended at 18 s).
+TEST(Simulator, ACrawlIsReplacedByAFasterMergeOnceOneIsFeasible) {
+  const Scenario s = corpus_case_scenario("rcpp-coop__progress__progress__ego-20");
+  const auto planner = make_planner("rcpp-coop");
+  const Trace t = simulate(s, *planner);
+  bool replaced = false;
+  for (const auto& d : t.decisions) replaced |= d.reason.find("a faster merge replaces the crawl") != std::string::npos;
+  EXPECT_TRUE(replaced);
+  double crossed_s = -1.0, lowest_vy = 0.0;
+  for (const TraceStep& st : t.steps) {
+    if (st.time_s >= 7.0 && crossed_s < 0.0) lowest_vy = std::min(lowest_vy, st.ego.road_vy_mps());
+    if (crossed_s < 0.0 && st.ego.y_m > -0.5 * s.road.lane_width_m) crossed_s = st.time_s;
+  }
+  EXPECT_GT(crossed_s, 7.0);
+  EXPECT_LT(crossed_s, 12.0);
+  EXPECT_GT(lowest_vy, -s.params.rules.lat_speed_hysteresis_mps);
 }
 
 // An RCPP crawl merge (v_e* 1 m/s, kappa 0.54/m, sharper than the path tracker steers) completes

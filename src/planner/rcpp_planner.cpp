@@ -281,18 +281,21 @@ void RcppPlanner::take_sooner_merge(Merging& merging, const WorldSnapshot& w) co
   }
 }
 
-// A crawl (a Definition 1 merge at a v_e* below the slowest merge the progress rule offers, decided
-// when nothing faster was feasible) is replaced, until it can no longer be aborted, by a new
-// decision into the same gap at a speed the rule offers once one exists; its path keeps the ego's
-// offset (from_hold) so nothing is reversed. A crawl at 1.1 m/s decided behind a leader starting
-// from rest went on, 5 cm of lateral speed a second, after the leader had pulled away and a merge
-// at 5 m/s was feasible, and the progress rule failed the wait (a campaign finding). Not into
-// another gap: a crawl behind a stopped vehicle replaced by a 23 s merge ahead of it held the
-// ego at its offset while that merge's sigmoid lay far ahead (progress).
+// A crawl (a Definition 1 merge at a v_e* no faster than crawl_speed_mps, decided when nothing
+// faster was feasible) is replaced, until it can no longer be aborted, by a new decision into the
+// same gap at a speed the progress rule offers (progress_min_merge_speed_mps) once one exists; its
+// path keeps the ego's offset (from_hold) so nothing is reversed. A crawl at 1.1 m/s decided
+// behind a leader starting from rest went on, 5 cm of lateral speed a second, after the leader had
+// pulled away and a merge at 5 m/s was feasible, and the progress rule failed the wait (a campaign
+// finding). Not into another gap: a crawl behind a stopped vehicle replaced by a 23 s merge ahead
+// of it held the ego at its offset while that merge's sigmoid lay far ahead (progress). Nor a merge
+// at more than a crawl: one at 4.5 m/s replaced by one at 8 m/s was aborted 1.5 s later, and the
+// hold let the gap go (progress; a campaign finding).
 void RcppPlanner::take_faster_merge(Merging& merging, const WorldSnapshot& w) const {
   const CommittedMerge& m = merging.merge;
   const double slowest_mps = w.setup->params.rules.progress_min_merge_speed_mps;
-  if (m.decision.mode != DecisionMode::kDef1Merge || m.target_speed_mps >= slowest_mps || m.committed(w.ego.y_m))
+  if (m.decision.mode != DecisionMode::kDef1Merge || m.target_speed_mps > crawl_speed_mps(*w.setup) ||
+      m.committed(w.ego.y_m))
     return;
   if (w.time_s + 1e-9 < merging.next_sooner_search_s) return;
   merging.next_sooner_search_s = w.time_s + kSoonerMergeEveryS;

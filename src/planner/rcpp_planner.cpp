@@ -297,8 +297,8 @@ void RcppPlanner::take_faster_merge(Merging& merging, const WorldSnapshot& w) co
   if (m.decision.mode != DecisionMode::kDef1Merge || m.target_speed_mps > crawl_speed_mps(*w.setup) ||
       m.committed(w.ego.y_m))
     return;
-  if (w.time_s + 1e-9 < merging.next_sooner_search_s) return;
-  merging.next_sooner_search_s = w.time_s + kSoonerMergeEveryS;
+  if (w.time_s + 1e-9 < merging.next_faster_search_s) return;
+  merging.next_faster_search_s = w.time_s + kSoonerMergeEveryS;
   for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
     auto plan = plan_definition1(w, durations, nullptr);
     if (!plan || plan->ve_star_mps < slowest_mps || plan->decision.gap != m.decision.gap) continue;

@@ -38,11 +38,12 @@ struct InSideLane {
   double next_longer_merge_s = -1.0;  // next time the longer merge durations are searched
 };
 // Merging; until the lateral move begins, a Definition 1 merge that begins it sooner may replace
-// the committed one, and a faster one a crawl (searched for every kSoonerMergeEveryS, from
-// next_sooner_search_s).
+// the committed one, and until it can no longer be aborted a faster one a crawl (each searched for
+// every kSoonerMergeEveryS, from next_sooner_search_s and next_faster_search_s).
 struct Merging {
   CommittedMerge merge;
   double next_sooner_search_s = -1.0;
+  double next_faster_search_s = -1.0;
 };
 struct InMainLane {};
 using RcppPhase = std::variant<InSideLane, Merging, InMainLane>;

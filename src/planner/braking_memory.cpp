@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "planner/rcpp_world.h"
+
 namespace mg {
 
 WorldSnapshot BrakingMemory::apply(const WorldSnapshot& w) {
@@ -14,7 +16,7 @@ WorldSnapshot BrakingMemory::apply(const WorldSnapshot& w) {
     // A vehicle accelerating beyond its declared a_accel^max is not between braking bursts: what
     // it does now is the breach the planner must see (a remembered -0.0002 m/s2 hid a follower
     // racing at 2.5 times its limit for 2 s).
-    if (o.state.accel_mps2 > o.limits.accel_max_mps2 + w.setup->params.rules.accel_tolerance_mps2) continue;
+    if (accelerating_beyond_limit(w, o)) continue;
     // A breach of b_max is seen while it lasts and not remembered beyond the declared limit: the
     // planner skips a gap whose leader brakes beyond its b_max, and a breach that had ended kept
     // that gap closed for kBrakingMemoryS while the progress rule, which reads what is observed,

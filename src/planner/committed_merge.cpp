@@ -215,6 +215,10 @@ std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_
   return sample_path(x_from_m, x_to_m, step_m, [&](double x) { return merge_path_y_m(m, x); });
 }
 
+bool turns_away_first(const CommittedMerge& m, const WorldSnapshot& w) {
+  return merge_path_y_m(m, w.ego.x_m) < w.ego.y_m - kTurnAwayM;
+}
+
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
   // An abort returns to the side lane, sound only while the ego can still stop before its end
   // (Def. 1.3) at b_min; otherwise the merge completes under the RSS override. Nor once the body

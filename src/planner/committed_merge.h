@@ -59,6 +59,11 @@ bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w);
 double merge_path_y_m(const CommittedMerge& m, double x_m);
 std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_m, double x_to_m, double step_m);
 
+// Whether following m first takes the ego away from the main lane: its path at the ego's X lies
+// more than kTurnAwayM below it (a merge begun on the way back from an abort follows its sigmoid).
+inline constexpr double kTurnAwayM = 0.05;
+bool turns_away_first(const CommittedMerge& m, const WorldSnapshot& w);
+
 // This cycle's command along the merge.
 RcppCycle follow_merge(const CommittedMerge& m, const WorldSnapshot& w);
 

@@ -28,10 +28,6 @@ constexpr double kLongerMergeEveryS = 0.5;
 // Below this speed a merge is not deferred for the way back to the side lane's centre
 // (back_to_centre): the ego hardly moves sideways any more.
 constexpr double kBackToCentreMinSpeedMps = 1.0;
-// A committed merge whose lateral move has not begun is replaced by one whose sigmoid starts at
-// least kSoonerStartM nearer (the search runs every kSoonerMergeEveryS while the ego waits).
-constexpr double kSoonerMergeEveryS = 0.5;
-constexpr double kSoonerStartM = 10.0;
 
 // The merge keeps the ego's offset toward the main lane (from_hold) after a hold, and for an ego
 // that starts off its lane centre toward the main lane and is not on its way back from an abort:
@@ -42,13 +38,6 @@ CommittedMerge commit(const InSideLane& side, const WorldSnapshot& w, const Sigm
                       RcppDecision d) {
   const bool keep_offset = side.lateral.hold_y_m.has_value() || !side.lateral.return_path;
   return CommittedMerge{sig, speed_mps, std::move(d), std::max(w.ego.y_m, sig.offset_m), keep_offset};
-}
-
-// Whether following m first takes the ego away from the main lane: its path at the ego's X lies
-// more than kTurnAwayM below it (a merge begun on the way back from an abort follows its sigmoid).
-constexpr double kTurnAwayM = 0.05;
-bool turns_away_first(const CommittedMerge& m, const WorldSnapshot& w) {
-  return merge_path_y_m(m, w.ego.x_m) < w.ego.y_m - kTurnAwayM;
 }
 
 // The merge a Definition 1 plan starts. An ego whose lateral speed last pointed toward the main
@@ -257,86 +246,6 @@ PlanOutput RcppPlanner::plan(const WorldSnapshot& observed) {
   if (!note.empty()) out.decision.reason = note + out.decision.reason;
   apply_proper_response(w, out);
   return to_command(std::move(out));
-}
-
-// RCPP decides a Def. 1 merge at T_dec from the world then (RCPP §II-B); one decided with a long
-// duration has its sigmoid start far ahead (P_c at rho/2), and the ego drove on in its side lane
-// for seconds while a shorter merge had become feasible (progress; a campaign finding). Until the
-// ego reaches the sigmoid's start, a new decision whose sigmoid starts kSoonerStartM nearer
-// replaces it: nothing of the first merge has been driven yet.
-void RcppPlanner::take_sooner_merge(Merging& merging, const WorldSnapshot& w) const {
-  const CommittedMerge& m = merging.merge;
-  const double start_x_m = m.sigmoid.x_at_fraction_m(kSigmoidEndFraction);
-  if (m.decision.mode != DecisionMode::kDef1Merge || w.ego.x_m >= start_x_m - kSoonerStartM) return;
-  if (w.time_s + 1e-9 < merging.next_sooner_search_s) return;
-  merging.next_sooner_search_s = w.time_s + kSoonerMergeEveryS;
-  for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
-    auto plan = plan_definition1(w, durations, nullptr);
-    if (!plan || plan->sigmoid.x_at_fraction_m(kSigmoidEndFraction) > start_x_m - kSoonerStartM) continue;
-    plan->decision.reason = "a sooner merge replaces the one decided at t = " + fixed_text(m.decision.time_s, 2) +
-                            " s: " + plan->decision.reason;
-    merging.merge = CommittedMerge{plan->sigmoid, plan->ve_star_mps, plan->decision,
-                                   std::max(w.ego.y_m, plan->sigmoid.offset_m), m.from_hold};
-    return;
-  }
-}
-
-// A crawl (a Definition 1 merge at a v_e* no faster than crawl_speed_mps, decided when nothing
-// faster was feasible) is replaced, until it can no longer be aborted, by a new decision into the
-// same gap at a speed the progress rule offers (progress_min_merge_speed_mps) once one exists; its
-// path keeps the ego's offset (from_hold) so nothing is reversed. A crawl at 1.1 m/s decided
-// behind a leader starting from rest went on, 5 cm of lateral speed a second, after the leader had
-// pulled away and a merge at 5 m/s was feasible, and the progress rule failed the wait (a campaign
-// finding). Not into another gap: a crawl behind a stopped vehicle replaced by a 23 s merge ahead
-// of it held the ego at its offset while that merge's sigmoid lay far ahead (progress). Nor a merge
-// at more than a crawl: one at 4.5 m/s replaced by one at 8 m/s was aborted 1.5 s later, and the
-// hold let the gap go (progress; a campaign finding).
-void RcppPlanner::take_faster_merge(Merging& merging, const WorldSnapshot& w) const {
-  const CommittedMerge& m = merging.merge;
-  const double slowest_mps = w.setup->params.rules.progress_min_merge_speed_mps;
-  if (m.decision.mode != DecisionMode::kDef1Merge || m.target_speed_mps > crawl_speed_mps(*w.setup) ||
-      m.committed(w.ego.y_m))
-    return;
-  if (w.time_s + 1e-9 < merging.next_faster_search_s) return;
-  merging.next_faster_search_s = w.time_s + kSoonerMergeEveryS;
-  for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
-    auto plan = plan_definition1(w, durations, nullptr);
-    if (!plan || plan->ve_star_mps < slowest_mps || plan->decision.gap != m.decision.gap) continue;
-    plan->decision.reason = "a faster merge replaces the crawl decided at t = " + fixed_text(m.decision.time_s, 2) +
-                            " s: " + plan->decision.reason;
-    merging.merge = CommittedMerge{plan->sigmoid, plan->ve_star_mps, plan->decision,
-                                   std::max(w.ego.y_m, plan->sigmoid.offset_m), true};
-    return;
-  }
-}
-
-// A Definition 1 merge the re-check would abort is re-planned in place when a new decision now
-// merges into the same gap along a sigmoid the ego is already on (within kTurnAwayM; its path
-// keeps the ego's offset over those centimetres, from_hold), so nothing is reversed, while an
-// abort's hold let the gap go (a campaign finding: a 16 s merge behind a vehicle overtaking the
-// ego, aborted when that vehicle's braking at 0.25 m/s2, below what Def. 1.2's constant speed is
-// taken to allow, moved its bound 8 s ahead; the gap was still there, and the progress rule
-// failed the wait).
-bool RcppPlanner::replan_in_place(Merging& merging, const WorldSnapshot& w) const {
-  const CommittedMerge& m = merging.merge;
-  if (m.decision.mode != DecisionMode::kDef1Merge || !m.decision.gap) return false;
-  for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
-    auto plan = plan_definition1(w, durations, nullptr);
-    if (!plan || plan->decision.gap != m.decision.gap) continue;
-    // Only a sigmoid the ego is already on: one that starts farther ahead would hold the ego at its
-    // offset first, its midpoint would come later than planned, and the judge reads the right of
-    // way over the longer merge the ego then drove (def1_1_gap failed by 7 m where the abort had
-    // held; a campaign finding).
-    const CommittedMerge on_path{plan->sigmoid, plan->ve_star_mps, plan->decision, plan->sigmoid.offset_m, false};
-    if (turns_away_first(on_path, w)) return false;
-    plan->decision.reason = "the merge decided at t = " + fixed_text(m.decision.time_s, 2) +
-                            " s no longer fits (P_c bounds crossed or lane occupied); re-planned into its gap: " +
-                            plan->decision.reason;
-    merging.merge = CommittedMerge{plan->sigmoid, plan->ve_star_mps, plan->decision,
-                                   std::max(w.ego.y_m, plan->sigmoid.offset_m), true};
-    return true;
-  }
-  return false;
 }
 
 std::string RcppPlanner::advance_phase(const WorldSnapshot& w) {

@@ -3,8 +3,9 @@
 // ("rcpp-coop") the Definition 2 search (planner/definition2_search.h) asks a V2V neighbour for
 // v_o* when no Definition 1 gap exists; with neither, Definition 1.3 halts before the side lane's
 // end. A merge once decided is committed, re-checked and possibly aborted
-// (planner/committed_merge.h); in the side lane the return stage draws the path
-// (planner/side_lane_path.h); the RSS proper response overrides last (planner/rss_override.h).
+// (planner/committed_merge.h), or replaced by a better one (planner/merge_revision.h); in the side
+// lane the return stage draws the path (planner/side_lane_path.h); the RSS proper response
+// overrides last (planner/rss_override.h).
 // RcppDecision rules and cost: docs/planner.md.
 #pragma once
 
@@ -16,6 +17,7 @@
 #include "planner/braking_memory.h"
 #include "planner/committed_merge.h"
 #include "planner/definition2_search.h"
+#include "planner/merge_revision.h"
 #include "planner/planner.h"
 #include "planner/reversal_ledger.h"
 #include "planner/side_lane_path.h"
@@ -37,14 +39,6 @@ struct InSideLane {
   double no_merge_before_s = -1.0;    // after an abort: earliest time of a new merge
   double next_longer_merge_s = -1.0;  // next time the longer merge durations are searched
 };
-// Merging; until the lateral move begins, a Definition 1 merge that begins it sooner may replace
-// the committed one, and until it can no longer be aborted a faster one a crawl (each searched for
-// every kSoonerMergeEveryS, from next_sooner_search_s and next_faster_search_s).
-struct Merging {
-  CommittedMerge merge;
-  double next_sooner_search_s = -1.0;
-  double next_faster_search_s = -1.0;
-};
 struct InMainLane {};
 using RcppPhase = std::variant<InSideLane, Merging, InMainLane>;
 
@@ -63,9 +57,6 @@ class RcppPlanner : public Planner {
   };
   std::string advance_phase(const WorldSnapshot& w);  // completion, abort, a start in the main lane
   SideLaneStep decide_in_side_lane(InSideLane& side, const WorldSnapshot& w);
-  void take_sooner_merge(Merging& merging, const WorldSnapshot& w) const;
-  void take_faster_merge(Merging& merging, const WorldSnapshot& w) const;
-  bool replan_in_place(Merging& merging, const WorldSnapshot& w) const;
   bool defers_merge(const InSideLane& side, const WorldSnapshot& w, bool turns_away) const;
   void forget_broken_acceptance(const CommittedMerge& aborted, const WorldSnapshot& w);
   std::optional<CommittedMerge> read_reply(InSideLane& side, const WorldSnapshot& w, std::string& note);

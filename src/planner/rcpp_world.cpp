@@ -36,10 +36,17 @@ CoopContext coop_context(const WorldSnapshot& w) {
                      kOccupancyPlanningBufferM};
 }
 
-double observed_accel_mps2(const WorldSnapshot& w, int id) {
+namespace {
+const ObservedVehicle* observed_vehicle(const WorldSnapshot& w, int id) {
   for (const ObservedVehicle& o : w.others)
-    if (o.id == id) return o.state.accel_mps2;
-  return 0.0;
+    if (o.id == id) return &o;
+  return nullptr;
+}
+}  // namespace
+
+double observed_accel_mps2(const WorldSnapshot& w, int id) {
+  const ObservedVehicle* o = observed_vehicle(w, id);
+  return o ? o->state.accel_mps2 : 0.0;
 }
 
 Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& l) {
@@ -62,17 +69,13 @@ std::optional<double> time_to_reach_s(const WorldSnapshot& w, const SpeedRamp& r
   return lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_m; }, 0.0, 600.0, 1e-4);
 }
 
-namespace {
-const ObservedVehicle* observed_vehicle(const WorldSnapshot& w, int id) {
-  for (const ObservedVehicle& o : w.others)
-    if (o.id == id) return &o;
-  return nullptr;
+bool accelerating_beyond_limit(const WorldSnapshot& w, const ObservedVehicle& o) {
+  return o.state.accel_mps2 > o.limits.accel_max_mps2 + w.setup->params.rules.accel_tolerance_mps2;
 }
-}  // namespace
 
 bool accelerating_beyond_limit(const WorldSnapshot& w, int id) {
   const ObservedVehicle* o = observed_vehicle(w, id);
-  return o && o->state.accel_mps2 > o->limits.accel_max_mps2 + w.setup->params.rules.accel_tolerance_mps2;
+  return o && accelerating_beyond_limit(w, *o);
 }
 
 bool braking_beyond_limit(const WorldSnapshot& w, int id) {

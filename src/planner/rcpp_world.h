@@ -32,6 +32,7 @@ double observed_accel_mps2(const WorldSnapshot& w, int id);
 // harder than its b_max, beyond the tolerance the rules read them with (accel_tolerance_mps2),
 // and whether either: Definition 1 rests on those limits.
 bool accelerating_beyond_limit(const WorldSnapshot& w, int id);
+bool accelerating_beyond_limit(const WorldSnapshot& w, const ObservedVehicle& o);
 bool braking_beyond_limit(const WorldSnapshot& w, int id);
 bool beyond_declared_limits(const WorldSnapshot& w, int id);
 

@@ -18,6 +18,17 @@ namespace {
 
 constexpr double kMaxMergeHorizonS = 60.0;  // longest remaining merge a committed-merge check looks at
 
+// The rest of the merge: until the ego reaches the sigmoid's end at the speed it aims for. The
+// ego's speed as planned (v_e*), as the candidate was checked: checking the capped target speed
+// instead made a merge fail its re-check right after it passed the planner's.
+double rest_of_merge_s(const CommittedMerge& m, const WorldSnapshot& w) {
+  const PlannerSetup& s = *w.setup;
+  const SpeedRamp ramp{ego_speed_mps(w), m.target_speed_mps, s.ego.limits.accel_max_mps2, s.ego.limits.brake_min_mps2};
+  const double to_end_m = m.sigmoid.x_at_fraction_m(1.0 - kSigmoidEndFraction) - w.ego.x_m;
+  return lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_end_m; }, 0.0, kMaxMergeHorizonS, 1e-3)
+      .value_or(kMaxMergeHorizonS);
+}
+
 std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSnapshot& w,
                                          const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& o,
                                          double t_s);
@@ -31,7 +42,7 @@ double pc_bound_speed_mps(const CommittedMerge& m, const WorldSnapshot& w, const
                           const MainLaneVehicle& leader, double target_mps) {
   const PlannerSetup& s = *w.setup;
   const double pc_m = m.sigmoid.pc_m;
-  const Track ahead = predicted_leader(w, lane, leader);
+  const Track ahead = predicted_leader(w, lane, leader, rest_of_merge_s(m, w));
   const bool partner = m.decision.mode == DecisionMode::kDef2Merge && leader.id == m.decision.coop_partner_id;
   const auto leader_at = [&](double t_s) {
     return partner ? gap_vehicle_at(m, w, lane, leader, t_s) : std::pair<double, double>{ahead.x_at(t_s), ahead.v_at(t_s)};
@@ -114,7 +125,7 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
     const double a = std::max(o.limits.accel_max_mps2, observed_accel_mps2(w, o.id));  // follower_track
     return {o.x_m + o.speed_mps * t_s + 0.5 * a * t_s * t_s, o.speed_mps + a * t_s};
   }
-  const Track ahead = predicted_leader(w, lane, o);
+  const Track ahead = predicted_leader(w, lane, o, rest_of_merge_s(m, w));
   return {ahead.x_at(t_s), ahead.v_at(t_s)};
 }
 
@@ -153,14 +164,8 @@ bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) 
   const PlannerSetup& s = *w.setup;
   const RcppDecision& d = m.decision;
   if (!d.gap) return true;
-  // The rest of the merge, until the ego reaches the sigmoid's end at the speed it aims for.
-  // The ego's speed as planned (v_e*), as the candidate was checked: checking the capped target
-  // speed instead made a merge fail its re-check right after it passed the planner's.
   const SpeedRamp ramp{ego_speed_mps(w), m.target_speed_mps, s.ego.limits.accel_max_mps2, s.ego.limits.brake_min_mps2};
-  const double to_end_m = m.sigmoid.x_at_fraction_m(1.0 - kSigmoidEndFraction) - w.ego.x_m;
-  const double horizon_s =
-      lowest_satisfying([&](double t) { return ramp.distance_at_m(t) - to_end_m; }, 0.0, kMaxMergeHorizonS, 1e-3)
-          .value_or(kMaxMergeHorizonS);
+  const double horizon_s = rest_of_merge_s(m, w);
   // The follower may still accelerate for what is left of its Def. 1.1 window (rho/2 from T_dec).
   const double follower_window_s = std::max(0.0, d.merge_duration_s - 2.0 * (w.time_s - d.time_s));
   const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
@@ -169,7 +174,8 @@ bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) 
     if (v.id == d.gap->follower_id) gap.follower = v;
     if (v.id == d.gap->leader_id) gap.leader = v;
   }
-  GapTracks tracks = gap_tracks(lane, gap, follower_window_s, [&](int id) { return observed_accel_mps2(w, id); });
+  GapTracks tracks = gap_tracks(lane, gap, follower_window_s, [&](int id) { return observed_accel_mps2(w, id); },
+                                leader_horizon(w, horizon_s));
   tracks.beside = beside_tracks(w);
   // The vehicle now nearest ahead in the target lane, when it lies inside the gap (the leader
   // left it, e.g. a non-compliant one that drove on): the ego must keep D_lon to it too. Not the
@@ -177,7 +183,7 @@ bool committed_occupancy_clear(const CommittedMerge& m, const WorldSnapshot& w) 
   if (const auto next = leader_ahead_of(lane, w.ego.x_m);
       next && (!gap.leader || lane_order_before(*next, *gap.leader)) &&
       (!gap.follower || lane_order_before(*gap.follower, *next)))
-    tracks.leaders.push_back(predicted_leader(w, lane, *next));
+    tracks.leaders.push_back(predicted_leader(w, lane, *next, horizon_s));
   const double elapsed_s = w.time_s - d.time_s;
   const OccupancyInstants when{OccupancyInstants::over(d.merge_duration_s).step_s, elapsed_s, horizon_s};
   return occupancy_clear(s, w.ego.x_m, w.ego.y_m, m.sigmoid, ramp, when, tracks, 0.0, nullptr,

@@ -96,7 +96,7 @@ std::optional<PcBounds> def1_pc_bounds(const Def1Search& f, const LaneGap& gap, 
     // The leader as the commit re-check predicts it (leader_track): a bound from the constant
     // speed of Def. 1.2 alone let a merge be decided that the next cycle aborted.
     const MainLaneVehicle& l = *gap.leader;
-    const Track lt = predicted_leader(f.w, f.lane, l);
+    const Track lt = predicted_leader(f.w, f.lane, l, f.rho_s);
     const Def1Context& ctx = f.ctx;
     const auto margin = [&](double v) {
       const double d = rss_longitudinal_m({ctx.ramp_to(v).speed_at_mps(f.half_s), lt.v_at(f.half_s), ctx.ego_length_m,
@@ -172,7 +172,8 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
   const Def1Context& ctx = f.ctx;
   const double v_e = ctx.ego_speed_mps;
   const double v_traffic = gap_traffic_speed_mps(gap, v_e);
-  GapTracks tracks = gap_tracks(f.lane, gap, f.rho_s, [&](int id) { return observed_accel_mps2(f.w, id); });
+  GapTracks tracks = gap_tracks(f.lane, gap, f.rho_s, [&](int id) { return observed_accel_mps2(f.w, id); },
+                                leader_horizon(f.w, f.rho_s));
   tracks.beside = f.beside;
   // The ego's own lateral progress toward the main lane, where a merge from a crawl may start its
   // sigmoid (kappa_range_for).

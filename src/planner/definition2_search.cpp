@@ -95,7 +95,7 @@ GapTracks coop_tracks(const CoopCandidate& x, const SpeedRamp& responder_ramp) {
       tracks.followers.push_back(follower_track(*f, 2.0 * x.t_c_s, observed_accel_mps2(x.w, f->id)));
   }
   for (std::size_t j = x.i + 1; j < x.lane.size(); ++j)
-    tracks.leaders.push_back(predicted_leader(x.w, x.lane, x.lane[j]));
+    tracks.leaders.push_back(predicted_leader(x.w, x.lane, x.lane[j], 2.0 * x.t_c_s));
   return tracks;
 }
 

@@ -139,11 +139,36 @@ const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, co
   return next;
 }
 
-double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2) {
+namespace {
+
+// LeaderHorizon: whether `l` at its speed is still D_lon, and kLeaderStandoffM, behind `ahead`
+// (braking at ahead_braking_mps2 to a stop) at h.horizon_s. The distance between them is concave
+// in time (`ahead`'s travel is, `l`'s is linear), so it is smallest now or at the horizon: the
+// horizon is the one instant to check, `l` being clear now (bumpers_m, braking_behind_mps2).
+// Written as "clear" so that a NaN predicts the braking.
+bool holds_speed_behind(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_braking_mps2,
+                        double bumpers_m, const LeaderHorizon& h) {
+  if (!std::isfinite(h.horizon_s)) return false;
+  const SpeedRamp ahead_motion{ahead.speed_mps, ahead_braking_mps2 > 0.0 ? 0.0 : ahead.speed_mps, 1.0,
+                               std::max(ahead_braking_mps2, 1e-9)};
+  const double gap_at_horizon_m =
+      ahead.x_m + ahead_motion.distance_at_m(h.horizon_s) - (l.x_m + l.speed_mps * h.horizon_s);
+  // RCPP eq. (1) with the speeds of now, as the progress rule's leader_holds_speed takes them.
+  const double d_lon_m = rss_longitudinal_m({std::max(l.speed_mps, 0.0), std::max(ahead.speed_mps, 0.0), l.length_m,
+                                             ahead.length_m, h.response_time_s, l.limits.accel_max_mps2,
+                                             l.limits.brake_min_mps2, ahead.limits.brake_max_mps2});
+  return gap_at_horizon_m >= std::max(d_lon_m, bumpers_m);
+}
+
+}  // namespace
+
+double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2,
+                           const LeaderHorizon& h) {
   const double bumpers_m = 0.5 * (l.length_m + ahead.length_m) + kLeaderStandoffM;
   const double gap_m = ahead.x_m - l.x_m - bumpers_m;
   if (gap_m <= 0.0) return 1e3;
   const double ahead_braking_mps2 = ahead_accel_mps2 < -kLeaderBrakingMps2 ? -ahead_accel_mps2 : 0.0;
+  if (holds_speed_behind(l, ahead, ahead_braking_mps2, bumpers_m, h)) return 0.0;
   const double closing_mps = l.speed_mps - ahead.speed_mps;
   // Uniform braking b behind `ahead` (at constant speed, or braking uniformly to a stop): while
   // both move the gap is smallest where the speeds match, at gap - closing^2 / (2 (b - b_a)), so
@@ -164,18 +189,18 @@ double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahea
 }
 
 double chained_accel_mps2(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v,
-                          const std::function<double(int)>& observed_accel_mps2) {
+                          const std::function<double(int)>& observed_accel_mps2, const LeaderHorizon& h) {
   const double seen_mps2 = observed_accel_mps2(v.id);
   const MainLaneVehicle* ahead = next_in_lane(lane, v);
   if (ahead == nullptr) return seen_mps2;
-  const double behind_mps2 = braking_behind_mps2(v, *ahead, chained_accel_mps2(lane, *ahead, observed_accel_mps2));
+  const double behind_mps2 = braking_behind_mps2(v, *ahead, chained_accel_mps2(lane, *ahead, observed_accel_mps2, h), h);
   return std::min(seen_mps2, -behind_mps2);
 }
 
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const MainLaneVehicle* ahead,
-                   double ahead_accel_mps2) {
+                   double ahead_accel_mps2, const LeaderHorizon& h) {
   const double seen_mps2 = observed_accel_mps2 < -kLeaderBrakingMps2 ? -observed_accel_mps2 : 0.0;
-  const double behind_mps2 = ahead ? braking_behind_mps2(l, *ahead, ahead_accel_mps2) : 0.0;
+  const double behind_mps2 = ahead ? braking_behind_mps2(l, *ahead, ahead_accel_mps2, h) : 0.0;
   SpeedRamp motion{l.speed_mps, l.speed_mps, 1.0, 1.0};
   // Braking seen to a stop is behind the braking needed to the speed ahead whenever it is harder.
   if (behind_mps2 > seen_mps2) {
@@ -206,7 +231,7 @@ BesideTrack beside_track(const MainLaneVehicle& v, double lane_y_m, double obser
 }
 
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
-                     const std::function<double(int)>& observed_accel_mps2) {
+                     const std::function<double(int)>& observed_accel_mps2, const LeaderHorizon& leader_horizon) {
   GapTracks tracks;
   tracks.followers.reserve(lane.size());
   tracks.leaders.reserve(lane.size());
@@ -219,7 +244,8 @@ GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& ga
     if (gap.leader && !lane_order_before(v, *gap.leader)) {
       const MainLaneVehicle* ahead = next_in_lane(lane, v);
       tracks.leaders.push_back(
-          leader_track(v, observed_accel_mps2(v.id), ahead, ahead ? chained_accel_mps2(lane, *ahead, observed_accel_mps2) : 0.0));
+          leader_track(v, observed_accel_mps2(v.id), ahead,
+                       ahead ? chained_accel_mps2(lane, *ahead, observed_accel_mps2, leader_horizon) : 0.0, leader_horizon));
     }
   }
   return tracks;

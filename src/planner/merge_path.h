@@ -148,14 +148,27 @@ Track behind_follower_track(const MainLaneVehicle& v, const MainLaneVehicle& fol
 // aborted when its braking sets in (docs/planner.md "Predicting the other vehicles").
 inline constexpr double kLeaderBrakingMps2 = 0.5;
 inline constexpr double kLeaderStandoffM = 2.0;
+// How long the prediction of a leader is needed (the rest of the merge it bounds). A leader that,
+// at its speed, is still RCPP eq. (1)'s D_lon behind `ahead` (braking as predicted) at
+// horizon_s needs no braking for it within the horizon and is predicted at its speed: the
+// progress rule offers such a gap (rules/feasible_gaps.cpp, leader_holds_speed), and a leader
+// predicted to brake from now to a stop behind a faster vehicle 80 m ahead seen braking for an
+// instant crossed the P_c bounds of every merge into the gap behind it (a campaign finding). With
+// no horizon (infinite) the braking is predicted whatever the distance.
+struct LeaderHorizon {
+  double horizon_s = std::numeric_limits<double>::infinity();
+  double response_time_s = 0.0;  // RSS's rho of eq. (1)
+};
 Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const MainLaneVehicle* ahead = nullptr,
-                   double ahead_accel_mps2 = 0.0);
+                   double ahead_accel_mps2 = 0.0, const LeaderHorizon& h = {});
 // The uniform braking leader_track predicts for `l` behind `ahead`: the least that keeps
 // kLeaderStandoffM behind `ahead` (at constant speed, or braking to a stop at the rate seen), so
 // no harder than stopping behind where a braking `ahead` stops unless the speeds match while it
 // still moves; 0 when `l` is not faster than a non-braking `ahead`. Capped at 1e3 m/s2 (no room
 // left).
-double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2 = 0.0);
+// 0 too when `l` holds its speed behind `ahead` until h.horizon_s (LeaderHorizon).
+double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2 = 0.0,
+                           const LeaderHorizon& h = {});
 // The vehicle next ahead of `v` in `lane` (any order), or nullptr.
 const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v);
 // The acceleration to predict `v` with as the vehicle ahead of a leader (leader_track's
@@ -165,7 +178,7 @@ const MainLaneVehicle* next_in_lane(const std::vector<MainLaneVehicle>& lane, co
 // is too: a leader predicted behind a fast vehicle alone, which then braked for a stopped one
 // ahead of it, aborted the merge planned behind the leader (docs/planner.md).
 double chained_accel_mps2(const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& v,
-                          const std::function<double(int)>& observed_accel_mps2);
+                          const std::function<double(int)>& observed_accel_mps2, const LeaderHorizon& h = {});
 
 // The vehicles a merge into a gap is checked against: the gap's follower and every target-lane
 // vehicle behind it (followers, follower_track over follower_window_s, those behind the follower
@@ -194,7 +207,7 @@ struct GapTracks {
   std::vector<BesideTrack> beside;
 };
 GapTracks gap_tracks(const std::vector<MainLaneVehicle>& lane, const LaneGap& gap, double follower_window_s,
-                     const std::function<double(int)>& observed_accel_mps2);
+                     const std::function<double(int)>& observed_accel_mps2, const LeaderHorizon& leader_horizon = {});
 // A vehicle of another main lane, centred at lane_y_m > 0, for GapTracks::beside: nominally at
 // its observed acceleration while that is positive, up to speed_cap_mps (the road's speed limit),
 // else as leader_track predicts it.

@@ -49,10 +49,17 @@ double observed_accel_mps2(const WorldSnapshot& w, int id) {
   return o ? o->state.accel_mps2 : 0.0;
 }
 
-Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& l) {
+LeaderHorizon leader_horizon(const WorldSnapshot& w, double horizon_s) {
+  return LeaderHorizon{horizon_s, w.setup->params.rss.response_time_s};
+}
+
+Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& l,
+                       double horizon_s) {
   const MainLaneVehicle* ahead = next_in_lane(lane, l);
   const auto accel_of = [&](int id) { return observed_accel_mps2(w, id); };
-  return leader_track(l, observed_accel_mps2(w, l.id), ahead, ahead ? chained_accel_mps2(lane, *ahead, accel_of) : 0.0);
+  const LeaderHorizon h = leader_horizon(w, horizon_s);
+  return leader_track(l, observed_accel_mps2(w, l.id), ahead, ahead ? chained_accel_mps2(lane, *ahead, accel_of, h) : 0.0,
+                      h);
 }
 
 double leader_bound_margin_m(const PlannerSetup& s, const MainLaneVehicle& o, double x_o_m, double v_o_mps, double v_at_mps,

@@ -37,7 +37,10 @@ bool braking_beyond_limit(const WorldSnapshot& w, int id);
 bool beyond_declared_limits(const WorldSnapshot& w, int id);
 
 // A target-lane leader as leader_track predicts it, behind the vehicle ahead of it in `lane`.
-Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& l);
+Track predicted_leader(const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane, const MainLaneVehicle& l,
+                       double horizon_s);
+// The LeaderHorizon of a prediction needed for horizon_s (the rest of a merge).
+LeaderHorizon leader_horizon(const WorldSnapshot& w, double horizon_s);
 
 // The P_c bound toward a vehicle `o` the ego merges behind (RCPP §II-C, spec §6), the ego reaching
 // P_c at v_at while `o` is predicted at (x_o, v_o): x_o less D_lon, minus P_c; >= 0 while it holds.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "core/rss.h"
 #include "planner/rcpp_params.h"
 
 namespace mg {
@@ -243,6 +244,46 @@ TEST(LeaderTrack, BehindAVehicleCrawlingToAStopTheBrakingIsWhatStoppingBehindItN
   EXPECT_NEAR(braking_behind_mps2(leader, crawler, -3.5), 256.0 / (2.0 * room_m), 1e-9);
   const Track t = leader_track(leader, 0.0, &crawler, -3.5);
   EXPECT_NEAR(t.x_at(60.0), room_m, 1e-6);
+}
+
+// A leader far behind a faster vehicle seen braking need not brake for it within the merge: at
+// its speed it is still RCPP eq. (1)'s D_lon behind it at the horizon (LeaderHorizon). Leader at
+// X = 0, 20.7 m/s; the vehicle ahead at X = 82.4, 26.4 m/s, seen braking at 2.1 m/s2 (a campaign's
+// bounded-random driver braking in bursts, remembered). Over 8 s it covers 26.4 * 8 - 2.1 * 64 / 2
+// = 144 m, the leader 165.6 m: 60.8 m apart, D_lon (T = 0.1 s) is 17.9 m. Predicted to its
+// stop, it asks the leader to brake from now on.
+TEST(LeaderTrack, ALeaderThatKeepsDLonBehindTheVehicleAheadUntilTheHorizonHoldsItsSpeed) {
+  const MainLaneVehicle leader = lane_vehicle(1, 0.0, 20.7), ahead = lane_vehicle(2, 82.4, 26.4);
+  const LeaderHorizon merge{8.0, 0.1};
+  EXPECT_DOUBLE_EQ(braking_behind_mps2(leader, ahead, -2.1, merge), 0.0);
+  EXPECT_DOUBLE_EQ(leader_track(leader, 0.0, &ahead, -2.1, merge).x_at(8.0), 165.6);
+  EXPECT_GT(braking_behind_mps2(leader, ahead, -2.1), 0.5);  // no horizon: braking to a stop behind it
+  EXPECT_GT(braking_behind_mps2(leader, ahead, -2.1, LeaderHorizon{30.0, 0.1}), 0.5);
+  // Braking the leader is seen doing is predicted whatever the horizon.
+  EXPECT_LT(leader_track(leader, -3.0, &ahead, -2.1, merge).x_at(8.0), 165.6 - 90.0);
+}
+
+// Predicted at its speed under a horizon, a leader never comes within kLeaderStandoffM of the
+// vehicle ahead (braking as seen) before the horizon, and is RCPP eq. (1)'s D_lon (with the
+// speeds of now) behind it at the horizon: the gap between them is concave in time, so it is
+// smallest now or at the horizon.
+RC_GTEST_PROP(LeaderTrack, ALeaderHoldingItsSpeedUnderAHorizonKeepsTheStandoffUntilIt, ()) {
+  const MainLaneVehicle leader = lane_vehicle(1, 0.0, *rc::gen::inRange(0, 400) / 10.0);
+  const MainLaneVehicle ahead = lane_vehicle(2, *rc::gen::inRange(50, 3000) / 10.0, *rc::gen::inRange(0, 400) / 10.0);
+  const double ahead_accel_mps2 = -*rc::gen::inRange(0, 100) / 10.0;
+  const LeaderHorizon h{*rc::gen::inRange(0, 300) / 10.0, *rc::gen::inRange(0, 20) / 10.0};
+  RC_PRE(braking_behind_mps2(leader, ahead, ahead_accel_mps2, h) == 0.0);
+  const Track l = leader_track(leader, 0.0, &ahead, ahead_accel_mps2, h);
+  const Track a = leader_track(ahead, ahead_accel_mps2);
+  for (int k = 0; k <= 100; ++k) {
+    const double t_s = h.horizon_s * k / 100.0;
+    RC_ASSERT(a.x_at(t_s) - l.x_at(t_s) >= 4.8 + kLeaderStandoffM - 1e-9);
+  }
+  if (braking_behind_mps2(leader, ahead, ahead_accel_mps2) == 0.0) return;  // no braking needed anyway
+  const Limits lim{};
+  const double d_lon_m = rss_longitudinal_m({leader.speed_mps, ahead.speed_mps, 4.8, 4.8, h.response_time_s,
+                                             lim.accel_max_mps2, lim.brake_min_mps2, lim.brake_max_mps2});
+  RC_ASSERT(a.x_at(h.horizon_s) - l.x_at(h.horizon_s) >= d_lon_m - 1e-9);
 }
 
 // The braking predicted behind a vehicle (at constant speed, or braking to a stop at the rate

@@ -83,7 +83,7 @@ PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, d
 }
 
 double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleState& ego, const EgoDynamics& d,
-                            const PathTrackerGains& gains) {
+                            const PathTrackerGains& gains, const SteeringEnvelope& envelope) {
   const bool along_x = ego.yaw_rad == 0.0;  // cos and sin exactly 1 and 0
   const double front_x = ego.x_m + d.cg_to_front_m * (along_x ? 1.0 : std::cos(ego.yaw_rad));
   const double front_y = ego.y_m + d.cg_to_front_m * (along_x ? ego.yaw_rad : std::sin(ego.yaw_rad));
@@ -99,7 +99,15 @@ double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleSta
   const double feed_forward = proj.curvature_per_m * (d.wheelbase_m() + understeer_gradient(d) * speed * speed);
   const double request =
       feed_forward + heading_error + cross_term + gains.yaw_rate_damping_s * (path_yaw_rate - ego.yaw_rate_radps);
-  const double cap_rad = std::atan(std::tan(gains.sideslip_max_rad) * d.wheelbase_m() / d.cg_to_rear_m);
+  double cap_rad = std::atan(std::tan(gains.sideslip_max_rad) * d.wheelbase_m() / d.cg_to_rear_m);
+  // The body's speed rises by up to kSpeedGainMargin times the commanded acceleration: the
+  // single-track model's v_x' = a + r v_y adds the yaw-rate coupling of a turning ego.
+  constexpr double kSpeedGainMargin = 1.25;
+  const double gain_mps2 = kSpeedGainMargin * envelope.accel_max_mps2;
+  const double next_speed = speed + gain_mps2 * envelope.step_s;
+  if (next_speed < envelope.sideslip_judged_from_mps && gain_mps2 > 0.0)
+    cap_rad = std::min(d.steer_max_rad,
+                       cap_rad + d.steer_rate_max_radps * (envelope.sideslip_judged_from_mps - next_speed) / gain_mps2);
   return std::clamp(request, -cap_rad, cap_rad);
 }
 

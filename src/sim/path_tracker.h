@@ -37,9 +37,23 @@ struct PathProjection {
 };
 PathProjection project_on_path(const std::vector<PathPoint>& path, double x_m, double y_m, double preview_m = 2.0);
 
+// Where the sideslip envelope binds. The sideslip rule judges the ego from sideslip_judged_from_mps
+// (rules.sideslip_min_speed_mps) on; below it the request may steer harder, by as much as the
+// steering rate can take back while the ego, accelerating at its accel_max_mps2, reaches that
+// speed, from the speed a step ahead (step_s: the request is held for a step): the envelope holds
+// whenever the rule judges, and a crawl merge, whose path is as sharp as half the steering
+// ability (planner/merge_path.h, path_curvature_cap_per_m), is followed instead of lagged by a
+// metre (its midpoint seconds late, the right of way judged at a follower that had meanwhile
+// closed in: def1_1_gap, a campaign finding). 0 (the default): the envelope at every speed.
+struct SteeringEnvelope {
+  double sideslip_judged_from_mps = 0.0;
+  double accel_max_mps2 = 0.0;
+  double step_s = 0.0;
+};
+
 // Steering request that brings the front axle onto the path, within the sideslip envelope.
 double stanley_steering_rad(const std::vector<PathPoint>& path, const VehicleState& ego, const EgoDynamics& d,
-                            const PathTrackerGains& gains = {});
+                            const PathTrackerGains& gains = {}, const SteeringEnvelope& envelope = {});
 
 // A straight path at constant Y ahead of and behind x_m (used before the first plan).
 std::vector<PathPoint> straight_path(double x_m, double y_m);

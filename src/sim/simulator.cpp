@@ -190,7 +190,8 @@ class Run {
       note_non_compliance(i, t);
     }
     EgoCommand cmd;
-    cmd.steer_rad = stanley_steering_rad(plan_.path, ego_, s_.ego.dynamics);
+    cmd.steer_rad = stanley_steering_rad(plan_.path, ego_, s_.ego.dynamics, {},
+                                         {s_.params.rules.sideslip_min_speed_mps, s_.ego.limits.accel_max_mps2, dt});
     cmd.accel_mps2 = speed_command_mps2(plan_, ego_.vx_mps, s_.ego.limits);
     ego_ = step_single_track(ego_, cmd, s_.ego.dynamics, s_.ego.limits, dt);
     for (std::size_t i = 0; i < others_.size(); ++i) advance_on_lane(others_[i], accel[i], dt);

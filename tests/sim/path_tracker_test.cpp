@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include "planner/merge_path.h"
 #include "planner/return_path.h"
@@ -89,6 +91,55 @@ TEST(PathTracker, ReturnAfterAnAbortKeepsTheSideslipOfASoftEgoInsideTheBound) {
   };
   EXPECT_LT(peak_sideslip(sample_return_path(back, 0.0, 400.0, 1.0)), 0.04);
   EXPECT_GT(peak_sideslip({{0.0, -3.5}, {400.0, -3.5}}), 0.05);
+}
+
+// A crawl merge (planner/merge_path.h: at a crawl a path as sharp as half the steering ability,
+// kappa 0.54/m over a 3.5 m lane change), from rest at the sigmoid's 2 % point up to 1.34 m/s.
+// Within the sideslip envelope the tracker steers at most 0.06 rad, a third of what the path
+// needs, and crosses the lane line almost 4 m past P_c (3 s at that speed); below the speed from
+// which the rule judges the sideslip (2 m/s) it may steer as the path needs, and crosses it at
+// P_c within a metre.
+TEST(PathTracker, ACrawlMergeIsFollowedBelowTheSpeedTheSideslipIsJudgedFrom) {
+  const EgoDynamics d;
+  const Limits lim;
+  const auto path = sigmoid_path(0.0, 0.54);
+  const auto midpoint_x_m = [&](const SteeringEnvelope& envelope) {
+    VehicleState s;
+    s.x_m = -7.2;
+    s.y_m = -3.5;
+    for (int i = 0; i < 2000; ++i) {
+      const double accel_mps2 = s.vx_mps < 1.34 ? lim.accel_max_mps2 : 0.0;
+      s = step_single_track(s, {stanley_steering_rad(path, s, d, {}, envelope), accel_mps2}, d, lim, 0.02);
+      if (s.y_m > -1.75) return s.x_m;
+    }
+    return std::numeric_limits<double>::infinity();
+  };
+  EXPECT_NEAR(midpoint_x_m({2.0, lim.accel_max_mps2, 0.02}), 0.0, 1.0);
+  EXPECT_GT(midpoint_x_m({}), 3.0);
+}
+
+// Steering harder below the judged speed never breaks the envelope where the rule judges: an
+// ego on a sharp path below 2 m/s, steered to its cap, then accelerating at its a_max through 2
+// m/s, has at most the envelope's kinematic sideslip from there on (the steering rate takes the
+// extra back before the speed gets there).
+RC_GTEST_PROP(PathTracker, SteeringBelowTheJudgedSpeedIsBackInTheEnvelopeWhenTheRuleJudges, ()) {
+  const EgoDynamics d;
+  Limits lim;
+  lim.accel_max_mps2 = *rc::gen::inRange(5, 60) / 10.0;
+  const double kappa_per_m = *rc::gen::inRange(5, 60) / 100.0;
+  const auto path = sigmoid_path(*rc::gen::inRange(0, 20) * 1.0, kappa_per_m);
+  const SteeringEnvelope envelope{2.0, lim.accel_max_mps2, 0.02};
+  VehicleState s;
+  s.x_m = -5.0;
+  s.y_m = -3.5;
+  s.vx_mps = *rc::gen::inRange(1, 19) / 10.0;
+  const int steady_steps = *rc::gen::inRange(0, 200);
+  const double cap_rad = std::atan(std::tan(kPathTrackerSideslipRad) * d.wheelbase_m() / d.cg_to_rear_m);
+  for (int i = 0; i < 600; ++i) {
+    const double accel = i < steady_steps ? 0.0 : lim.accel_max_mps2;
+    s = step_single_track(s, {stanley_steering_rad(path, s, d, {}, envelope), accel}, d, lim, 0.02);
+    if (s.vx_mps >= envelope.sideslip_judged_from_mps) RC_ASSERT(std::abs(s.steer_rad) <= cap_rad + 1e-9);
+  }
 }
 
 }  // namespace

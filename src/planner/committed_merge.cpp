@@ -41,7 +41,7 @@ std::pair<double, double> gap_vehicle_at(const CommittedMerge& m, const WorldSna
 double pc_bound_speed_mps(const CommittedMerge& m, const WorldSnapshot& w, const std::vector<MainLaneVehicle>& lane,
                           const MainLaneVehicle& leader, double target_mps) {
   const PlannerSetup& s = *w.setup;
-  const double pc_m = m.sigmoid.pc_m;
+  const double pc_m = lane_line_x_m(m.sigmoid, s.road.lane_width_m);
   const Track ahead = predicted_leader(w, lane, leader, rest_of_merge_s(m, w));
   const bool partner = m.decision.mode == DecisionMode::kDef2Merge && leader.id == m.decision.coop_partner_id;
   const auto leader_at = [&](double t_s) {
@@ -80,7 +80,7 @@ double pc_bound_speed_mps(const CommittedMerge& m, const WorldSnapshot& w, const
 // accepted; so was a vehicle braking behind a stopped follower the ego meant to overtake).
 double merge_target_speed_mps(const CommittedMerge& m, const WorldSnapshot& w) {
   double target = m.target_speed_mps;
-  const bool before_pc = w.ego.x_m < m.sigmoid.pc_m;
+  const bool before_pc = w.ego.x_m < lane_line_x_m(m.sigmoid, w.setup->road.lane_width_m);
   const std::optional<Gap>& gap = m.decision.gap;
   const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
   const auto follower = std::find_if(lane.begin(), lane.end(), [&](const MainLaneVehicle& v) {
@@ -137,8 +137,9 @@ bool committed_bounds_crossed(const CommittedMerge& m, const WorldSnapshot& w) {
   // The speed the ego will really aim for: v_e*, or less behind a braking leader (follow_merge).
   const SpeedRamp ramp{ego_speed_mps(w), merge_target_speed_mps(m, w), s.ego.limits.accel_max_mps2,
                        s.ego.limits.brake_min_mps2};
-  if (m.sigmoid.pc_m <= w.ego.x_m) return false;
-  const auto t_reach = time_to_reach_s(w, ramp, m.sigmoid.pc_m);
+  const double pc_m = lane_line_x_m(m.sigmoid, s.road.lane_width_m);
+  if (pc_m <= w.ego.x_m) return false;
+  const auto t_reach = time_to_reach_s(w, ramp, pc_m);
   if (!t_reach) return true;  // the ego would never reach P_c
   const double v_at = ramp.speed_at_mps(*t_reach);
   const std::vector<MainLaneVehicle> lane = target_lane_vehicles(w);
@@ -151,8 +152,8 @@ bool committed_bounds_crossed(const CommittedMerge& m, const WorldSnapshot& w) {
       const double dl = rss_longitudinal_m({v_mps, v_at, o.length_m, s.ego.size.length_m, s.params.rss.response_time_s,
                                             o.limits.accel_max_mps2, o.limits.brake_min_mps2,
                                             s.ego.limits.brake_max_mps2});
-      if (x_m + dl > m.sigmoid.pc_m) return true;
-    } else if (leader_bound_margin_m(s, o, x_m, v_mps, v_at, m.sigmoid.pc_m) < 0.0) {
+      if (x_m + dl > pc_m) return true;
+    } else if (leader_bound_margin_m(s, o, x_m, v_mps, v_at, pc_m) < 0.0) {
       return true;
     }
   }

@@ -193,7 +193,7 @@ std::optional<SigmoidChoice> def1_choose(Def1Search& f, const LaneGap& gap, cons
   const auto bound = [&](std::size_t i, double kappa) { return def1_cost(speed(i), kappa) + field_floor; };
   const auto cost = [&](std::size_t i, double kappa) {
     Def1Speed& a = speed(i);
-    const Sigmoid sig{s.road.lane_width_m, kappa, a.pc_m, -s.road.lane_width_m};
+    const Sigmoid sig = merge_sigmoid(s.road.lane_width_m, f.w.ego.y_m, kappa, a.pc_m);
     a.memo.last_blocked_k = last_blocked_k;
     const bool clear = occupancy_clear(s, ctx.ego_x_m, f.w.ego.y_m, sig, a.ramp, OccupancyInstants::over(f.rho_s),
                                        tracks, kOccupancyPlanningBufferM, &a.memo);
@@ -225,7 +225,7 @@ Def1Plan def1_plan(const Def1Search& f, const Gap& gid, const SpeedInterval& iv,
   Def1Plan plan;
   plan.ve_star_mps = choice.param;
   const double pc = b.pc_at(f, choice.param);
-  plan.sigmoid = Sigmoid{f.s.road.lane_width_m, choice.kappa_per_m, pc, -f.s.road.lane_width_m};
+  plan.sigmoid = merge_sigmoid(f.s.road.lane_width_m, f.w.ego.y_m, choice.kappa_per_m, pc);
   RcppDecision& d = plan.decision;
   d.time_s = f.w.time_s;
   d.mode = DecisionMode::kDef1Merge;

@@ -103,7 +103,7 @@ Def2Plan coop_plan(const CoopCandidate& x, const CoopBounds& b, double pc_m, dou
   const PlannerSetup& s = *x.w.setup;
   const MainLaneVehicle& o = x.responder();
   Def2Plan plan;
-  plan.sigmoid = Sigmoid{s.road.lane_width_m, kappa_per_m, pc_m, -s.road.lane_width_m};
+  plan.sigmoid = merge_sigmoid(s.road.lane_width_m, x.w.ego.y_m, kappa_per_m, pc_m);
   plan.vo = x.vo;
   plan.partner = o;
   plan.ego_speed_after_mps = x.v_after_mps;
@@ -149,7 +149,7 @@ std::optional<Def2Plan> coop_sigmoid(const CoopCandidate& x, const CoopBounds& b
   std::optional<FieldTimeline> field;  // built when the first candidate needs it
   const double kappa_cap = kappa_cap_per_m(s, ramp);
   const auto cost = [&](double pc, double kappa) {
-    const Sigmoid sig{s.road.lane_width_m, kappa, pc, -s.road.lane_width_m};
+    const Sigmoid sig = merge_sigmoid(s.road.lane_width_m, w.ego.y_m, kappa, pc);
     // No planning buffer: the responder's cooperative profile is built to leave exactly D*_lon.
     if (!occupancy_clear(s, c.ego_x_m, w.ego.y_m, sig, ramp,
                          OccupancyInstants::over(c.comm_threshold_s + c.merge_duration_s), tracks, 0.0))

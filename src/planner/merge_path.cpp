@@ -346,6 +346,7 @@ struct OccupancyScan {
   const PlannerSetup& s;
   double ego_x_m, ego_y_m;
   const Sigmoid& sig;
+  double pc_m;  // where the path crosses the lane line (lane_line_x_m): the same for every kappa of a ramp
   const SpeedRamp& ego;
   const OccupancyInstants& when;
   const GapTracks& tracks;
@@ -364,7 +365,7 @@ struct OccupancyScan {
     const double x = ego_x_m + ego.distance_at_m(t);
     const double v = ego.speed_at_mps(t);
     if (memoised && std::isnan(below.lane_m)) {  // filled first: it does not depend on kappa
-      below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
+      below = blocked_below_m(s, t, x, v, pc_m, tracks, buffer_m);
       memo->blocked_below_m[static_cast<std::size_t>(k)] = below;
       if (below.lane_m == kNone && below.beside_m == kNone) return false;
     }
@@ -374,7 +375,7 @@ struct OccupancyScan {
     if (std::isnan(below.lane_m)) {
       if (std::isnan(widest_extra)) widest_extra = widest_extra_m(s, tracks);
       if (!lat.over_line && std::min(lat.room_m, lat.centre_room_m) + lateral_slack_m >= widest_extra) return false;
-      below = blocked_below_m(s, t, x, v, sig.pc_m, tracks, buffer_m);
+      below = blocked_below_m(s, t, x, v, pc_m, tracks, buffer_m);
     }
     const bool lane_blocked = below.lane_m > kNone && (lat.over_line || lat.room_m + lateral_slack_m < below.lane_m);
     // A vehicle of another lane is judged by RCPP eq. (2) between centres (rss_lateral), whatever
@@ -398,7 +399,8 @@ bool occupancy_clear(const PlannerSetup& s, double ego_x_m, double ego_y_m, cons
   // (about P_c) back to the first instant, then on to the last. Rejections concentrate just before
   // P_c (the follower), so most come after a few instants.
   const int k_middle = std::clamp(kOccupancySamples / 2, k_first, std::max(k_first, k_last));
-  OccupancyScan scan{s, ego_x_m, ego_y_m, sig, ego, when, tracks, buffer_m, lateral_slack_m, memo};
+  OccupancyScan scan{s, ego_x_m, ego_y_m, sig, lane_line_x_m(sig, s.road.lane_width_m), ego, when, tracks,
+                     buffer_m, lateral_slack_m, memo};
   const int hint = memo && memo->last_blocked_k >= k_first && memo->last_blocked_k <= k_last ? memo->last_blocked_k : -1;
   if (hint >= 0 && scan.blocked_at(hint)) return false;
   for (int j = 0; j <= k_last - k_first; ++j) {

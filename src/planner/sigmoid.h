@@ -19,14 +19,31 @@
 namespace mg {
 
 struct Sigmoid {
-  double width_m = 0.0;      // W, lane-centre to lane-centre
+  double width_m = 0.0;      // W, lane-centre to lane-centre (merge_sigmoid: the ego's Y to the target's centre)
   double kappa_per_m = 0.0;  // slope parameter, > 0
   double pc_m = 0.0;         // P_c, midpoint
-  double offset_m = 0.0;     // b, the start lane's centre
+  double offset_m = 0.0;     // b, the start lane's centre (merge_sigmoid: the ego's Y)
   double y_at_m(double x_m) const;
   // x where the path has covered `fraction` (0..1) of W: P_c + ln(f/(1-f))/kappa.
   double x_at_fraction_m(double fraction) const;
+  // x where the path reaches y_m, strictly between its ends.
+  double x_at_y_m(double y_m) const { return x_at_fraction_m((y_m - offset_m) / width_m); }
 };
+
+// The merge path of an ego at ego_y_m in the side lane (centre -W) crossing the lane line (-W/2)
+// at pc_m with slope kappa_per_m: the paper's sigmoid across the lane, from the side lane's
+// centre, for an ego at or below that centre; for an ego nearer the lane (off its centre at the
+// start, or held after an abort), the same logistic from the ego's Y to the target lane's centre,
+// shifted so that it crosses the lane line at pc_m, where Definition 1 put P_c (its own midpoint
+// lies beyond). The paper's path from the side lane's centre either took such an ego away from
+// the lane first or, held at the ego's Y until the sigmoid came up to it, met it with a kink of
+// its heading that the tracker took a second late: the merge crossed the lane line metres past
+// P_c, and the judge read Definition 1 over the longer merge it saw (def1_1_gap, a campaign
+// finding). The same logistic so rescaled is how `progress`'s witness merges from the ego's
+// offset (rules/feasible_gaps.cpp).
+Sigmoid merge_sigmoid(double lane_width_m, double ego_y_m, double kappa_per_m, double pc_m);
+// Where a merge path crosses the lane line (-W/2): P_c.
+inline double lane_line_x_m(const Sigmoid& sig, double lane_width_m) { return sig.x_at_y_m(-0.5 * lane_width_m); }
 
 // Peak lateral acceleration of the logistic path at constant speed v: v^2 W kappa^2 / (6 sqrt 3)
 // (max |y''| = W kappa^2/(6 sqrt 3) at X - P_c = +-ln(2 + sqrt 3)/kappa; spec §6).

@@ -355,9 +355,10 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswer, ()) {
 
 // The same with vehicles of mixed widths (each track's extra lateral room differs, so the two parts
 // of an instant's Blocking and the widest extra over all tracks differ), an ego off its lane's
-// centre, and a re-check's instants (elapsed since the decision): the memo's shortcuts (an instant
-// clear of every vehicle skips the path; a known Blocking decides without the widest extra) agree
-// with the plain check.
+// centre on the merge path drawn from there (merge_sigmoid: its midpoint differs by kappa, its
+// lane-line crossing does not), and a re-check's instants (elapsed since the decision): the
+// memo's shortcuts (an instant clear of every vehicle skips the path; a known Blocking decides
+// without the widest extra) agree with the plain check.
 RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswerWithMixedWidths, ()) {
   const Scenario s = road_only();
   const auto vehicle = [](int id) {
@@ -383,7 +384,7 @@ RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswerWithMixedWidths, ()) {
     const double pc_m = ego.distance_at_m(0.5 * rho_s);
     memo.forget_ramp();
     for (int k = 0; k < 6; ++k) {
-      const Sigmoid path{3.5, *rc::gen::inRange(5, 150) / 100.0, pc_m, -3.5};
+      const Sigmoid path = merge_sigmoid(3.5, ego_y_m, *rc::gen::inRange(5, 150) / 100.0, pc_m);
       const bool plain = occupancy_clear(s, 0.0, ego_y_m, path, ego, when, tracks, 1.5);
       RC_ASSERT(occupancy_clear(s, 0.0, ego_y_m, path, ego, when, tracks, 1.5, &memo) == plain);
     }

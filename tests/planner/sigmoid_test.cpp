@@ -35,6 +35,29 @@ RC_GTEST_PROP(Sigmoid, MidpointIsHalfWayAndFractionsInvert, ()) {
   RC_ASSERT(std::abs(s.y_at_m(s.x_at_fraction_m(f)) - (s.offset_m + f * s.width_m)) < 1e-9 * (1 + s.width_m));
 }
 
+// The merge path from an ego off its side lane's centre toward the main lane (W = 3.5 m, ego at
+// Y = -3.0, P_c = 100 m): the paper's logistic rescaled to run from the ego's Y to the target
+// lane's centre, crossing the lane line (-1.75) at P_c whatever kappa, so that what the search
+// checked at P_c (and the occupancy memo shares across a ramp's kappa candidates) is where the
+// ego enters. At or below the centre, and from within the paper's 2 % start, the paper's own.
+TEST(Sigmoid, AMergeFromOffItsCentreRunsFromTheEgoAndCrossesTheLaneLineAtPc) {
+  for (const double kappa : {0.05, 0.2, 0.5}) {
+    const Sigmoid m = merge_sigmoid(3.5, -3.0, kappa, 100.0);
+    EXPECT_DOUBLE_EQ(m.offset_m, -3.0);
+    EXPECT_DOUBLE_EQ(m.offset_m + m.width_m, 0.0);
+    EXPECT_NEAR(lane_line_x_m(m, 3.5), 100.0, 1e-9);
+    EXPECT_NEAR(m.y_at_m(100.0), -1.75, 1e-9);
+    EXPECT_GT(m.pc_m, 100.0);  // its own midpoint, Y = -1.5, lies beyond
+    EXPECT_NEAR(m.y_at_m(100.0 - 40.0 / kappa), -3.0, 1e-6);
+  }
+  for (const double ego_y_m : {-3.5, -3.8, -3.5 + 0.5 * kSigmoidEndFraction * 3.5}) {
+    const Sigmoid m = merge_sigmoid(3.5, ego_y_m, 0.2, 100.0);
+    EXPECT_DOUBLE_EQ(m.offset_m, -3.5);
+    EXPECT_DOUBLE_EQ(m.width_m, 3.5);
+    EXPECT_DOUBLE_EQ(m.pc_m, 100.0);
+  }
+}
+
 TEST(Sigmoid, PeakLateralAccelerationMatchesNumericCurvature) {
   // Max |y''| of the logistic is W kappa^2 / (6 sqrt 3); at 20 m/s, W = 3.5, kappa = 0.1:
   // 400 * 3.5 * 0.01 / 10.392 = 1.347 m/s2.

@@ -331,8 +331,12 @@ PathLateral path_lateral(const PlannerSetup& s, double ego_y_m, const Sigmoid& s
   // the lane line while the vehicle it was to merge behind passed; a campaign finding).
   const double cos_h = 1.0 / std::sqrt(1.0 + slope * slope);
   const double yaw_extra_m = 0.5 * (s.ego.size.width_m * (cos_h - 1.0) + s.ego.size.length_m * slope * cos_h);
-  // Laterally safe (lane centre Y = 0), with the growing tracking margin.
-  const double margin_m = kOccupancyLateralMarginM * std::clamp(sgm / kOccupancyFullMarginFraction, 0.0, 1.0);
+  // Laterally safe (lane centre Y = 0), with the tracking margin growing with the path's progress
+  // from the side lane's centre (for the paper's path, its own fraction sgm): a path drawn from an
+  // ego off that centre (merge_sigmoid) starts where the ego may still be moving, and one held
+  // 1.5 cm outside D_lat of a truck closing from behind took the ego, as it settled, inside it.
+  const double from_centre = (y_path - s.road.side_lane_y_m()) / s.road.lane_width_m;
+  const double margin_m = kOccupancyLateralMarginM * std::clamp(from_centre / kOccupancyFullMarginFraction, 0.0, 1.0);
   // A corner over the lane line (with kLaneLineMarginM) is in the lane, whatever D_lat says:
   // the rules judge entry by it (docs/spec.md §8).
   return {-y - yaw_extra_m - (d_lat + margin_m), -y - (d_lat + margin_m),

@@ -326,6 +326,23 @@ RC_GTEST_PROP(LeaderTrack, APredictedLeaderNeverPassesTheVehicleAheadOfIt, ()) {
   }
 }
 
+// A merge drawn from an ego off its side lane's centre (merge_sigmoid) starts where the ego may
+// still be moving: its tracking margin grows with the path's progress from the side lane's
+// centre, not from its own start. With T = 1 s, D_lat at rest is 0.1 + 1.9 + 2 (0.2 / 2 +
+// 0.2^2 / 1.6) = 2.25 m. Ego at Y = -2.9 (0.65 m outside it, its corner 0.1 m short of the lane
+// line's margin), 10 m/s, P_c 150 m ahead; the gap's leader 60 m behind at 30 m/s, not D_lon
+// clear of it while it passes: held at its offset the ego lies inside the 0.75 m margin.
+TEST(OccupancyClear, APathFromOffTheCentreKeepsTheTrackingMarginOfItsOffset) {
+  Scenario s = road_only();
+  s.params.rss.response_time_s = 1.0;
+  const std::vector<MainLaneVehicle> lane = {lane_vehicle(1, -60.0, 30.0)};
+  const GapTracks tracks = gap_tracks(lane, LaneGap{std::nullopt, lane[0]}, 8.0, no_accel);
+  const SpeedRamp ego{10.0, 10.0, 2.0, 4.0};
+  const OccupancyInstants when = OccupancyInstants::over(8.0);
+  EXPECT_FALSE(occupancy_clear(s, 0.0, -2.9, merge_sigmoid(3.5, -2.9, 0.2, 150.0), ego, when, tracks, 1.5));
+  EXPECT_TRUE(occupancy_clear(s, 0.0, -3.5, merge_sigmoid(3.5, -3.5, 0.2, 150.0), ego, when, tracks, 1.5));
+}
+
 RC_GTEST_PROP(OccupancyClear, TheMemoNeverChangesTheAnswer, ()) {
   const Scenario s = road_only();
   std::vector<MainLaneVehicle> lane;

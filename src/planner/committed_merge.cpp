@@ -226,6 +226,12 @@ bool turns_away_first(const CommittedMerge& m, const WorldSnapshot& w) {
   return merge_path_y_m(m, w.ego.x_m) < w.ego.y_m - kTurnAwayM;
 }
 
+bool heads_along(const CommittedMerge& m, const WorldSnapshot& w) {
+  constexpr double kChordM = 0.5;  // half the chord the path's heading is measured over
+  const double slope = (merge_path_y_m(m, w.ego.x_m + kChordM) - merge_path_y_m(m, w.ego.x_m - kChordM)) / (2.0 * kChordM);
+  return w.ego.yaw_rad - std::atan(slope) <= kHeadingMatchRad;
+}
+
 bool merge_should_abort(const CommittedMerge& m, const WorldSnapshot& w) {
   // An abort returns to the side lane, sound only while the ego can still stop before its end
   // (Def. 1.3) at b_min; otherwise the merge completes under the RSS override. Nor once the body

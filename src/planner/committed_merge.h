@@ -63,6 +63,12 @@ std::vector<PathPoint> merge_path_points(const CommittedMerge& m, double x_from_
 // more than kTurnAwayM below it (a merge begun on the way back from an abort follows its sigmoid).
 inline constexpr double kTurnAwayM = 0.05;
 bool turns_away_first(const CommittedMerge& m, const WorldSnapshot& w);
+// Whether the ego is turned toward the main lane by no more than kHeadingMatchRad beyond the
+// merge's path at its X: a path the ego would have to straighten onto (a gentle one replacing a
+// crawl's steep one) is driven with the ego still turned toward the lane, its corner over the
+// lane line sooner than the path's own heading puts it, and the occupancy check reads the path's.
+inline constexpr double kHeadingMatchRad = 0.05;
+bool heads_along(const CommittedMerge& m, const WorldSnapshot& w);
 
 // This cycle's command along the merge.
 RcppCycle follow_merge(const CommittedMerge& m, const WorldSnapshot& w);

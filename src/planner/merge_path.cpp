@@ -166,10 +166,14 @@ double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahea
                            const LeaderHorizon& h) {
   const double bumpers_m = 0.5 * (l.length_m + ahead.length_m) + kLeaderStandoffM;
   const double gap_m = ahead.x_m - l.x_m - bumpers_m;
-  if (gap_m <= 0.0) return 1e3;
   const double ahead_braking_mps2 = ahead_accel_mps2 < -kLeaderBrakingMps2 ? -ahead_accel_mps2 : 0.0;
-  if (holds_speed_behind(l, ahead, ahead_braking_mps2, bumpers_m, h)) return 0.0;
   const double closing_mps = l.speed_mps - ahead.speed_mps;
+  // Inside the standoff already: no braking keeps it, unless the gap does not shrink (a driver
+  // following at a shorter distance than kLeaderStandoffM at the same speed is not braking, and
+  // one predicted so, at 1e3 m/s2, predicted every vehicle behind it stopping at once: it closed
+  // a gap two vehicles back for seconds while `progress` offered it; a campaign finding).
+  if (gap_m <= 0.0) return closing_mps <= 0.0 && ahead_braking_mps2 == 0.0 ? 0.0 : 1e3;
+  if (holds_speed_behind(l, ahead, ahead_braking_mps2, bumpers_m, h)) return 0.0;
   // Uniform braking b behind `ahead` (at constant speed, or braking uniformly to a stop): while
   // both move the gap is smallest where the speeds match, at gap - closing^2 / (2 (b - b_a)), so
   // b >= b_a + closing^2 / (2 gap) whenever that match comes before `ahead` stops.

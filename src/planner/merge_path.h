@@ -164,8 +164,8 @@ Track leader_track(const MainLaneVehicle& l, double observed_accel_mps2, const M
 // The uniform braking leader_track predicts for `l` behind `ahead`: the least that keeps
 // kLeaderStandoffM behind `ahead` (at constant speed, or braking to a stop at the rate seen), so
 // no harder than stopping behind where a braking `ahead` stops unless the speeds match while it
-// still moves; 0 when `l` is not faster than a non-braking `ahead`. Capped at 1e3 m/s2 (no room
-// left).
+// still moves; 0 when `l` is not faster than a non-braking `ahead`, even inside the standoff.
+// Capped at 1e3 m/s2 (no room left).
 // 0 too when `l` holds its speed behind `ahead` until h.horizon_s (LeaderHorizon).
 double braking_behind_mps2(const MainLaneVehicle& l, const MainLaneVehicle& ahead, double ahead_accel_mps2 = 0.0,
                            const LeaderHorizon& h = {});

@@ -12,6 +12,14 @@
 namespace mg {
 namespace {
 
+// Whether the gap's leader is not yet ahead of the ego (it is passing it, or no such vehicle is seen).
+bool leader_not_ahead(const WorldSnapshot& w, const Gap& gap) {
+  if (gap.leader_id < 0) return false;
+  for (const ObservedVehicle& o : w.others)
+    if (o.id == gap.leader_id) return o.state.x_m <= w.ego.x_m;
+  return true;
+}
+
 // The committed merge becomes plan's, its reason prefixed by why, its path starting no farther
 // from the main lane than the ego is.
 void replace_merge(Merging& merging, const WorldSnapshot& w, Def1Plan plan, const std::string& why, bool from_hold) {
@@ -83,12 +91,15 @@ bool replan_in_place(Merging& merging, const WorldSnapshot& w) {
   for (const MergeDurations durations : {MergeDurations::kRhoM, MergeDurations::kLonger}) {
     auto plan = plan_definition1(w, durations, nullptr);
     if (!plan || plan->decision.gap != m.decision.gap) continue;
-    // Only a sigmoid the ego is already on: one that starts farther ahead would hold the ego at its
-    // offset first, its midpoint would come later than planned, and the judge reads the right of
-    // way over the longer merge the ego then drove (def1_1_gap failed by 7 m where the abort had
-    // held; a campaign finding).
+    // Only a sigmoid the ego is already on: one that starts farther ahead would hold the ego at
+    // its offset first, its midpoint would come later than planned, and the judge reads the right
+    // of way over the longer merge the ego then drove (def1_1_gap failed by 7 m where the abort
+    // had held; a campaign finding). And, while the gap's leader has yet to pass the ego, one
+    // along which the ego is heading: a path drawn from the ego's offset (merge_sigmoid) gentler
+    // than the crawl it replaced put the still-turned ego's corner over the lane line ahead of the
+    // vehicle it meant to merge behind (a campaign finding; heads_along).
     const CommittedMerge on_path{plan->sigmoid, plan->ve_star_mps, plan->decision, plan->sigmoid.offset_m, false};
-    if (turns_away_first(on_path, w)) return false;
+    if (turns_away_first(on_path, w) || (leader_not_ahead(w, *m.decision.gap) && !heads_along(on_path, w))) return false;
     replace_merge(merging, w, std::move(*plan),
                   "the merge decided at t = " + fixed_text(m.decision.time_s, 2) +
                       " s no longer fits (P_c bounds crossed or lane occupied); re-planned into its gap: ",

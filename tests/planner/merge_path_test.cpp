@@ -263,6 +263,21 @@ TEST(LeaderTrack, ALeaderThatKeepsDLonBehindTheVehicleAheadUntilTheHorizonHoldsI
   EXPECT_LT(leader_track(leader, -3.0, &ahead, -2.1, merge).x_at(8.0), 165.6 - 90.0);
 }
 
+// Two vehicles following at the same speed a little closer than kLeaderStandoffM (bumpers 1.8 m
+// apart): the one behind is not braking, and a leader behind it is not predicted to stop. (Taken
+// as "no room left", 1e3 m/s2, it stopped every vehicle behind at once: a campaign's gap two
+// vehicles back stayed closed for seconds while `progress` offered it.) One closing in, or behind
+// a vehicle seen braking, still has no room.
+TEST(LeaderTrack, AVehicleFollowingInsideTheStandoffAtTheSameSpeedIsNotBraking) {
+  const MainLaneVehicle truck = lane_vehicle(3, 140.0, 19.8), close = lane_vehicle(2, 140.0 - 4.8 - 1.8, 19.8);
+  EXPECT_DOUBLE_EQ(braking_behind_mps2(close, truck), 0.0);
+  const std::vector<MainLaneVehicle> lane = {lane_vehicle(1, 76.5, 15.8), close, truck};
+  EXPECT_DOUBLE_EQ(chained_accel_mps2(lane, lane[1], no_accel), 0.0);
+  EXPECT_DOUBLE_EQ(leader_track(lane[0], 0.0, &lane[1], chained_accel_mps2(lane, lane[1], no_accel)).v_at(5.0), 15.8);
+  EXPECT_DOUBLE_EQ(braking_behind_mps2(lane_vehicle(2, close.x_m, 20.0), truck), 1e3);
+  EXPECT_DOUBLE_EQ(braking_behind_mps2(close, truck, -2.0), 1e3);
+}
+
 // Predicted at its speed under a horizon, a leader never comes within kLeaderStandoffM of the
 // vehicle ahead (braking as seen) before the horizon, and is RCPP eq. (1)'s D_lon (with the
 // speeds of now) behind it at the horizon: the gap between them is concave in time, so it is
@@ -272,6 +287,7 @@ RC_GTEST_PROP(LeaderTrack, ALeaderHoldingItsSpeedUnderAHorizonKeepsTheStandoffUn
   const MainLaneVehicle ahead = lane_vehicle(2, *rc::gen::inRange(50, 3000) / 10.0, *rc::gen::inRange(0, 400) / 10.0);
   const double ahead_accel_mps2 = -*rc::gen::inRange(0, 100) / 10.0;
   const LeaderHorizon h{*rc::gen::inRange(0, 300) / 10.0, *rc::gen::inRange(0, 20) / 10.0};
+  RC_PRE(ahead.x_m - leader.x_m > 4.8 + kLeaderStandoffM);  // outside the standoff now
   RC_PRE(braking_behind_mps2(leader, ahead, ahead_accel_mps2, h) == 0.0);
   const Track l = leader_track(leader, 0.0, &ahead, ahead_accel_mps2, h);
   const Track a = leader_track(ahead, ahead_accel_mps2);

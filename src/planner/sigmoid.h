@@ -21,7 +21,7 @@ namespace mg {
 struct Sigmoid {
   double width_m = 0.0;      // W, lane-centre to lane-centre (merge_sigmoid: the ego's Y to the target's centre)
   double kappa_per_m = 0.0;  // slope parameter, > 0
-  double pc_m = 0.0;         // P_c, midpoint
+  double pc_m = 0.0;         // the logistic's midpoint: P_c for the paper's path (merge_sigmoid: lane_line_x_m)
   double offset_m = 0.0;     // b, the start lane's centre (merge_sigmoid: the ego's Y)
   double y_at_m(double x_m) const;
   // x where the path has covered `fraction` (0..1) of W: P_c + ln(f/(1-f))/kappa.

@@ -26,10 +26,10 @@ double Sigmoid::y_at_m(double x_m) const {
 
 Sigmoid merge_sigmoid(double lane_width_m, double ego_y_m, double kappa_per_m, double pc_m) {
   const Sigmoid paper{lane_width_m, kappa_per_m, pc_m, -lane_width_m};
-  // Rescaled only from beyond the paper's path's start (its kSigmoidEndFraction point) either way,
-  // and from well short of the lane line.
+  // Rescaled only from beyond the paper's path's start (its kSigmoidEndFraction point), and from
+  // well short of the lane line.
   const double line_y = -0.5 * lane_width_m;
-  if (!(std::abs(ego_y_m + lane_width_m) > kSigmoidEndFraction * lane_width_m) || !(ego_y_m < line_y - 0.1 * lane_width_m))
+  if (!(ego_y_m > -lane_width_m + kSigmoidEndFraction * lane_width_m) || !(ego_y_m < line_y - 0.1 * lane_width_m))
     return paper;
   const double amplitude_m = -ego_y_m;
   const double line_fraction = (line_y - ego_y_m) / amplitude_m;

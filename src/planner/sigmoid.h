@@ -32,18 +32,15 @@ struct Sigmoid {
 
 // The merge path of an ego at ego_y_m in the side lane (centre -W) crossing the lane line (-W/2)
 // at pc_m with slope kappa_per_m: the paper's sigmoid across the lane, from the side lane's
-// centre, for an ego within its 2 % start of that centre; for an ego off it (at the start, or
-// held after an abort), the same logistic from the ego's Y to the target lane's centre, shifted
-// so that it crosses the lane line at pc_m, where Definition 1 put P_c. From the side lane's
-// centre the paper's path took an ego nearer the lane away from it first or, held at the ego's
-// Y until the sigmoid came up to it, met it with a kink of its heading that the tracker took a
-// second late: the merge crossed the lane line metres past P_c, and the judge read Definition 1
-// over the longer merge it saw (def1_1_gap, a campaign finding); an ego below the centre,
-// steered up onto the path at a crawl, overshot it turned toward the lane and entered ahead of
-// the vehicles it meant to let pass (def1_1_gap). The same logistic so rescaled is how
-// `progress`'s witness merges from the ego's offset (rules/feasible_gaps.cpp). Its amplitude
-// differs from W by the offset (the generator's egos start within half a metre of the centre):
-// the kappa bounds, drawn for W, hold its curvature within that proportion.
+// centre, for an ego at or below that centre; for an ego nearer the lane (off its centre at the
+// start, or held after an abort), the same logistic from the ego's Y to the target lane's centre,
+// shifted so that it crosses the lane line at pc_m, where Definition 1 put P_c (its own midpoint
+// lies beyond). The paper's path from the side lane's centre either took such an ego away from
+// the lane first or, held at the ego's Y until the sigmoid came up to it, met it with a kink of
+// its heading that the tracker took a second late: the merge crossed the lane line metres past
+// P_c, and the judge read Definition 1 over the longer merge it saw (def1_1_gap, a campaign
+// finding). The same logistic so rescaled is how `progress`'s witness merges from the ego's
+// offset (rules/feasible_gaps.cpp).
 Sigmoid merge_sigmoid(double lane_width_m, double ego_y_m, double kappa_per_m, double pc_m);
 // Where a merge path crosses the lane line (-W/2): P_c.
 inline double lane_line_x_m(const Sigmoid& sig, double lane_width_m) { return sig.x_at_y_m(-0.5 * lane_width_m); }

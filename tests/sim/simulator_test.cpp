@@ -196,13 +196,12 @@ TEST(Simulator, TraceJsonCarriesStepsDecisionsEventsAndHexDigest) {
 }
 
 // An RCPP merge aborted while the ego still moves toward the main lane: on its way back it crosses
-// the lane line (it overshoots the planned stop), yet it is not taken for merged; it holds the
-// side lane (def1_halt) until it plans a new merge, and its sideslip stays inside the rule's
-// bound. The scenario is generated run 20707 of seed 15 (`fuzz --seed 15`): the corpus case that
-// showed it, rcpp__ego_never_liable__sideslip__ego-3, no longer aborts since a merge from off the
-// side lane's centre is drawn from the ego's offset.
+// the lane line (a soft neutral-steer ego overshoots the planned stop), yet it is not taken for
+// merged; it holds the side lane (def1_halt) until it plans a new merge, and its sideslip stays
+// inside the rule's bound. Case -3 shows the return over the line (case -4, the same situation,
+// is now aborted at once at a small offset and held).
 TEST(Simulator, AnEgoReturningAfterAnAbortIsNotTakenForMergedWhenItCrossesTheLine) {
-  const Scenario s = load_scenario(std::string(MG_SOURCE_DIR) + "/tests/data/rcpp_abort_returns_over_the_line.json");
+  const Scenario s = corpus_case_scenario("rcpp__ego_never_liable__sideslip__ego-3");
   const auto planner = make_planner("rcpp");
   const Trace t = simulate(s, *planner);
   bool merging = false, aborted = false, crossed_while_returning = false;
@@ -248,27 +247,27 @@ TEST(Simulator, AMergeThatNoLongerFitsItsGapIsReplannedInPlaceWhenTheGapStillTak
   EXPECT_GT(t.steps.back().ego.y_m, s.ego.y_m + 0.5);  // on its way into the lane when the run ends
 }
 
-// A crawl at v_e* = 1.1 m/s decided at 7 s behind a leader starting from rest (it had braked to a
-// stop beyond its b_max): once the leader has pulled away and a merge at 5 m/s or more is feasible,
-// a faster merge replaces the crawl, from the ego's offset, with no lateral reversal; the ego's
-// centre crosses the lane line by 12 s (the crawl had not crossed it when the run ended at 18 s).
+// A crawl at v_e* = 1.1 m/s decided at 7.6 s, 7.7 m before its P_c, into the gap behind a leader
+// that had stopped (it braked beyond its b_max): at that pace its centre would cross the lane line
+// only after the run ends (12.44 s). Once a merge at 5 m/s or more is feasible, a faster one
+// replaces the crawl, from the ego's offset, with no lateral reversal, and crosses it by 12 s.
 TEST(Simulator, ACrawlIsReplacedByAFasterMergeOnceOneIsFeasible) {
-  const Scenario s = corpus_case_scenario("rcpp-coop__progress__progress__ego-20");
-  const auto planner = make_planner("rcpp-coop");
+  const Scenario s = corpus_case_scenario("rcpp__progress__progress__ego-17");
+  const auto planner = make_planner("rcpp");
   const Trace t = simulate(s, *planner);
   bool crawl = false, replaced = false;
   for (const auto& d : t.decisions) {
-    crawl |= d.reason.rfind("Def. 1:", 0) == 0 && d.reason.find("merging at v_e* = 1.") != std::string::npos;
+    crawl |= d.reason.rfind("Def. 1:", 0) == 0 && d.reason.find("merging at v_e* = 1.10 m/s") != std::string::npos;
     replaced |= d.reason.find("a faster merge replaces the crawl") != std::string::npos;
   }
   EXPECT_TRUE(crawl);
   EXPECT_TRUE(replaced);
   double crossed_s = -1.0, lowest_vy = 0.0;
   for (const TraceStep& st : t.steps) {
-    if (st.time_s >= 7.0 && crossed_s < 0.0) lowest_vy = std::min(lowest_vy, st.ego.road_vy_mps());
+    if (st.time_s >= 7.6 && crossed_s < 0.0) lowest_vy = std::min(lowest_vy, st.ego.road_vy_mps());
     if (crossed_s < 0.0 && st.ego.y_m > -0.5 * s.road.lane_width_m) crossed_s = st.time_s;
   }
-  EXPECT_GT(crossed_s, 7.0);
+  EXPECT_GT(crossed_s, 7.6);
   EXPECT_LT(crossed_s, 12.0);
   EXPECT_GT(lowest_vy, -s.params.rules.lat_speed_hysteresis_mps);
 }

@@ -7,6 +7,7 @@
 #include "core/fixed_text.h"
 #include "planner/definition1_search.h"
 #include "planner/merge_path.h"
+#include "planner/rcpp_world.h"
 #include "planner/sigmoid.h"
 
 namespace mg {
@@ -15,9 +16,8 @@ namespace {
 // Whether the gap's leader is not yet ahead of the ego (it is passing it, or no such vehicle is seen).
 bool leader_not_ahead(const WorldSnapshot& w, const Gap& gap) {
   if (gap.leader_id < 0) return false;
-  for (const ObservedVehicle& o : w.others)
-    if (o.id == gap.leader_id) return o.state.x_m <= w.ego.x_m;
-  return true;
+  const ObservedVehicle* leader = observed_vehicle(w, gap.leader_id);
+  return !leader || leader->state.x_m <= w.ego.x_m;
 }
 
 // The committed merge becomes plan's, its reason prefixed by why, its path starting no farther

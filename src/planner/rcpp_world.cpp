@@ -36,13 +36,11 @@ CoopContext coop_context(const WorldSnapshot& w) {
                      kOccupancyPlanningBufferM};
 }
 
-namespace {
 const ObservedVehicle* observed_vehicle(const WorldSnapshot& w, int id) {
   for (const ObservedVehicle& o : w.others)
     if (o.id == id) return &o;
   return nullptr;
 }
-}  // namespace
 
 double observed_accel_mps2(const WorldSnapshot& w, int id) {
   const ObservedVehicle* o = observed_vehicle(w, id);

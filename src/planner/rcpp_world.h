@@ -28,6 +28,8 @@ CoopContext coop_context(const WorldSnapshot& w);
 
 // The observed acceleration of vehicle `id` (0 when it is not observed).
 double observed_accel_mps2(const WorldSnapshot& w, int id);
+// The vehicle `id` as observed, or nullptr when it is not seen.
+const ObservedVehicle* observed_vehicle(const WorldSnapshot& w, int id);
 // Whether vehicle `id` is seen accelerating harder than its declared a_accel^max, or braking
 // harder than its b_max, beyond the tolerance the rules read them with (accel_tolerance_mps2),
 // and whether either: Definition 1 rests on those limits.

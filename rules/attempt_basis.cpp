@@ -73,6 +73,7 @@ class AttemptJudge {
   PairCover* side_for(const CoopExchange& x, bool responder_broke);
   bool try_def2();
   bool try_def2_unknown_gap();
+  bool bounds_a_gap_seen(const CoopExchange& x) const;
   bool covers_rest(const Def1Reading& r) const;
   void cover_by_reading(const Def1Reading& r);
   bool try_def1();
@@ -157,6 +158,20 @@ bool AttemptJudge::try_def2() {
   return true;
 }
 
+// Whether the sender of x's acceptance bounds a gap the ego was seen in during an attempt whose
+// gap entered is not known: the one around it at its start, at the acceptance's delivery, or at
+// its entry, once its body reached into the main lane. A 2.1 merge behind a vehicle that passes
+// the ego after the delivery, ahead of the vehicle that accepted, enters the gap that vehicle
+// bounds; read only at the start and the delivery, with the trace ending before the midpoint,
+// its acceptance covered nothing (a campaign finding).
+bool AttemptJudge::bounds_a_gap_seen(const CoopExchange& x) const {
+  const int k = in_.t.index_of(x.request->to_id);
+  const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
+  const std::size_t last = in_.t.steps.size() - 1;
+  if (in(a_.entered_gap) || in(in_.around[std::min(step_at_or_after(in_.t, x.accept_delivered_time_s), last)])) return true;
+  return a_.entry_step && in(in_.around[std::min(*a_.entry_step, last)]);
+}
+
 // Definition 2 for an attempt whose gap entered is not known (aborted, or cut by the trace's end,
 // before its midpoint): an acceptance from a vehicle of the gap around the ego at its start or at
 // the delivery, the other vehicle of the gap the request asked for clear by Definition 1.
@@ -165,10 +180,7 @@ bool AttemptJudge::try_def2_unknown_gap() {
     const CoopExchange& x = in_.exchanges[i];
     if (!x.complete() || !x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_, in_.p))
       continue;
-    const int k = in_.t.index_of(x.request->to_id);
-    const GapIndices then = in_.around[std::min(step_at_or_after(in_.t, x.accept_delivered_time_s), in_.t.steps.size() - 1)];
-    const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
-    if (!in(a_.entered_gap) && !in(then)) continue;
+    if (!bounds_a_gap_seen(x)) continue;
     if (x.order_margin_m < 0.0) {
       untruthful_ = untruthful_.value_or(i);
       continue;
@@ -350,10 +362,7 @@ void AttemptJudge::no_basis() {
   for (const CoopExchange& x : in_.exchanges) {
     const double d = x.accept_delivered_time_s;
     if (d < 0.0 || x.accepted_in_time(in_.p.comm_threshold_s) || !delivered_in_window(x, a_, window_from_s_, in_.p)) continue;
-    const int k = in_.t.index_of(x.request->to_id);
-    const GapIndices then = in_.around[std::min(step_at_or_after(in_.t, d), in_.t.steps.size() - 1)];
-    const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
-    if (!in(a_.entered_gap) && !in(then)) continue;
+    if (!bounds_a_gap_seen(x)) continue;
     a_.exchange = x;
     a_.fault = AcceptanceFault::kLate;
   }

@@ -362,6 +362,28 @@ TEST(MergeAttempts, AnAcceptanceDeliveredOnlyAfterTheEntryGrantsNothing) {
   EXPECT_TRUE(j->row.ego_holds.empty());
 }
 
+// A Def. 2.1 merge ahead of vehicle 1 (45 m behind) and behind vehicle 2, which passes the ego at
+// 30 m/s between the delivery (0.9 s) and the entry (1.5 s): 13 m behind the ego at the start, 2 m
+// ahead at the entry. The trace ends at 1.8 s, before the midpoint, so the gap entered is not
+// known; the gap around the ego at its entry is vehicle 1's, and its acceptance covers the
+// attempt (vehicle 2, the other vehicle of the gap asked for, passes well clear by ineq. (1.2)).
+// With vehicle 2 still behind the ego at the entry (at 20 m/s) vehicle 1 bounds no gap the ego
+// was seen in, and the acceptance grants nothing.
+TEST(MergeAttempts, AnAcceptanceFromTheFollowerAtTheEntryCoversAnAttemptCutBeforeItsMidpoint) {
+  Scenario s = gap_scenario(-45.0, -13.0, 22.0);
+  s.vehicles[1].speed_mps = 30.0;
+  const auto j = test::judge(s, with_exchange(merging_from(s, 1.0, 1.8), 1, 0.9));
+  const MergeAttempt& a = only_attempt(*j);
+  ASSERT_TRUE(a.entry_time_s.has_value());
+  EXPECT_FALSE(a.midpoint_time_s.has_value());
+  EXPECT_EQ(a.entered_gap.follower, 2) << "the gap around the ego at its start";
+  EXPECT_EQ(a.basis, RowBasis::kDef2) << a.observation;
+
+  const Scenario behind = gap_scenario(-45.0, -13.0, 22.0);
+  const auto k = test::judge(behind, with_exchange(merging_from(behind, 1.0, 1.8), 1, 0.9));
+  EXPECT_NE(only_attempt(*k).basis, RowBasis::kDef2) << only_attempt(*k).observation;
+}
+
 TEST(MergeAttempts, AnAcceptanceFromAVehicleOutsideTheGapGrantsNothing) {
   // Vehicle 2 drives in the second main lane: its acceptance in time says nothing of the gap.
   Scenario s = gap_scenario(-45.0, 10.0, 22.0);

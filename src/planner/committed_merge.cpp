@@ -66,6 +66,24 @@ double pc_bound_speed_mps(const CommittedMerge& m, const WorldSnapshot& w, const
   return lo;
 }
 
+// The speed cap behind the vehicle ahead once the ego is in the lane (or committed to it):
+// rss_follow_speed_mps, its RSS distance plus kFollowBufferM. A leader no slower than the ego,
+// with the ego outside its RSS distance, opens that buffer by itself: the ego keeps its speed
+// rather than brake for it in mid-merge. A Definition 2.1 merge committed 0.5 m beyond D_lon
+// behind the gap's leader braked at b_min to open the buffer at once, and the partner behind
+// closed in to 0.37 m inside its safe distance by the midpoint (sigmoid_pc_bounds; a campaign
+// finding).
+double merging_follow_speed_mps(const WorldSnapshot& w, const MainLaneVehicle& leader) {
+  const double cap = rss_follow_speed_mps(w, leader);
+  const double v = ego_speed_mps(w);
+  if (cap >= v || leader.speed_mps < v) return cap;
+  const PlannerSetup& s = *w.setup;
+  const double d_lon_m = rss_longitudinal_m({v, leader.speed_mps, s.ego.size.length_m, leader.length_m,
+                                             s.params.rss.response_time_s, s.ego.limits.accel_max_mps2,
+                                             s.ego.limits.brake_min_mps2, leader.limits.brake_max_mps2});
+  return leader.x_m - w.ego.x_m >= d_lon_m ? v : cap;
+}
+
 // v_e*, capped behind the vehicle ahead. Past P_c the ego is in the main lane: it also keeps its
 // RSS distance to the vehicle ahead. Before P_c, once that vehicle brakes, it slows enough to
 // reach P_c at D_lon behind it as predicted (pc_bound_speed_mps): Def. 1.2 predicted it at
@@ -91,7 +109,7 @@ double merge_target_speed_mps(const CommittedMerge& m, const WorldSnapshot& w) {
     if (leader.x_m <= w.ego.x_m || passing) continue;
     const bool braking = observed_accel_mps2(w, leader.id) < -kLeaderBrakingMps2;
     if (!before_pc || m.committed(w.ego.y_m)) {
-      target = std::min(target, rss_follow_speed_mps(w, leader));
+      target = std::min(target, merging_follow_speed_mps(w, leader));
     } else if (braking) {
       target = std::min(target, pc_bound_speed_mps(m, w, lane, leader, target));
     }

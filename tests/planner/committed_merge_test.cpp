@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "core/rss.h"
 #include "core/scenario.h"
 #include "planner/rcpp_world.h"
 
@@ -147,6 +148,39 @@ TEST(CommittedMerge, AMergeIntoAGapABreachClosedIsAbortedWhileTheEgoCanStillHalt
   w.ego.x_m = 65.0;
   ASSERT_FALSE(can_still_halt(w, s.ego.limits.brake_max_mps2));
   EXPECT_FALSE(merge_should_abort(m, w));
+}
+
+// Past P_c behind vehicle 1, 1 m beyond its RSS distance (less than the 2 m following buffer),
+// the ego at 15 m/s. Vehicle 1 at 18 m/s opens the buffer by itself: the ego keeps its speed (it
+// braked at b_min for it, and a Def. 2.1 partner behind closed in past its safe distance). At
+// 12 m/s, or inside its RSS distance, vehicle 1 still caps the ego below its speed.
+TEST(CommittedMerge, ALeaderPullingAwayOutsideItsRssDistanceIsNotAReasonToBrake) {
+  Scenario s;
+  s.road.lane_width_m = 3.5;
+  s.ego.x_m = 100.0;
+  s.ego.y_m = -1.0;
+  s.ego.speed_mps = 15.0;
+  const auto leader_at = [&](double beyond_d_lon_m, double speed_mps) {
+    MainVehicle v;
+    v.id = 1;
+    v.speed_mps = speed_mps;
+    v.x_m = s.ego.x_m + beyond_d_lon_m +
+            rss_longitudinal_m({s.ego.speed_mps, speed_mps, s.ego.size.length_m, v.size.length_m,
+                                s.params.rss.response_time_s, s.ego.limits.accel_max_mps2,
+                                s.ego.limits.brake_min_mps2, v.limits.brake_max_mps2});
+    Scenario with = s;
+    with.vehicles = {v};
+    return with;
+  };
+  CommittedMerge m = merge_from(-3.5, false);  // P_c at X = 50 m: the ego is past it
+  m.target_speed_mps = 15.0;
+  m.decision.mode = DecisionMode::kDef2Merge;
+  m.decision.gap = Gap{-1, 1};
+  const auto target = [&](const Scenario& sc) { return follow_merge(m, initial_snapshot(sc)).target_speed_mps; };
+  EXPECT_EQ(target(leader_at(1.0, 18.0)), 15.0);
+  EXPECT_LT(target(leader_at(1.0, 12.0)), 15.0);
+  EXPECT_LT(target(leader_at(-0.5, 18.0)), 15.0);
+  EXPECT_EQ(target(leader_at(3.0, 15.0)), 15.0);  // beyond the buffer: no cap either way
 }
 
 RC_GTEST_PROP(CommittedMerge, APathFromAHoldOnlyEverMovesTowardTheMainLane, ()) {

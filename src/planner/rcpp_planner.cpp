@@ -193,11 +193,19 @@ void halt(const WorldSnapshot& w, const HaltProfile& h, const std::string& why, 
 
 // A merge the smoothness rule could no longer afford to abort (planner/reversal_ledger.h) waits
 // while the ego goes back to its side-lane centre, as after an abort, with the halt's speed
-// profile; a lateral hold off the centre is given up for the way back.
+// profile; a lateral hold off the centre is given up for the way back. The way back aims
+// kDeferredReturnPastCentreM beyond the centre: the rule credits a new approach only once the ego
+// was within merge_abort_offset_m of the centre, which a return path ending on the centre crosses
+// in its flat tail; the tracker, lagging the path, reached its end a decimetre short, and the
+// gentle return planned from there covered the rest at 0.03 m/s: an ego 0.6 m off the centre
+// took 4 s to get back while the gap it waited for stayed open (progress; a campaign finding).
+// The return path under way is re-planned once toward that point.
 RcppCycle back_to_centre(InSideLane& side, const WorldSnapshot& w, const HaltProfile& h, const ReversalLedger& ledger,
                          bool turns_away, const std::string& note) {
   side.lateral.hold_y_m.reset();
   side.lateral.hold_pending = false;
+  if (side.lateral.past_centre_m != kDeferredReturnPastCentreM) side.lateral.return_path.reset();
+  side.lateral.past_centre_m = kDeferredReturnPastCentreM;
   RcppCycle out;
   out.path = side_lane_path(side.lateral, w);
   halt(w, h, "", note, out);

@@ -76,12 +76,14 @@ std::vector<PathPoint> side_lane_path(SideLaneLateral& lateral, const WorldSnaps
   lateral.return_path.reset();
   if (lateral.hold_y_m) return sample_straight(*lateral.hold_y_m, from_x, to_x, kPathStepM);
   const double to_centre_m = s.road.side_lane_y_m() - w.ego.y_m;
-  if (std::abs(to_centre_m) < kReturnPathMinOffsetM) return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
+  if (lateral.past_centre_m == 0.0 && std::abs(to_centre_m) < kReturnPathMinOffsetM)
+    return sample_straight(s.road.side_lane_y_m(), from_x, to_x, kPathStepM);
   // An ego farther from the main lane than the side lane's centre holds its offset: moving toward
   // the main lane only to centre itself can make it laterally unsafe with a vehicle there (with a
   // long response time, D_lat grows with that lateral speed).
   if (to_centre_m > 0.0) return sample_straight(w.ego.y_m, from_x, to_x, kPathStepM);
-  lateral.return_path = plan_return_path(w.ego.x_m, w.ego.y_m, travel_slope(w), s.road.side_lane_y_m(), return_limits(w));
+  lateral.return_path = plan_return_path(w.ego.x_m, w.ego.y_m, travel_slope(w),
+                                         s.road.side_lane_y_m() - lateral.past_centre_m, return_limits(w));
   return sample_return_path(*lateral.return_path, from_x, to_x, kPathStepM);
 }
 

@@ -2,6 +2,8 @@
 // after a shallow abort.
 #include "planner/side_lane_path.h"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "core/scenario.h"
@@ -49,6 +51,30 @@ TEST(SideLanePath, ADeeperAbortReturnsToTheCentre) {
   ASSERT_FALSE(path.empty());
   EXPECT_NEAR(path.back().y_m, a.s.road.side_lane_y_m(), 1e-9);
   EXPECT_LT(path.back().y_m, a.w.ego.y_m);
+}
+
+// The way back of a merge deferred for the weaving budget (past_centre_m) ends beyond the centre,
+// and crosses the rules' merge_abort_offset_m above the centre, where the judge credits the
+// return, on its steep part: a return ending on the centre crosses that line in its tail, where
+// the tracker, lagging the path, arrived a decimetre short and covered the rest at a few cm/s.
+TEST(SideLanePath, AWayBackPastTheCentreCrossesTheAbortOffsetOnItsSteepPart) {
+  const auto slope_at_line = [](double past_centre_m) {
+    AbortedAt a(0.6);
+    a.lateral.past_centre_m = past_centre_m;
+    const std::vector<PathPoint> path = side_lane_path(a.lateral, a.w);
+    EXPECT_NEAR(path.back().y_m, a.s.road.side_lane_y_m() - past_centre_m, 1e-9);
+    const ReturnPath& r = *a.lateral.return_path;
+    const double line_y = a.s.road.side_lane_y_m() + a.s.params.rules.merge_abort_offset_m;
+    double steepest = 0.0, at_line = 0.0;
+    for (double x = r.x0_m; x < r.end_x_m(); x += 0.05) {
+      const double slope = (r.y_at_m(x) - r.y_at_m(x + 0.05)) / 0.05;  // downward
+      steepest = std::max(steepest, slope);
+      if (at_line == 0.0 && r.y_at_m(x + 0.05) < line_y) at_line = slope;
+    }
+    return at_line / steepest;
+  };
+  const double to_centre = slope_at_line(0.0), past = slope_at_line(kDeferredReturnPastCentreM);
+  EXPECT_GT(past, 1.5 * to_centre) << past << " against " << to_centre;
 }
 
 }  // namespace

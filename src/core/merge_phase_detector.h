@@ -5,7 +5,8 @@
 // merge is the same thing wherever it is counted.
 //
 //   side lane centre  ──●──── start: Y > y_side + merge_start_offset_m moving toward the main lane
-//                        ╲           (v_Y > lat_speed_hysteresis_mps), or any part of its body
+//                        ╲           (v_Y > 0, its last |v_Y| beyond lat_speed_hysteresis_mps
+//                        ╲           pointing that way), or any part of its body
 //                         ╲          over the lane line, however slowly it got there
 //                          ╲  abort: before the line, with its body back off it, back below
 //                           ╲        y_side + merge_abort_offset_m, or moving back,
@@ -54,6 +55,7 @@ class MergePhaseDetector {
   double start_offset_m_, abort_offset_m_, abort_reversal_m_, complete_offset_m_, complete_yaw_rad_, hysteresis_mps_;
   bool from_side_;
   bool started_ = false, midpoint_ = false, completed_ = false;
+  bool toward_ = false;  // the last lateral speed beyond the hysteresis pointed toward the main lane
   double furthest_y_m_ = 0.0;  // the attempt's furthest lateral position toward the main lane
 };
 

@@ -4,6 +4,7 @@
 // toward the main lane, a return to the side lane before the line is an abort.
 #include "rules/merge_phases.h"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -85,6 +86,35 @@ TEST(MergePhases, AnOffsetWithoutLateralMotionIsNoStart) {
     st.ego.vy_mps = st.ego.y_m > -3.5 ? -0.5 : 0.0;
   }
   EXPECT_TRUE(phases_of(s, back).events.empty());
+}
+
+// A crawl merge: off its lane centre toward the main lane at 0.15 m/s for 0.4 s (6 cm), then on at
+// 0.03 m/s, within the hysteresis (0.1 m/s), past the start offset (0.1 m) at about 1.9 s. It is
+// the approach it was, and starts there; one that never moved faster than the hysteresis (a
+// drift), or whose last motion beyond it was back toward the side lane, does not.
+TEST(MergePhases, AnApproachThatSlowsWithinTheHysteresisStartsWhereItPassesTheOffset) {
+  const Scenario s = test::base_scenario();
+  const auto moving = [&](double first_vy_mps, double then_vy_mps) {
+    Trace t = test::constant_accel_trace(s, 4.0);
+    for (TraceStep& st : t.steps) {
+      const double first_s = std::min(st.time_s, 0.4), then_s = std::max(0.0, st.time_s - 0.4);
+      st.ego.y_m = -3.5 + first_vy_mps * first_s + then_vy_mps * then_s;
+      st.ego.vy_mps = st.time_s < 0.4 ? first_vy_mps : then_vy_mps;
+    }
+    return phases_of(s, t);
+  };
+  const MergePhases crawl = moving(0.15, 0.03);
+  ASSERT_EQ(kinds(crawl), (std::vector{MergePhaseKind::kStart}));
+  EXPECT_NEAR(crawl.events[0].time_s, 0.4 + 0.04 / 0.03, 0.021);
+  EXPECT_TRUE(moving(0.05, 0.05).events.empty()) << "a drift within the hysteresis all along";
+  Scenario off = s;
+  off.ego.y_m = -3.2;  // placed off the centre, moving back to it fast, then creeping outward
+  Trace back = test::constant_accel_trace(off, 4.0);
+  for (TraceStep& st : back.steps) {
+    st.ego.y_m = st.time_s < 0.4 ? -3.2 - 0.15 * st.time_s : -3.26 + 0.03 * (st.time_s - 0.4);
+    st.ego.vy_mps = st.time_s < 0.4 ? -0.15 : 0.03;
+  }
+  EXPECT_TRUE(phases_of(off, back).events.empty());
 }
 
 TEST(MergePhases, BackInTheSideLaneBeforeTheLineIsAnAbortAndTheNextDepartureANewStart) {

@@ -13,17 +13,46 @@
 
 namespace mg {
 
-bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap,
-                        const GapIndices& ahead, double rho_s) {
+namespace {
+
+// Where lane vehicle k is rho_s from now: braking at its observed deceleration, if any, to a stop,
+// else at its speed; and no farther than where the vehicle ahead of it (gaps[g + 1].leader, and so
+// on up the lane) then is, less half their lengths: it cannot drive through it. A leader behind a
+// vehicle racing toward a stopped one must brake for the stopped one, not for where the racing one
+// would be at its speed (a campaign finding: the rule offered the gap behind such a leader while
+// the planner, predicting the chain, found every merge into it blocked).
+double end_x_m(const ObservedTrace& t, std::size_t step, const std::vector<GapIndices>& gaps, std::size_t g,
+               double rho_s) {
+  const auto& v = t.steps[step].vehicles;
+  const auto own_end_m = [&](std::size_t k) {
+    const ObservedState& s = v[k];
+    return s.x_m + speed_change_distance_m(std::max(s.vx_mps, 0.0), 0.0, 0.0, std::max(-s.accel_mps2, 0.0), rho_s);
+  };
+  // From the front of the lane back to gaps[g].leader.
+  std::size_t front = g;
+  while (front + 1 < gaps.size() && gaps[front + 1].leader >= 1) ++front;
+  double end_m = own_end_m(static_cast<std::size_t>(gaps[front].leader));
+  for (std::size_t j = front; j > g; --j) {
+    const std::size_t k = static_cast<std::size_t>(gaps[j - 1].leader), ahead = static_cast<std::size_t>(gaps[j].leader);
+    end_m = std::min(own_end_m(k), end_m - 0.5 * (t.vehicles[k].size.length_m + t.vehicles[ahead].size.length_m));
+  }
+  return end_m;
+}
+
+}  // namespace
+
+bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t step,
+                        const std::vector<GapIndices>& gaps, std::size_t g, double rho_s) {
+  const GapIndices& gap = gaps[g];
   if (gap.leader < 1) return true;
   const auto& v = t.steps[step].vehicles;
   const ObservedState& l = v[static_cast<std::size_t>(gap.leader)];
   if (l.accel_mps2 < -p.progress_leader_braking_mps2) return false;
-  if (ahead.leader < 1) return true;
-  const ObservedState& a = v[static_cast<std::size_t>(ahead.leader)];
-  const std::size_t li = static_cast<std::size_t>(gap.leader), ai = static_cast<std::size_t>(ahead.leader);
+  if (g + 1 >= gaps.size() || gaps[g + 1].leader < 1) return true;
+  const std::size_t li = static_cast<std::size_t>(gap.leader), ai = static_cast<std::size_t>(gaps[g + 1].leader);
+  const ObservedState& a = v[ai];
   const double va = std::max(a.vx_mps, 0.0), vl = std::max(l.vx_mps, 0.0);
-  const double a_end_m = a.x_m + speed_change_distance_m(va, 0.0, 0.0, std::max(-a.accel_mps2, 0.0), rho_s);
+  const double a_end_m = end_x_m(t, step, gaps, g + 1, rho_s);
   const double d_lon_m = rss_longitudinal_m({vl, va, t.vehicles[li].size.length_m, t.vehicles[ai].size.length_m,
                                              t.params.rss.response_time_s, t.vehicles[li].limits.accel_max_mps2,
                                              t.vehicles[li].limits.brake_min_mps2, t.vehicles[ai].limits.brake_max_mps2});
@@ -403,11 +432,10 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
   const std::size_t n_durations = reach_2_rho_b_m < r.turn_in_m ? 4 : 3;
   for (std::size_t g = 0; g < gaps.size(); ++g) {
     const GapIndices& gap = gaps[g];
-    const GapIndices ahead = g + 1 < gaps.size() ? gaps[g + 1] : GapIndices{};
     if (!follower_within_limits(t, p, step, gap)) continue;
     for (std::size_t d = 0; d < n_durations; ++d) {
       const double rho = durations_s[d];
-      if (!leader_holds_speed(t, p, step, gap, ahead, rho)) continue;
+      if (!leader_holds_speed(t, p, step, gaps, g, rho)) continue;
       // def1_feasible is def1_interval's feasibility exactly, at a fraction of its bisections;
       // raising ve_lo below can only narrow the interval.
       if (!def1_feasible(t, step, gap, rho, margin)) continue;

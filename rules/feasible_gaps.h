@@ -59,9 +59,11 @@ std::vector<FeasibleMerge> def1_gaps_feasible(const ObservedTrace& t, const Rule
 // Definition 1.2 counts on the gap's leader holding its speed. A leader seen braking harder than
 // progress_leader_braking_mps2 does not, nor one closing on the vehicle ahead of it in its lane so
 // fast that, holding its speed over rho, it would come within that vehicle's D_lon (RCPP eq. (1);
-// RSS Def. 1): it must slow down for it, and the gap behind it shrinks as it does. `ahead` is the
-// next gap forward (its follower is `gap`'s leader).
-bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t step, const GapIndices& gap,
-                        const GapIndices& ahead, double rho_s);
+// RSS Def. 1): it must slow down for it, and the gap behind it shrinks as it does. That vehicle
+// is where its own observed braking takes it, but no farther than the vehicles ahead of it let it
+// go (it cannot drive through the next one). The gap is gaps[g] of the lane's gaps at the step
+// (lane_gaps, in order: gaps[g + 1]'s follower is gaps[g]'s leader).
+bool leader_holds_speed(const ObservedTrace& t, const RuleParams& p, std::size_t step,
+                        const std::vector<GapIndices>& gaps, std::size_t g, double rho_s);
 
 }  // namespace mg

@@ -174,7 +174,7 @@ bool other_vehicle_leaves_room(const ObservedTrace& t, const RuleParams& p, cons
     const GapIndices& g = gaps[k];
     if (a.ego_ahead && g.follower == partner) {
       if (g.leader < 1) return true;
-      if (!leader_holds_speed(t, p, i, g, k + 1 < gaps.size() ? gaps[k + 1] : GapIndices{}, rho_s)) return false;
+      if (!leader_holds_speed(t, p, i, gaps, k, rho_s)) return false;
       return def1_2_margin_m(t, i, g.leader, v_e, rho_s) >= 0.0;
     }
     if (!a.ego_ahead && g.leader == partner) return def1_1_margin_m(t, i, g.follower, v_e, rho_s) >= 0.0;

@@ -185,5 +185,23 @@ TEST(FeasibleGaps, AGapWhoseFollowerAcceleratesBeyondItsLimitIsNotOffered) {
   EXPECT_TRUE(std::none_of(offered.begin(), offered.end(), [](const FeasibleMerge& m) { return m.follower_id == 1; }));
 }
 
+// The gap between vehicle 1 (100 m behind the ego, 20 m/s) and vehicle 2 (70 m ahead, 20 m/s).
+// Vehicle 3, 50 m ahead of vehicle 2, accelerates at 2 m/s2 toward vehicle 4, stopped 30 m ahead
+// of it: vehicle 3 cannot get past 4.8 m behind vehicle 4, so vehicle 2, holding its speed over
+// any rho the rule offers (4 s or more), would come within D_lon of it and must brake: the gap is
+// not offered. With vehicle 4 far ahead (1 km) vehicle 2 holds its speed and the gap is offered.
+TEST(FeasibleGaps, ALeaderBehindAVehicleThatMustStopBehindAStoppedOneDoesNotHoldItsSpeed) {
+  Scenario s = base_scenario();
+  s.ego.x_m = 100.0;
+  const auto offered_behind_2 = [&](double stopped_x_m) {
+    s.vehicles = {vehicle(1, 0.0, 20.0), vehicle(2, 170.0, 20.0), vehicle(3, 220.0, 20.0), vehicle(4, stopped_x_m, 0.0)};
+    const auto j = test::judge(s, constant_accel_trace(s, 0.1, {0.0, 0.0, 0.0, 2.0, 0.0}));
+    const std::vector<FeasibleMerge> offered = def1_gaps_feasible(j->trace, j->params, 0);
+    return std::any_of(offered.begin(), offered.end(), [](const FeasibleMerge& m) { return m.leader_id == 2; });
+  };
+  EXPECT_FALSE(offered_behind_2(250.0));
+  EXPECT_TRUE(offered_behind_2(1000.0));
+}
+
 }  // namespace
 }  // namespace mg

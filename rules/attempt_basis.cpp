@@ -173,8 +173,8 @@ bool AttemptJudge::bounds_a_gap_seen(const CoopExchange& x) const {
 }
 
 // Definition 2 for an attempt whose gap entered is not known (aborted, or cut by the trace's end,
-// before its midpoint): an acceptance from a vehicle of the gap around the ego at its start or at
-// the delivery, the other vehicle of the gap the request asked for clear by Definition 1.
+// before its midpoint): an acceptance from a vehicle of a gap the ego was seen in
+// (bounds_a_gap_seen), the other vehicle of the gap the request asked for clear by Definition 1.
 bool AttemptJudge::try_def2_unknown_gap() {
   for (std::size_t i = 0; i < in_.exchanges.size(); ++i) {
     const CoopExchange& x = in_.exchanges[i];

@@ -22,7 +22,7 @@ struct SideLaneLateral {
   std::optional<ReturnPath> return_path;  // back to the centre (or a hold), kept until its end
   bool hold_pending = false;              // a shallow abort: the next path holds (plan_lateral_hold)
   std::optional<double> hold_y_m;         // after that hold: the Y kept until the next merge
-  double past_centre_m = 0.0;              // a return planned now aims this far beyond the centre
+  double past_centre_m = 0.0;             // a return planned now aims this far beyond the centre
 };
 
 // How far beyond the side lane's centre (away from the main lane) the way back of a merge

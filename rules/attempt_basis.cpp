@@ -169,7 +169,7 @@ bool AttemptJudge::bounds_a_gap_seen(const CoopExchange& x) const {
   const auto in = [k](const GapIndices& g) { return k >= 1 && (k == g.follower || k == g.leader); };
   const std::size_t last = in_.t.steps.size() - 1;
   if (in(a_.entered_gap) || in(in_.around[std::min(step_at_or_after(in_.t, x.accept_delivered_time_s), last)])) return true;
-  return a_.entry_step && in(in_.around[std::min(*a_.entry_step, last)]);
+  return a_.entry_step && in(in_.around[*a_.entry_step]);
 }
 
 // Definition 2 for an attempt whose gap entered is not known (aborted, or cut by the trace's end,

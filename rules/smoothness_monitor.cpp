@@ -5,6 +5,8 @@
 #include <optional>
 #include <sstream>
 
+#include "core/merge_phase_detector.h"
+
 namespace mg {
 
 namespace {
@@ -39,16 +41,13 @@ MonitorOutput monitor_smoothness_oscillation(const MonitorContext& ctx) {
   // least one approach is allowed for, so that a weave in a lane without any merge is judged too.
   const int merges = std::max(approaches(ctx), 1);
   const int allowed = ctx.params.max_lat_speed_sign_changes_per_merge * merges;
-  const double h = ctx.params.lat_speed_hysteresis_mps;
   // Lateral motion before the first start is the ego keeping (or centring itself in) its lane:
   // the merges' reversals are counted from there.
   const std::optional<MergePhaseEvent> first_start = ctx.phases.first(MergePhaseKind::kStart);
-  int sign = 0, changes = 0;
+  LateralDirection direction(ctx.params.lat_speed_hysteresis_mps);
+  int changes = 0;
   for (std::size_t i = first_start ? first_start->step : 0; i < steps.size(); ++i) {
-    const double vy = ego_of(steps[i]).vy_mps;
-    const int now = vy > h ? 1 : vy < -h ? -1 : 0;
-    if (now != 0 && sign != 0 && now != sign) ++changes;
-    if (now != 0) sign = now;
+    if (direction.reverses(ego_of(steps[i]).vy_mps)) ++changes;
     if (acc.record(i, steps[i].time_s, allowed - changes, Party::ego(), allowed, changes)) {
       std::ostringstream os;
       os << "ego lateral velocity changed sign " << changes << " times (" << merges << " merge approach(es), at most "

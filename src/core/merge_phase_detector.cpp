@@ -17,6 +17,7 @@ MergePhaseDetector::MergePhaseDetector(const Road& road, const RuleParams& p, co
       complete_yaw_rad_(p.merge_complete_yaw_rad),
       hysteresis_mps_(p.lat_speed_hysteresis_mps),
       from_side_(initial_y_m < line_y_m_),
+      direction_(p.lat_speed_hysteresis_mps),
       furthest_y_m_(side_y_m_) {}
 
 double MergePhaseDetector::left_edge_y_m(const VehicleSize& size, double y_m, double yaw_rad) {
@@ -28,15 +29,12 @@ MergePhaseStep MergePhaseDetector::step(double y_m, double vy_mps, double yaw_ra
   if (!from_side_ || completed_) return out;
   if (started_) furthest_y_m_ = std::max(furthest_y_m_, y_m);
   const bool over_line = left_edge_y_m(ego_size_, y_m, yaw_rad) > line_y_m_;
-  // The direction of the ego's lateral motion as the smoothness rule reads it: set by a lateral
-  // speed beyond the hysteresis, kept while it is within it.
-  if (vy_mps > hysteresis_mps_) toward_ = true;
-  if (vy_mps < -hysteresis_mps_) toward_ = false;
+  direction_.reverses(vy_mps);
   // A start is motion toward the main lane, not an offset alone: an ego placed off its lane
   // centre, or drifting back to it, has not started merging. An approach that slows within the
   // hysteresis before it passes the offset (a crawl merge: 0.03 m/s of lateral speed there) is
   // still that motion. A body over the lane line is in the main lane whatever its lateral speed.
-  if (!started_ && ((y_m > side_y_m_ + start_offset_m_ && toward_ && vy_mps > 0.0) || over_line)) {
+  if (!started_ && ((y_m > side_y_m_ + start_offset_m_ && direction_.sign() > 0 && vy_mps > 0.0) || over_line)) {
     started_ = out.start = true;
     furthest_y_m_ = y_m;
   } else if (started_ && !midpoint_ && !over_line &&

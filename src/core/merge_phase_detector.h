@@ -28,6 +28,27 @@ namespace mg {
 
 enum class MergePhaseKind { kStart, kAbort, kMidpoint, kComplete };
 
+// The direction of the ego's lateral motion as the rules read it: +1 toward the main lane, -1
+// away from it, set by a lateral speed beyond lat_speed_hysteresis_mps and kept while the speed is
+// within it (0 before any such motion). Its changes are the reversals `smoothness_oscillation`
+// counts; a merge starts only while it points toward the main lane.
+class LateralDirection {
+ public:
+  explicit LateralDirection(double hysteresis_mps = 0.0) : hysteresis_mps_(hysteresis_mps) {}
+  // Reads the next lateral speed; true when it reverses the direction.
+  bool reverses(double vy_mps) {
+    const int now = vy_mps > hysteresis_mps_ ? 1 : vy_mps < -hysteresis_mps_ ? -1 : 0;
+    const bool reversal = now != 0 && sign_ != 0 && now != sign_;
+    if (now != 0) sign_ = now;
+    return reversal;
+  }
+  int sign() const { return sign_; }
+
+ private:
+  double hysteresis_mps_;
+  int sign_ = 0;
+};
+
 // The phases entered at one step, in the order they happen (a start or an abort, then the
 // midpoint, then completion): one step can hold several.
 struct MergePhaseStep {
@@ -55,7 +76,7 @@ class MergePhaseDetector {
   double start_offset_m_, abort_offset_m_, abort_reversal_m_, complete_offset_m_, complete_yaw_rad_, hysteresis_mps_;
   bool from_side_;
   bool started_ = false, midpoint_ = false, completed_ = false;
-  bool toward_ = false;  // the last lateral speed beyond the hysteresis pointed toward the main lane
+  LateralDirection direction_;
   double furthest_y_m_ = 0.0;  // the attempt's furthest lateral position toward the main lane
 };
 

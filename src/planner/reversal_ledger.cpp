@@ -10,7 +10,7 @@ void ReversalLedger::observe(const WorldSnapshot& w) {
   if (!detector_) {
     detector_.emplace(s.road, rules, s.ego.size, w.ego.y_m);
     centre_y_m_ = s.road.side_lane_y_m() + rules.merge_abort_offset_m;
-    hysteresis_mps_ = rules.lat_speed_hysteresis_mps;
+    direction_ = LateralDirection(rules.lat_speed_hysteresis_mps);
     per_approach_ = rules.max_lat_speed_sign_changes_per_merge;
   }
   const double vy_mps = w.ego.road_vy_mps();
@@ -26,9 +26,7 @@ void ReversalLedger::observe(const WorldSnapshot& w) {
   if (phase.abort || phase.midpoint) in_attempt_ = false;
   if (any_start_ && w.ego.y_m < centre_y_m_) returned_ = true;
   if (!any_start_) return;  // the rule counts reversals from the first start
-  const int now = vy_mps > hysteresis_mps_ ? 1 : vy_mps < -hysteresis_mps_ ? -1 : 0;
-  if (now != 0 && sign_ != 0 && now != sign_) ++changes_;
-  if (now != 0) sign_ = now;
+  if (direction_.reverses(vy_mps)) ++changes_;
 }
 
 int ReversalLedger::allowed_with_merge() const {
@@ -41,8 +39,8 @@ int ReversalLedger::allowed_with_merge() const {
 
 bool ReversalLedger::can_afford_merge(bool turns_away_first) const {
   if (!detector_) return true;  // nothing observed yet
-  const int away = turns_away_first && sign_ > 0 ? 1 : 0;           // moving toward the lane, it turns away
-  const int toward = sign_ < 0 || turns_away_first ? 1 : 0;         // then toward the lane
+  const int away = turns_away_first && direction_.sign() > 0 ? 1 : 0;           // moving toward the lane, it turns away
+  const int toward = direction_.sign() < 0 || turns_away_first ? 1 : 0;         // then toward the lane
   return changes_ + away + toward + 1 <= allowed_with_merge();      // and back, should it abort
 }
 

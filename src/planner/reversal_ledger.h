@@ -35,21 +35,20 @@ class ReversalLedger {
   int changes() const { return changes_; }
   // The lateral speed last pointed toward the main lane (beyond the hysteresis, since the first
   // start): moving away from it now would be a sign change.
-  bool last_moved_out() const { return sign_ > 0; }
+  bool last_moved_out() const { return direction_.sign() > 0; }
   int approaches() const { return from_centre_ + (after_reversal_ > 0 ? 1 : 0); }
   int allowed_with_merge() const;
 
  private:
   std::optional<MergePhaseDetector> detector_;
   double centre_y_m_ = 0.0;  // below this Y the ego is back at its side-lane centre
-  double hysteresis_mps_ = 0.0;
   int per_approach_ = 0;
   bool any_start_ = false;
   bool in_attempt_ = false;   // the detector's attempt under way (started, not aborted)
   bool returned_ = true;      // back at the centre since the last start
   int from_centre_ = 0;       // starts from the centre
   int after_reversal_ = 0;    // starts off the centre (the rule credits one)
-  int sign_ = 0;              // the lateral speed's last sign beyond the hysteresis
+  LateralDirection direction_;  // the lateral speed's direction since the first start
   int changes_ = 0;           // its sign changes since the first start
 };
 
